@@ -1,0 +1,32 @@
+// The `surfacemap` command line: shared declarations of its commands.
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace surfacemap
+{
+
+/// Exit codes of every command.
+enum ExitCode
+{
+  ExitOk = 0,
+  ExitInternalError = 1,
+  ExitBadInput = 2, // bad usage or bad input
+  ExitNoCertifiedResult = 3,
+};
+
+/// Thrown for bad usage; main prints the message and the command's help hint.
+struct UsageError
+{
+  std::string Message;
+};
+
+/// `surfacemap check MESH... [--landmarks FILE...]`
+int runCheck(const std::vector<std::string>& args);
+extern const char* const CheckHelp;
+
+/// Prints "surfacemap: error: <message>" on stderr.
+void printError(const std::string& message);
+
+} // namespace surfacemap

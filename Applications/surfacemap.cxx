@@ -1,0 +1,123 @@
+// surfacemap: command-line front end of SurfaceMaps.
+#include "Commands.h"
+
+#include "vtkLogger.h"
+#include "vtkOutputWindow.h"
+
+#include <cstring>
+#include <exception>
+#include <iostream>
+#include <string>
+#include <vector>
+
+namespace surfacemap
+{
+
+void printError(const std::string& message)
+{
+  std::cerr << "surfacemap: error: " << message << "\n";
+}
+
+} // namespace surfacemap
+
+namespace
+{
+
+struct Command
+{
+  const char* Name;
+  const char* Summary;
+  int (*Run)(const std::vector<std::string>&);
+  const char* const* Help;
+};
+
+const Command Commands[] = {
+  { "check", "validate meshes as SurfaceMaps inputs and print their statistics",
+    &surfacemap::runCheck, &surfacemap::CheckHelp },
+};
+
+void printUsage(std::ostream& os)
+{
+  os << "usage: surfacemap <command> [options]\n\n"
+        "Bijective maps between closed genus-0 surfaces (SurfaceMaps).\n\n"
+        "commands:\n";
+  for (const Command& c : Commands)
+  {
+    os << "  " << c.Name << std::string(10 - std::strlen(c.Name), ' ') << c.Summary << "\n";
+  }
+  os << "\noptions:\n"
+        "  -h, --help   show this help, or a command's help after the command\n"
+        "  -v           more log output on stderr (repeat for more)\n"
+        "\nexit codes: 0 ok, 1 internal error, 2 bad usage or bad input, 3 no certified result\n";
+}
+
+} // namespace
+
+int main(int argc, char* argv[])
+{
+  // Messages go through our own error reporting; VTK's output window would
+  // repeat them with source locations.
+  vtkOutputWindow::GetInstance()->SetDisplayModeToNever();
+  vtkLogger::SetStderrVerbosity(vtkLogger::VERBOSITY_WARNING);
+
+  std::vector<std::string> args;
+  int verbosity = 0;
+  for (int i = 1; i < argc; ++i)
+  {
+    const std::string arg = argv[i];
+    if (arg == "-v" || arg == "-vv" || arg == "-vvv")
+    {
+      verbosity += static_cast<int>(arg.size()) - 1;
+    }
+    else
+    {
+      args.push_back(arg);
+    }
+  }
+  if (verbosity > 0)
+  {
+    vtkOutputWindow::GetInstance()->SetDisplayModeToDefault();
+    vtkLogger::SetStderrVerbosity(verbosity >= 2 ? vtkLogger::VERBOSITY_TRACE : vtkLogger::VERBOSITY_INFO);
+  }
+
+  if (args.empty() || args[0] == "-h" || args[0] == "--help" || args[0] == "help")
+  {
+    printUsage(std::cout);
+    return args.empty() ? surfacemap::ExitBadInput : surfacemap::ExitOk;
+  }
+
+  for (const Command& command : Commands)
+  {
+    if (args[0] != command.Name)
+    {
+      continue;
+    }
+    const std::vector<std::string> rest(args.begin() + 1, args.end());
+    for (const std::string& a : rest)
+    {
+      if (a == "-h" || a == "--help")
+      {
+        std::cout << *command.Help;
+        return surfacemap::ExitOk;
+      }
+    }
+    try
+    {
+      return command.Run(rest);
+    }
+    catch (const surfacemap::UsageError& e)
+    {
+      surfacemap::printError(e.Message);
+      std::cerr << "run 'surfacemap " << command.Name << " --help' for usage\n";
+      return surfacemap::ExitBadInput;
+    }
+    catch (const std::exception& e)
+    {
+      surfacemap::printError(std::string("internal error: ") + e.what());
+      return surfacemap::ExitInternalError;
+    }
+  }
+  surfacemap::printError("unknown command '" + args[0] + "'");
+  printUsage(std::cerr);
+  return surfacemap::ExitBadInput;
+}

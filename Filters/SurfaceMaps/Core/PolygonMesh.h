@@ -1,0 +1,45 @@
+// SurfaceMaps engine: an indexed polygon mesh as read from a file.
+#pragma once
+
+#include <Eigen/Core>
+
+#include <cstddef>
+#include <initializer_list>
+#include <vector>
+
+namespace surfacemaps
+{
+
+/// Indexed polygon mesh with optional per-corner texture coordinates. This is
+/// what readers produce and what validation inspects; it may hold anything a
+/// file can contain (non-triangles, bad indices, non-manifold configurations).
+/// Once validated it is turned into a SurfaceMesh for the algorithms.
+struct PolygonMesh
+{
+  std::vector<Eigen::Vector3d> points;
+  /// Face f uses faceVertices[faceOffsets[f] .. faceOffsets[f+1]).
+  std::vector<int> faceOffsets{ 0 };
+  std::vector<int> faceVertices;
+  /// Empty, or one entry per entry of faceVertices (NaN where a corner has none).
+  std::vector<Eigen::Vector2d> cornerTexCoords;
+  /// Cells of the source that are not polygons (lines, vertices, strips).
+  std::size_t nonPolygonCells = 0;
+
+  std::size_t numberOfFaces() const { return this->faceOffsets.size() - 1; }
+  int faceSize(std::size_t f) const { return this->faceOffsets[f + 1] - this->faceOffsets[f]; }
+  const int* face(std::size_t f) const { return this->faceVertices.data() + this->faceOffsets[f]; }
+
+  void addFace(std::initializer_list<int> vertices)
+  {
+    this->faceVertices.insert(this->faceVertices.end(), vertices.begin(), vertices.end());
+    this->faceOffsets.push_back(static_cast<int>(this->faceVertices.size()));
+  }
+  template <typename It>
+  void addFace(It begin, It end)
+  {
+    this->faceVertices.insert(this->faceVertices.end(), begin, end);
+    this->faceOffsets.push_back(static_cast<int>(this->faceVertices.size()));
+  }
+};
+
+} // namespace surfacemaps

@@ -1,0 +1,48 @@
+// SurfaceMaps engine: line-oriented reading of small text formats.
+#pragma once
+
+#include <string>
+#include <string_view>
+
+namespace surfacemaps
+{
+
+/// Reads a whole file into memory. Throws InputError naming the file when it
+/// cannot be opened or read.
+std::string readTextFile(const std::string& path);
+
+/// Walks a text buffer line by line and token by token (whitespace separated),
+/// keeping the 1-based line number for messages. '#' starts a comment.
+class TextScanner
+{
+public:
+  explicit TextScanner(std::string_view text)
+    : Text(text)
+  {
+  }
+
+  /// Advances to the next line; false at the end of the text.
+  bool nextLine();
+  /// The next token of the current line, empty when the line is exhausted.
+  std::string_view nextToken();
+  /// True when the current line has no more tokens.
+  bool lineExhausted();
+  /// 1-based number of the current line.
+  int lineNumber() const { return this->LineNumber; }
+  /// True when the text does not end with a newline (a hint of truncation).
+  bool endsWithoutNewline() const { return !this->Text.empty() && this->Text.back() != '\n'; }
+  /// True on an unterminated last line: a file cut off in the middle of it.
+  bool truncatedHere() const { return this->Next > this->Text.size() && this->endsWithoutNewline(); }
+
+private:
+  std::string_view Text;
+  std::string_view Line;
+  std::size_t Next = 0;
+  int LineNumber = 0;
+};
+
+/// Strict number parsing: the whole token must be a number.
+bool parseDouble(std::string_view token, double& value);
+bool parseInt(std::string_view token, long long& value);
+
+} // namespace surfacemaps

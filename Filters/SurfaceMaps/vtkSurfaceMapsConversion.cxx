@@ -1,0 +1,166 @@
+#include "vtkSurfaceMapsConversion.h"
+
+#include "vtkCellArray.h"
+#include "vtkCellArrayIterator.h"
+#include "vtkCellData.h"
+#include "vtkDataArray.h"
+#include "vtkDoubleArray.h"
+#include "vtkFieldData.h"
+#include "vtkIdTypeArray.h"
+#include "vtkPointData.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+#include "vtkStringArray.h"
+
+#include <limits>
+
+namespace
+{
+const char* const CornerTCoordsName = "CornerTCoords";
+}
+
+surfacemaps::PolygonMesh vtkSurfaceMapsConversion::ToPolygonMesh(vtkPolyData* input)
+{
+  surfacemaps::PolygonMesh mesh;
+  vtkPoints* points = input->GetPoints();
+  const vtkIdType np = points ? points->GetNumberOfPoints() : 0;
+  mesh.points.resize(np);
+  for (vtkIdType i = 0; i < np; ++i)
+  {
+    points->GetPoint(i, mesh.points[i].data());
+  }
+  mesh.nonPolygonCells = static_cast<std::size_t>(
+    input->GetNumberOfVerts() + input->GetNumberOfLines() + input->GetNumberOfStrips());
+
+  vtkCellArray* polys = input->GetPolys();
+  if (polys)
+  {
+    mesh.faceVertices.reserve(polys->GetNumberOfConnectivityIds());
+    auto it = vtk::TakeSmartPointer(polys->NewIterator());
+    for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell())
+    {
+      vtkIdType n;
+      const vtkIdType* ids;
+      it->GetCurrentCell(n, ids);
+      for (vtkIdType k = 0; k < n; ++k)
+      {
+        mesh.faceVertices.push_back(static_cast<int>(ids[k]));
+      }
+      mesh.faceOffsets.push_back(static_cast<int>(mesh.faceVertices.size()));
+    }
+  }
+
+  // Per-corner texture coordinates belong to polygons; with other cells in
+  // front of them the cell ids would not line up, so only pure polygon data.
+  vtkDataArray* tc = input->GetCellData()->GetArray(CornerTCoordsName);
+  if (tc && tc->GetNumberOfComponents() == 6 && mesh.nonPolygonCells == 0 &&
+    tc->GetNumberOfTuples() == static_cast<vtkIdType>(mesh.numberOfFaces()) &&
+    mesh.faceVertices.size() == 3 * mesh.numberOfFaces())
+  {
+    mesh.cornerTexCoords.resize(mesh.faceVertices.size());
+    double t[6];
+    for (std::size_t f = 0; f < mesh.numberOfFaces(); ++f)
+    {
+      tc->GetTuple(static_cast<vtkIdType>(f), t);
+      for (int k = 0; k < 3; ++k)
+      {
+        mesh.cornerTexCoords[3 * f + k] = Eigen::Vector2d(t[2 * k], t[2 * k + 1]);
+      }
+    }
+  }
+  return mesh;
+}
+
+vtkSmartPointer<vtkPolyData> vtkSurfaceMapsConversion::ToPolyData(
+  const surfacemaps::PolygonMesh& mesh)
+{
+  auto points = vtkSmartPointer<vtkPoints>::New();
+  points->SetDataTypeToDouble();
+  points->SetNumberOfPoints(static_cast<vtkIdType>(mesh.points.size()));
+  for (std::size_t i = 0; i < mesh.points.size(); ++i)
+  {
+    points->SetPoint(static_cast<vtkIdType>(i), mesh.points[i].data());
+  }
+
+  auto offsets = vtkSmartPointer<vtkIdTypeArray>::New();
+  offsets->SetNumberOfValues(static_cast<vtkIdType>(mesh.faceOffsets.size()));
+  for (std::size_t i = 0; i < mesh.faceOffsets.size(); ++i)
+  {
+    offsets->SetValue(static_cast<vtkIdType>(i), mesh.faceOffsets[i]);
+  }
+  auto connectivity = vtkSmartPointer<vtkIdTypeArray>::New();
+  connectivity->SetNumberOfValues(static_cast<vtkIdType>(mesh.faceVertices.size()));
+  for (std::size_t i = 0; i < mesh.faceVertices.size(); ++i)
+  {
+    connectivity->SetValue(static_cast<vtkIdType>(i), mesh.faceVertices[i]);
+  }
+  auto polys = vtkSmartPointer<vtkCellArray>::New();
+  polys->SetData(offsets, connectivity);
+
+  auto output = vtkSmartPointer<vtkPolyData>::New();
+  output->SetPoints(points);
+  output->SetPolys(polys);
+
+  const std::size_t nf = mesh.numberOfFaces();
+  if (!mesh.cornerTexCoords.empty() && mesh.faceVertices.size() == 3 * nf &&
+    mesh.cornerTexCoords.size() == mesh.faceVertices.size())
+  {
+    auto tc = vtkSmartPointer<vtkDoubleArray>::New();
+    tc->SetName(CornerTCoordsName);
+    tc->SetNumberOfComponents(6);
+    tc->SetNumberOfTuples(static_cast<vtkIdType>(nf));
+    for (std::size_t f = 0; f < nf; ++f)
+    {
+      for (int k = 0; k < 3; ++k)
+      {
+        tc->SetComponent(static_cast<vtkIdType>(f), 2 * k, mesh.cornerTexCoords[3 * f + k].x());
+        tc->SetComponent(static_cast<vtkIdType>(f), 2 * k + 1, mesh.cornerTexCoords[3 * f + k].y());
+      }
+    }
+    output->GetCellData()->AddArray(tc);
+  }
+  return output;
+}
+
+surfacemaps::SurfaceMesh vtkSurfaceMapsConversion::ToSurfaceMesh(vtkPolyData* input)
+{
+  return surfacemaps::toSurfaceMesh(ToPolygonMesh(input));
+}
+
+vtkSmartPointer<vtkPolyData> vtkSurfaceMapsConversion::ToPolyData(
+  const surfacemaps::SurfaceMesh& mesh)
+{
+  return ToPolyData(surfacemaps::toPolygonMesh(mesh));
+}
+
+std::vector<int> vtkSurfaceMapsConversion::LandmarkIds(vtkPolyData* input)
+{
+  std::vector<int> ids;
+  vtkDataArray* array = input->GetPointData()->GetArray("Landmarks");
+  if (!array || array->GetNumberOfComponents() != 1)
+  {
+    return ids;
+  }
+  ids.resize(static_cast<std::size_t>(array->GetNumberOfTuples()));
+  for (vtkIdType i = 0; i < array->GetNumberOfTuples(); ++i)
+  {
+    const double value = array->GetComponent(i, 0);
+    ids[i] = value >= std::numeric_limits<int>::min() && value <= std::numeric_limits<int>::max()
+      ? static_cast<int>(value)
+      : std::numeric_limits<int>::min();
+  }
+  return ids;
+}
+
+std::string vtkSurfaceMapsConversion::InputName(vtkPolyData* input, int index)
+{
+  if (input)
+  {
+    auto* names = vtkStringArray::SafeDownCast(input->GetFieldData()->GetAbstractArray("FileName"));
+    if (names && names->GetNumberOfValues() > 0 && !names->GetValue(0).empty())
+    {
+      return names->GetValue(0);
+    }
+  }
+  return "input " + std::to_string(index);
+}

@@ -1,0 +1,43 @@
+/**
+ * @class   vtkSurfaceMapsConversion
+ * @brief   Translation between vtkPolyData and the SurfaceMaps engine meshes.
+ *
+ * The one place where VTK data meets the engine (private to the module).
+ * Per-corner texture coordinates travel as the 6-component cell-data array
+ * "CornerTCoords" (u0 v0 u1 v1 u2 v2 per triangle); landmarks as the int
+ * point-data array "Landmarks" (-1 none).
+ */
+#ifndef vtkSurfaceMapsConversion_h
+#define vtkSurfaceMapsConversion_h
+
+#include "PolygonMesh.h"
+#include "SurfaceMesh.h"
+
+#include "vtkSmartPointer.h"
+
+#include <string>
+#include <vector>
+
+class vtkPolyData;
+
+class vtkSurfaceMapsConversion
+{
+public:
+  /// Every polygon of `input` (vertices, lines and strips are counted as
+  /// non-polygon cells), with per-corner texture coordinates if present.
+  static surfacemaps::PolygonMesh ToPolygonMesh(vtkPolyData* input);
+  /// Points and polygons (and "CornerTCoords" when every face is a triangle).
+  static vtkSmartPointer<vtkPolyData> ToPolyData(const surfacemaps::PolygonMesh& mesh);
+
+  /// Half-edge mesh of a valid triangle mesh; throws std::invalid_argument otherwise.
+  static surfacemaps::SurfaceMesh ToSurfaceMesh(vtkPolyData* input);
+  static vtkSmartPointer<vtkPolyData> ToPolyData(const surfacemaps::SurfaceMesh& mesh);
+
+  /// The "Landmarks" point array as ids per vertex (-1 none); empty if absent.
+  static std::vector<int> LandmarkIds(vtkPolyData* input);
+
+  /// Name for messages: the "FileName" field-data string if present, else "input <index>".
+  static std::string InputName(vtkPolyData* input, int index);
+};
+
+#endif

@@ -1,0 +1,244 @@
+#include "vtkSurfaceMeshReader.h"
+
+#include "vtkSurfaceMapsConversion.h"
+
+#include "InputError.h"
+#include "LandmarkReader.h"
+#include "ObjReader.h"
+#include "OffReader.h"
+
+#include "vtkCallbackCommand.h"
+#include "vtkCommand.h"
+#include "vtkExecutive.h"
+#include "vtkFieldData.h"
+#include "vtkInformation.h"
+#include "vtkInformationVector.h"
+#include "vtkIntArray.h"
+#include "vtkObjectFactory.h"
+#include "vtkPLYReader.h"
+#include "vtkPointData.h"
+#include "vtkPolyData.h"
+#include "vtkPolyDataReader.h"
+#include "vtkSTLReader.h"
+#include "vtkSmartPointer.h"
+#include "vtkStringArray.h"
+#include "vtkXMLPolyDataReader.h"
+
+#include <algorithm>
+#include <cctype>
+#include <cerrno>
+#include <cstring>
+#include <fstream>
+#include <string>
+
+vtkStandardNewMacro(vtkSurfaceMeshReader);
+
+class vtkSurfaceMeshReader::vtkInternals
+{
+public:
+  std::string LastError;
+};
+
+namespace
+{
+
+std::string extensionOf(const std::string& path)
+{
+  const std::size_t dot = path.find_last_of('.');
+  const std::size_t slash = path.find_last_of("/\\");
+  if (dot == std::string::npos || (slash != std::string::npos && dot < slash))
+  {
+    return {};
+  }
+  std::string ext = path.substr(dot + 1);
+  std::transform(ext.begin(), ext.end(), ext.begin(),
+    [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  return ext;
+}
+
+// Collects the error messages a VTK reader emits, without its source-location prefix.
+struct ErrorCollector
+{
+  std::string Message;
+
+  static void Callback(vtkObject*, unsigned long, void* clientData, void* callData)
+  {
+    auto* self = static_cast<ErrorCollector*>(clientData);
+    std::string text = callData ? static_cast<const char*>(callData) : "unknown error";
+    // vtkErrorMacro text: "ERROR: In file, line N\nClass (0x..): message"
+    const std::size_t marker = text.find("): ");
+    if (marker != std::string::npos)
+    {
+      text = text.substr(marker + 3);
+    }
+    while (!text.empty() && (text.back() == '\n' || text.back() == ' '))
+    {
+      text.pop_back();
+    }
+    if (self->Message.empty())
+    {
+      self->Message = text;
+    }
+  }
+};
+
+// Reads with one of VTK's readers; throws InputError when it reports an error.
+vtkSmartPointer<vtkPolyData> readWithVTK(vtkAlgorithm* reader, const std::string& path)
+{
+  ErrorCollector errors;
+  auto observer = vtkSmartPointer<vtkCallbackCommand>::New();
+  observer->SetCallback(&ErrorCollector::Callback);
+  observer->SetClientData(&errors);
+  reader->AddObserver(vtkCommand::ErrorEvent, observer);
+  reader->GetExecutive()->AddObserver(vtkCommand::ErrorEvent, observer);
+  reader->Update();
+  if (!errors.Message.empty())
+  {
+    throw surfacemaps::InputError(path + ": " + errors.Message);
+  }
+  auto output = vtkSmartPointer<vtkPolyData>::New();
+  output->ShallowCopy(vtkPolyData::SafeDownCast(reader->GetOutputDataObject(0)));
+  return output;
+}
+
+vtkSmartPointer<vtkPolyData> readMesh(const std::string& path)
+{
+  // Check the file up front so every format gets the same clear message.
+  {
+    std::ifstream probe(path, std::ios::binary);
+    if (!probe)
+    {
+      throw surfacemaps::InputError("cannot open '" + path + "': " + std::strerror(errno));
+    }
+    if (probe.peek() == std::ifstream::traits_type::eof())
+    {
+      throw surfacemaps::InputError(path + ": the file is empty");
+    }
+  }
+
+  const std::string ext = extensionOf(path);
+  if (ext == "obj")
+  {
+    return vtkSurfaceMapsConversion::ToPolyData(surfacemaps::readObj(path));
+  }
+  if (ext == "off")
+  {
+    return vtkSurfaceMapsConversion::ToPolyData(surfacemaps::readOff(path));
+  }
+  if (ext == "ply")
+  {
+    auto reader = vtkSmartPointer<vtkPLYReader>::New();
+    reader->SetFileName(path.c_str());
+    return readWithVTK(reader, path);
+  }
+  if (ext == "stl")
+  {
+    auto reader = vtkSmartPointer<vtkSTLReader>::New();
+    reader->SetFileName(path.c_str());
+    reader->MergingOn(); // STL repeats every vertex per triangle
+    return readWithVTK(reader, path);
+  }
+  if (ext == "vtp")
+  {
+    auto reader = vtkSmartPointer<vtkXMLPolyDataReader>::New();
+    reader->SetFileName(path.c_str());
+    return readWithVTK(reader, path);
+  }
+  if (ext == "vtk")
+  {
+    auto reader = vtkSmartPointer<vtkPolyDataReader>::New();
+    reader->SetFileName(path.c_str());
+    if (!reader->IsFilePolyData())
+    {
+      throw surfacemaps::InputError(path + ": not a legacy VTK POLYDATA file");
+    }
+    return readWithVTK(reader, path);
+  }
+  throw surfacemaps::InputError(path + ": unknown mesh format '" + ext +
+    "' (supported: .obj .off .ply .stl .vtp .vtk)");
+}
+
+} // namespace
+
+vtkSurfaceMeshReader::vtkSurfaceMeshReader()
+  : Internals(new vtkInternals)
+{
+  this->SetNumberOfInputPorts(0);
+}
+
+vtkSurfaceMeshReader::~vtkSurfaceMeshReader()
+{
+  this->SetFileName(nullptr);
+  this->SetLandmarkFileName(nullptr);
+}
+
+bool vtkSurfaceMeshReader::CanReadFile(const char* fileName)
+{
+  if (!fileName)
+  {
+    return false;
+  }
+  const std::string ext = extensionOf(fileName);
+  return ext == "obj" || ext == "off" || ext == "ply" || ext == "stl" || ext == "vtp" ||
+    ext == "vtk";
+}
+
+const char* vtkSurfaceMeshReader::GetLastErrorMessage() const
+{
+  return this->Internals->LastError.c_str();
+}
+
+int vtkSurfaceMeshReader::RequestData(
+  vtkInformation*, vtkInformationVector**, vtkInformationVector* outputVector)
+{
+  vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
+  this->Internals->LastError.clear();
+  try
+  {
+    if (!this->FileName || !*this->FileName)
+    {
+      throw surfacemaps::InputError("no file name given");
+    }
+    const std::string path = this->FileName;
+    vtkSmartPointer<vtkPolyData> mesh = readMesh(path);
+
+    if (this->LandmarkFileName && *this->LandmarkFileName)
+    {
+      const std::vector<int> indices = surfacemaps::readLandmarks(this->LandmarkFileName);
+      const std::vector<int> ids = surfacemaps::landmarkIdsFromIndices(indices,
+        static_cast<std::size_t>(mesh->GetNumberOfPoints()),
+        std::string(this->LandmarkFileName) + " (for " + path + ")");
+      auto landmarks = vtkSmartPointer<vtkIntArray>::New();
+      landmarks->SetName("Landmarks");
+      landmarks->SetNumberOfValues(static_cast<vtkIdType>(ids.size()));
+      for (std::size_t i = 0; i < ids.size(); ++i)
+      {
+        landmarks->SetValue(static_cast<vtkIdType>(i), ids[i]);
+      }
+      mesh->GetPointData()->AddArray(landmarks);
+    }
+
+    auto name = vtkSmartPointer<vtkStringArray>::New();
+    name->SetName("FileName");
+    name->InsertNextValue(path);
+    mesh->GetFieldData()->AddArray(name);
+
+    output->ShallowCopy(mesh);
+  }
+  catch (const std::exception& e)
+  {
+    this->Internals->LastError = e.what();
+    output->Initialize();
+    vtkErrorMacro(<< e.what());
+    return 0;
+  }
+  return 1;
+}
+
+void vtkSurfaceMeshReader::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "FileName: " << (this->FileName ? this->FileName : "(none)") << "\n";
+  os << indent << "LandmarkFileName: "
+     << (this->LandmarkFileName ? this->LandmarkFileName : "(none)") << "\n";
+}
