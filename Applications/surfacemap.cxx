@@ -47,7 +47,7 @@ void printUsage(std::ostream& os)
   }
   os << "\noptions:\n"
         "  -h, --help   show this help, or a command's help after the command\n"
-        "  -v           more log output on stderr (repeat for more)\n"
+        "  -v           log progress and VTK's own messages on stderr (-vv: more)\n"
         "\nexit codes: 0 ok, 1 internal error, 2 bad usage or bad input, 3 no certified result\n";
 }
 
@@ -55,10 +55,10 @@ void printUsage(std::ostream& os)
 
 int main(int argc, char* argv[])
 {
-  // Messages go through our own error reporting; VTK's output window would
-  // repeat them with source locations.
+  // Messages go through our own error reporting; VTK's output window and
+  // logger would repeat them with source locations. -v shows them again.
   vtkOutputWindow::GetInstance()->SetDisplayModeToNever();
-  vtkLogger::SetStderrVerbosity(vtkLogger::VERBOSITY_WARNING);
+  vtkLogger::SetStderrVerbosity(vtkLogger::VERBOSITY_OFF);
 
   std::vector<std::string> args;
   int verbosity = 0;
@@ -82,7 +82,7 @@ int main(int argc, char* argv[])
 
   if (args.empty() || args[0] == "-h" || args[0] == "--help" || args[0] == "help")
   {
-    printUsage(std::cout);
+    printUsage(args.empty() ? std::cerr : std::cout);
     return args.empty() ? surfacemap::ExitBadInput : surfacemap::ExitOk;
   }
 

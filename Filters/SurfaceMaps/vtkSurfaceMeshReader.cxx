@@ -6,6 +6,7 @@
 #include "LandmarkReader.h"
 #include "ObjReader.h"
 #include "OffReader.h"
+#include "PlyReader.h"
 
 #include "vtkCallbackCommand.h"
 #include "vtkCommand.h"
@@ -14,8 +15,9 @@
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
 #include "vtkIntArray.h"
+#include "vtkNew.h"
 #include "vtkObjectFactory.h"
-#include "vtkPLYReader.h"
+#include "vtkOutputWindow.h"
 #include "vtkPointData.h"
 #include "vtkPolyData.h"
 #include "vtkPolyDataReader.h"
@@ -60,6 +62,7 @@ std::string extensionOf(const std::string& path)
 struct ErrorCollector
 {
   std::string Message;
+  bool PipelineFailed = false;
 
   static void Callback(vtkObject*, unsigned long, void* clientData, void* callData)
   {
@@ -75,26 +78,83 @@ struct ErrorCollector
     {
       text.pop_back();
     }
-    if (self->Message.empty())
+    // The executive's "Algorithm X returned failure" repeats what the reader
+    // already said (or says nothing useful); keep the reader's own words.
+    if (text.rfind("Algorithm ", 0) == 0)
+    {
+      self->PipelineFailed = true;
+    }
+    else if (self->Message.empty())
     {
       self->Message = text;
     }
   }
 };
 
+// Some of VTK's readers report a premature end of data only as a generic
+// warning (not through the reader object); this output window, installed for
+// the duration of one read, catches those.
+class CapturingOutputWindow : public vtkOutputWindow
+{
+public:
+  static CapturingOutputWindow* New();
+  vtkTypeMacro(CapturingOutputWindow, vtkOutputWindow);
+  void DisplayText(const char*) override {}
+  void DisplayGenericWarningText(const char* text) override
+  {
+    if (this->Message.empty() && text)
+    {
+      // Drop the "Generic Warning: In file, line N" source location.
+      this->Message = text;
+      const std::size_t newline = this->Message.find('\n');
+      if (this->Message.rfind("Generic Warning", 0) == 0 && newline != std::string::npos)
+      {
+        this->Message = this->Message.substr(newline + 1);
+      }
+    }
+  }
+  std::string Message;
+};
+vtkStandardNewMacro(CapturingOutputWindow);
+
+class ScopedOutputWindow
+{
+public:
+  ScopedOutputWindow()
+    : Previous(vtkOutputWindow::GetInstance())
+  {
+    vtkOutputWindow::SetInstance(this->Window);
+  }
+  ~ScopedOutputWindow() { vtkOutputWindow::SetInstance(this->Previous); }
+  const std::string& Message() const { return this->Window->Message; }
+
+private:
+  vtkSmartPointer<vtkOutputWindow> Previous;
+  vtkNew<CapturingOutputWindow> Window;
+};
+
 // Reads with one of VTK's readers; throws InputError when it reports an error.
 vtkSmartPointer<vtkPolyData> readWithVTK(vtkAlgorithm* reader, const std::string& path)
 {
+  ScopedOutputWindow genericWarnings;
   ErrorCollector errors;
   auto observer = vtkSmartPointer<vtkCallbackCommand>::New();
   observer->SetCallback(&ErrorCollector::Callback);
   observer->SetClientData(&errors);
   reader->AddObserver(vtkCommand::ErrorEvent, observer);
+  reader->AddObserver(vtkCommand::WarningEvent, observer);
   reader->GetExecutive()->AddObserver(vtkCommand::ErrorEvent, observer);
   reader->Update();
-  if (!errors.Message.empty())
+  if (errors.Message.empty() && !genericWarnings.Message().empty())
   {
-    throw surfacemaps::InputError(path + ": " + errors.Message);
+    errors.Message = genericWarnings.Message();
+    const std::size_t end = errors.Message.find_last_not_of("\n ");
+    errors.Message.resize(end == std::string::npos ? 0 : end + 1);
+  }
+  if (errors.PipelineFailed || !errors.Message.empty())
+  {
+    throw surfacemaps::InputError(
+      path + ": " + (errors.Message.empty() ? "the reader failed" : errors.Message));
   }
   auto output = vtkSmartPointer<vtkPolyData>::New();
   output->ShallowCopy(vtkPolyData::SafeDownCast(reader->GetOutputDataObject(0)));
@@ -127,9 +187,7 @@ vtkSmartPointer<vtkPolyData> readMesh(const std::string& path)
   }
   if (ext == "ply")
   {
-    auto reader = vtkSmartPointer<vtkPLYReader>::New();
-    reader->SetFileName(path.c_str());
-    return readWithVTK(reader, path);
+    return vtkSurfaceMapsConversion::ToPolyData(surfacemaps::readPly(path));
   }
   if (ext == "stl")
   {
@@ -141,6 +199,10 @@ vtkSmartPointer<vtkPolyData> readMesh(const std::string& path)
   if (ext == "vtp")
   {
     auto reader = vtkSmartPointer<vtkXMLPolyDataReader>::New();
+    if (!reader->CanReadFile(path.c_str()))
+    {
+      throw surfacemaps::InputError(path + ": not a VTK XML PolyData (.vtp) file");
+    }
     reader->SetFileName(path.c_str());
     return readWithVTK(reader, path);
   }

@@ -8,7 +8,9 @@
  * one point per distinct v/vt/vn combination, which tears closed meshes open
  * along texture seams); per-corner texture coordinates are kept in the
  * 6-component cell array "CornerTCoords". OFF is read strictly (counts,
- * indices, numbers). STL points are merged.
+ * indices, numbers), and so is PLY (ASCII and binary; a face "texcoord" list
+ * becomes "CornerTCoords"). STL points are merged. VTP and legacy VTK files
+ * go through VTK's own readers.
  *
  * With LandmarkFileName set, the landmark file (one 0-based vertex index per
  * line, optionally prefixed `lk `, or SHREC `.vts` lines `index x y z`) becomes

@@ -202,8 +202,11 @@ void measureTriangles(const PolygonMesh& mesh, const MeshValidationOptions& opti
     const Eigen::Vector3d& b = mesh.points[t[1]];
     const Eigen::Vector3d& c = mesh.points[t[2]];
     areas[f] = 0.5 * (b - a).cross(c - a).norm();
-    total += areas[f];
-    volume6 += a.dot(b.cross(c));
+    if (std::isfinite(areas[f])) // non-finite vertices are reported on their own
+    {
+      total += areas[f];
+      volume6 += a.dot(b.cross(c));
+    }
   }
   stats.area = total;
   stats.orientation = volume6 > 0 ? 1 : (volume6 < 0 ? -1 : 0);
@@ -212,8 +215,11 @@ void measureTriangles(const PolygonMesh& mesh, const MeshValidationOptions& opti
   Eigen::Vector3d hi = Eigen::Vector3d::Constant(-INFINITY);
   for (int v : mesh.faceVertices)
   {
-    lo = lo.cwiseMin(mesh.points[v]);
-    hi = hi.cwiseMax(mesh.points[v]);
+    if (mesh.points[v].allFinite())
+    {
+      lo = lo.cwiseMin(mesh.points[v]);
+      hi = hi.cwiseMax(mesh.points[v]);
+    }
   }
   stats.boundingBoxDiagonal = (hi - lo).norm();
 
@@ -225,6 +231,10 @@ void measureTriangles(const PolygonMesh& mesh, const MeshValidationOptions& opti
   const double threshold = options.zeroAreaFraction * total;
   for (std::size_t f = 0; f < nf; ++f)
   {
+    if (!std::isfinite(areas[f]))
+    {
+      continue;
+    }
     if (!(areas[f] > threshold))
     {
       if (zero++ == 0)

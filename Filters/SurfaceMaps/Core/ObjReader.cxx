@@ -138,7 +138,7 @@ PolygonMesh parseObj(const std::string& text, const std::string& name)
       if (corners.size() < 3)
       {
         std::string what = "face has " + std::to_string(corners.size()) +
-          " vertices (at least 3 needed)";
+          (corners.size() == 1 ? " vertex" : " vertices") + " (at least 3 needed)";
         if (scanner.truncatedHere())
         {
           what += "; the file ends without a newline and looks truncated";
