@@ -305,6 +305,16 @@ def bad_meshes():
     lines = open(path).read().splitlines(keepends=True)
     open(path, "w").write("".join(lines[: 3 + len(s2) // 2]))
 
+    # Formats read by VTK's readers or our PLY reader, cut off mid-data.
+    path = os.path.join(BAD, "truncated.ply")
+    write_ply(path, s2, f2)
+    text = open(path).read()
+    open(path, "w").write(text[: len(text) // 2])
+    path = os.path.join(BAD, "truncated.vtk")
+    write_vtk(path, s2, f2)
+    text = open(path).read()
+    open(path, "w").write(text[: text.index("POLYGONS") // 2])
+
     open(os.path.join(BAD, "empty.obj"), "w").close()
     with open(os.path.join(BAD, "garbage.ply"), "w") as out:
         out.write("this is not a PLY file\n")

@@ -17,11 +17,11 @@ namespace
   throw InputError(message);
 }
 
-// Resolves a 1-based (or negative, relative) OBJ index against `count` entries
-// defined so far; returns -1 if invalid.
+// Resolves a 1-based (or negative, relative) OBJ index against the `count`
+// entries defined so far; returns -1 if it refers to none of them.
 long long resolveIndex(long long index, std::size_t count)
 {
-  if (index > 0)
+  if (index > 0 && static_cast<std::size_t>(index) <= count)
   {
     return index - 1;
   }

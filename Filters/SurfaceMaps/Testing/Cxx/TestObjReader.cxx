@@ -1,0 +1,99 @@
+#include "InputError.h"
+#include "ObjReader.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+using namespace surfacemaps;
+
+namespace
+{
+// Expects parseObj to throw an InputError whose message contains `part`.
+void expectObjError(const std::string& text, const std::string& part)
+{
+  try
+  {
+    parseObj(text, "mesh.obj");
+    FAIL() << "no error for: " << text;
+  }
+  catch (const InputError& e)
+  {
+    EXPECT_NE(std::string(e.what()).find(part), std::string::npos) << e.what();
+  }
+}
+} // namespace
+
+TEST(ObjReader, VerticesFollowVLinesAndCornersKeepTexCoords)
+{
+  // Two triangles sharing an edge whose corners have different texture
+  // coordinates: still 4 vertices, not one per v/vt combination.
+  const std::string text = "# comment\n"
+                           "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\n"
+                           "vt 0 0\nvt 1 0\nvt 0 1\nvt 0.5 0.5\nvn 0 0 1\n"
+                           "g part\ns 1\nusemtl m\n"
+                           "f 1/1/1 2/2/1 3/3/1\n"
+                           "f 2/4/1 4/2/1 3/1/1\n";
+  const PolygonMesh mesh = parseObj(text, "mesh.obj");
+  ASSERT_EQ(mesh.points.size(), 4u);
+  ASSERT_EQ(mesh.numberOfFaces(), 2u);
+  EXPECT_EQ(mesh.face(1)[0], 1);
+  EXPECT_EQ(mesh.face(1)[1], 3);
+  EXPECT_EQ(mesh.face(1)[2], 2);
+  ASSERT_EQ(mesh.cornerTexCoords.size(), 6u);
+  EXPECT_DOUBLE_EQ(mesh.cornerTexCoords[3].x(), 0.5); // face 1, corner 0 uses vt 4
+  EXPECT_DOUBLE_EQ(mesh.cornerTexCoords[5].y(), 0.0); // face 1, corner 2 uses vt 1
+}
+
+TEST(ObjReader, NegativeIndicesAndPolygons)
+{
+  const PolygonMesh mesh = parseObj("v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nf -4 -3 -2 -1\n", "m");
+  ASSERT_EQ(mesh.numberOfFaces(), 1u);
+  EXPECT_EQ(mesh.faceSize(0), 4);
+  EXPECT_EQ(mesh.face(0)[0], 0);
+  EXPECT_EQ(mesh.face(0)[3], 3);
+  EXPECT_TRUE(mesh.cornerTexCoords.empty());
+}
+
+TEST(ObjReader, NonFiniteCoordinatesAreReadNotRejected)
+{
+  // Validation reports them with the vertex index; the reader keeps them.
+  const PolygonMesh mesh = parseObj("v nan 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n", "m");
+  EXPECT_TRUE(std::isnan(mesh.points[0].x()));
+}
+
+TEST(ObjReader, LinesAreCountedAsNonPolygonCells)
+{
+  const PolygonMesh mesh = parseObj("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\nl 1 2\n", "m");
+  EXPECT_EQ(mesh.nonPolygonCells, 1u);
+}
+
+TEST(ObjReader, Errors)
+{
+  expectObjError("v 0 0 0\nv 1 x 0\n", "mesh.obj:2: bad vertex coordinate 'x'");
+  expectObjError("v 0 0\n", "mesh.obj:1: vertex has 2 coordinates");
+  expectObjError("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 4\n", "mesh.obj:4: face refers to vertex 4");
+  expectObjError("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 0\n", "face refers to vertex 0");
+  expectObjError("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2/7 3\n", "bad texture index");
+  expectObjError("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2\n", "face has 2 vertices");
+}
+
+TEST(ObjReader, TruncatedFileIsNamedAsSuch)
+{
+  expectObjError("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\nf 1 3", "looks truncated");
+  expectObjError("v 0 0 0\nv 1 0 0\nv 0 1", "looks truncated");
+  expectObjError("v 0 0 0\nv 1 0 0\nv 0 1 0", "looks truncated");
+}
+
+TEST(ObjReader, MissingFile)
+{
+  try
+  {
+    readObj("/nonexistent/dir/mesh.obj");
+    FAIL();
+  }
+  catch (const InputError& e)
+  {
+    EXPECT_NE(std::string(e.what()).find("cannot open '/nonexistent/dir/mesh.obj'"), std::string::npos);
+  }
+}

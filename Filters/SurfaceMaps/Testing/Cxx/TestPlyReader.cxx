@@ -1,0 +1,110 @@
+#include "InputError.h"
+#include "PlyReader.h"
+
+#include <gtest/gtest.h>
+
+#include <cstdint>
+#include <cstring>
+
+using namespace surfacemaps;
+
+namespace
+{
+void expectPlyError(const std::string& bytes, const std::string& part)
+{
+  try
+  {
+    parsePly(bytes, "mesh.ply");
+    FAIL() << "no error";
+  }
+  catch (const InputError& e)
+  {
+    EXPECT_NE(std::string(e.what()).find(part), std::string::npos) << e.what();
+  }
+}
+
+template <typename T>
+void put(std::string& bytes, T value, bool bigEndian)
+{
+  char raw[sizeof(T)];
+  std::memcpy(raw, &value, sizeof(T));
+  if (bigEndian)
+  {
+    std::reverse(raw, raw + sizeof(T));
+  }
+  bytes.append(raw, sizeof(T));
+}
+
+// A tetrahedron in binary PLY with an extra per-vertex property and an extra element.
+std::string binaryTetrahedron(bool bigEndian)
+{
+  std::string bytes = std::string("ply\nformat ") +
+    (bigEndian ? "binary_big_endian" : "binary_little_endian") +
+    " 1.0\ncomment test\nelement vertex 4\nproperty float x\nproperty float y\n"
+    "property float z\nproperty uchar red\nelement face 4\n"
+    "property list uchar int vertex_indices\nelement edge 1\nproperty int vertex1\n"
+    "property int vertex2\nend_header\n";
+  const float p[4][3] = { { 1, 1, 1 }, { 1, -1, -1 }, { -1, 1, -1 }, { -1, -1, 1 } };
+  for (const auto& v : p)
+  {
+    for (float c : v)
+    {
+      put(bytes, c, bigEndian);
+    }
+    put<std::uint8_t>(bytes, 200, bigEndian);
+  }
+  const int f[4][3] = { { 0, 1, 2 }, { 0, 3, 1 }, { 0, 2, 3 }, { 1, 3, 2 } };
+  for (const auto& t : f)
+  {
+    put<std::uint8_t>(bytes, 3, bigEndian);
+    for (int i : t)
+    {
+      put<std::int32_t>(bytes, i, bigEndian);
+    }
+  }
+  put<std::int32_t>(bytes, 0, bigEndian);
+  put<std::int32_t>(bytes, 1, bigEndian);
+  return bytes;
+}
+} // namespace
+
+TEST(PlyReader, Ascii)
+{
+  const std::string text = "ply\nformat ascii 1.0\nelement vertex 3\nproperty double x\n"
+                           "property double y\nproperty double z\nelement face 1\n"
+                           "property list uchar int vertex_index\n"
+                           "property list uchar float texcoord\nend_header\n"
+                           "0 0 0\n1 0 0\n0 1 0\n3 0 1 2 6 0 0 1 0 0 1\n";
+  const PolygonMesh mesh = parsePly(text, "m");
+  ASSERT_EQ(mesh.points.size(), 3u);
+  ASSERT_EQ(mesh.numberOfFaces(), 1u);
+  ASSERT_EQ(mesh.cornerTexCoords.size(), 3u);
+  EXPECT_DOUBLE_EQ(mesh.cornerTexCoords[2].y(), 1.0);
+}
+
+TEST(PlyReader, BinaryBothEndians)
+{
+  for (bool big : { false, true })
+  {
+    const PolygonMesh mesh = parsePly(binaryTetrahedron(big), "m");
+    ASSERT_EQ(mesh.points.size(), 4u);
+    ASSERT_EQ(mesh.numberOfFaces(), 4u);
+    EXPECT_FLOAT_EQ(mesh.points[1].y(), -1.0f);
+    EXPECT_EQ(mesh.face(3)[1], 3);
+  }
+}
+
+TEST(PlyReader, Errors)
+{
+  expectPlyError("this is not ply\n", "not a PLY file");
+  expectPlyError("ply\nformat ascii 1.0\nelement vertex 3\n", "no end_header");
+  const std::string tet = binaryTetrahedron(false);
+  expectPlyError(tet.substr(0, tet.size() - 30), "the data ends in element");
+  expectPlyError("ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+                 "property float z\nelement face 1\nproperty list uchar int vertex_indices\n"
+                 "end_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1 5\n",
+    "face 0 refers to vertex 5");
+  expectPlyError("ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\nproperty float y\n"
+                 "end_header\n0 0\n",
+    "lacks an x, y or z property");
+}

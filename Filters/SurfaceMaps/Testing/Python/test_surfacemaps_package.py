@@ -1,0 +1,70 @@
+"""The Python package: import, readers, validation, pipelines."""
+
+import os
+
+import pytest
+
+import surfacemaps
+from vtkmodules.vtkCommonExecutionModel import vtkAlgorithm
+
+DATA = os.environ.get("SURFACEMAPS_DATA", os.path.join(os.path.dirname(__file__), "..", "..", "..", "..", "Data"))
+
+
+def data(name):
+    return os.path.join(DATA, name)
+
+
+def test_classes_are_exported():
+    assert issubclass(surfacemaps.vtkSurfaceMeshReader, vtkAlgorithm)
+    assert issubclass(surfacemaps.vtkSurfaceMeshValidator, vtkAlgorithm)
+    assert surfacemaps.__version__
+
+
+def test_read_mesh_every_format():
+    for name, points in [("ellipsoid.obj", 642), ("blob.off", 642), ("limbs.ply", 2562),
+                         ("ellipsoid_coarse.stl", 162), ("blob.vtp", 642), ("limbs_coarse.vtk", 642),
+                         ("spot.obj", 2930)]:
+        mesh = surfacemaps.read_mesh(data(name))
+        assert mesh.GetNumberOfPoints() == points, name
+
+
+def test_read_mesh_raises_with_the_readers_message():
+    with pytest.raises(surfacemaps.InputError, match="looks truncated"):
+        surfacemaps.read_mesh(data("bad/truncated.obj"))
+    with pytest.raises(surfacemaps.InputError, match="cannot open"):
+        surfacemaps.read_mesh(data("no_such_file.off"))
+
+
+def test_validate_reports_statistics_and_defects():
+    good, torus = surfacemaps.validate(surfacemaps.read_mesh(data("ellipsoid.obj", )),
+                                       surfacemaps.read_mesh(data("bad/torus.obj")))
+    assert good["Valid"] and good["defects"] == []
+    assert good["Points"] == 642 and good["Triangles"] == 1280 and good["Genus"] == 0
+    assert good["Orientation"] == 1
+    assert not torus["Valid"]
+    assert torus["Genus"] == 1
+    assert any("has genus 1" in d for d in torus["defects"])
+
+
+def test_landmarks_from_files_and_correspondence():
+    a = surfacemaps.read_mesh(data("ellipsoid.obj"), landmarks=data("ellipsoid.pinned"))
+    b = surfacemaps.read_mesh(data("blob.off"), landmarks=data("blob.vts"))
+    c = surfacemaps.read_mesh(data("limbs.ply"), landmarks=data("bad/five_landmarks.pinned"))
+    rows = surfacemaps.validate(a, b, c)
+    assert [r["Landmarks"] for r in rows] == [4, 4, 5]
+    assert rows[0]["Valid"] and rows[1]["Valid"] and not rows[2]["Valid"]
+    assert "landmark counts do not match" in rows[2]["defects"][0]
+    assert all(r["Valid"] for r in surfacemaps.validate(a, b, c, check_landmark_correspondence=False))
+
+
+def test_pipeline_with_repeatable_input():
+    validator = surfacemaps.vtkSurfaceMeshValidator()
+    for name in ("ellipsoid.obj", "blob.off"):
+        reader = surfacemaps.vtkSurfaceMeshReader()
+        reader.SetFileName(data(name))
+        validator.AddInputConnection(reader.GetOutputPort())
+    validator.Update()
+    assert validator.GetAllValid()
+    table = validator.GetOutput()
+    assert table.GetNumberOfRows() == 2
+    assert table.GetColumnByName("Input").GetValue(1).endswith("blob.off")
