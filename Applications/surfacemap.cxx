@@ -32,8 +32,10 @@ struct Command
 };
 
 const Command Commands[] = {
-  { "check", "validate meshes as SurfaceMaps inputs and print their statistics",
-    &surfacemap::runCheck, &surfacemap::CheckHelp },
+  { "check",
+    "validate meshes as SurfaceMaps inputs and print their statistics",
+    &surfacemap::runCheck,
+    &surfacemap::CheckHelp },
 };
 
 void printUsage(std::ostream& os)
@@ -77,7 +79,8 @@ int main(int argc, char* argv[])
   if (verbosity > 0)
   {
     vtkOutputWindow::GetInstance()->SetDisplayModeToDefault();
-    vtkLogger::SetStderrVerbosity(verbosity >= 2 ? vtkLogger::VERBOSITY_TRACE : vtkLogger::VERBOSITY_INFO);
+    vtkLogger::SetStderrVerbosity(
+      verbosity >= 2 ? vtkLogger::VERBOSITY_TRACE : vtkLogger::VERBOSITY_INFO);
   }
 
   if (args.empty() || args[0] == "-h" || args[0] == "--help" || args[0] == "help")

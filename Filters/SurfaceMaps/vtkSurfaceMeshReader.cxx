@@ -53,7 +53,9 @@ std::string extensionOf(const std::string& path)
     return {};
   }
   std::string ext = path.substr(dot + 1);
-  std::transform(ext.begin(), ext.end(), ext.begin(),
+  std::transform(ext.begin(),
+    ext.end(),
+    ext.begin(),
     [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
   return ext;
 }
@@ -216,8 +218,8 @@ vtkSmartPointer<vtkPolyData> readMesh(const std::string& path)
     }
     return readWithVTK(reader, path);
   }
-  throw surfacemaps::InputError(path + ": unknown mesh format '" + ext +
-    "' (supported: .obj .off .ply .stl .vtp .vtk)");
+  throw surfacemaps::InputError(
+    path + ": unknown mesh format '" + ext + "' (supported: .obj .off .ply .stl .vtp .vtk)");
 }
 
 } // namespace
@@ -250,8 +252,9 @@ const char* vtkSurfaceMeshReader::GetLastErrorMessage() const
   return this->Internals->LastError.c_str();
 }
 
-int vtkSurfaceMeshReader::RequestData(
-  vtkInformation*, vtkInformationVector**, vtkInformationVector* outputVector)
+int vtkSurfaceMeshReader::RequestData(vtkInformation*,
+  vtkInformationVector**,
+  vtkInformationVector* outputVector)
 {
   vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
   this->Internals->LastError.clear();
@@ -301,6 +304,7 @@ void vtkSurfaceMeshReader::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "FileName: " << (this->FileName ? this->FileName : "(none)") << "\n";
-  os << indent << "LandmarkFileName: "
-     << (this->LandmarkFileName ? this->LandmarkFileName : "(none)") << "\n";
+  os << indent
+     << "LandmarkFileName: " << (this->LandmarkFileName ? this->LandmarkFileName : "(none)")
+     << "\n";
 }

@@ -38,7 +38,7 @@ int vtkSurfaceMeshValidator::FillInputPortInformation(int, vtkInformation* info)
 namespace
 {
 
-template <typename ArrayT>
+template<typename ArrayT>
 ArrayT* addColumn(vtkTable* table, const char* name, vtkIdType rows)
 {
   auto array = vtkSmartPointer<ArrayT>::New();
@@ -50,8 +50,9 @@ ArrayT* addColumn(vtkTable* table, const char* name, vtkIdType rows)
 
 } // namespace
 
-int vtkSurfaceMeshValidator::RequestData(
-  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+int vtkSurfaceMeshValidator::RequestData(vtkInformation*,
+  vtkInformationVector** inputVector,
+  vtkInformationVector* outputVector)
 {
   vtkTable* output = vtkTable::GetData(outputVector, 0);
   const int n = inputVector[0]->GetNumberOfInformationObjects();

@@ -12,12 +12,11 @@
  * | Valid | 1 if the input can be used as is |
  * | Points, Triangles, Edges | counts (Edges -1 if not determined) |
  * | Genus | genus of a closed, manifold, connected surface, else -1 |
- * | Components, BoundaryEdges, NonManifoldEdges, NonManifoldVertices | counts (-1 if not determined) |
- * | Area, BoundingBoxDiagonal | in the input's units |
- * | MinAngle, MeanMinAngle | smallest and mean per-triangle minimum angle, degrees |
- * | Orientation | +1 outward normals, -1 inward, 0 unknown |
- * | Landmarks | number of vertices with a "Landmarks" id >= 0 |
- * | Defects | one line per defect ("is not closed: 12 boundary edges (first: edge 4-17)") |
+ * | Components, BoundaryEdges, NonManifoldEdges, NonManifoldVertices | counts (-1 if not
+ * determined) | | Area, BoundingBoxDiagonal | in the input's units | | MinAngle, MeanMinAngle |
+ * smallest and mean per-triangle minimum angle, degrees | | Orientation | +1 outward normals, -1
+ * inward, 0 unknown | | Landmarks | number of vertices with a "Landmarks" id >= 0 | | Defects | one
+ * line per defect ("is not closed: 12 boundary edges (first: edge 4-17)") |
  *
  * Checked: triangles only, no missing/unused/duplicate vertices, finite
  * coordinates, no zero-area triangles, closed, manifold edges and vertices,

@@ -36,8 +36,8 @@ std::vector<int> parseLandmarks(const std::string& text, const std::string& name
       double ignored;
       if (!parseDouble(token, ignored))
       {
-        throw InputError(name + ":" + std::to_string(scanner.lineNumber()) +
-          ": unexpected '" + std::string(token) + "' after the vertex index");
+        throw InputError(name + ":" + std::to_string(scanner.lineNumber()) + ": unexpected '" +
+          std::string(token) + "' after the vertex index");
       }
     }
     indices.push_back(static_cast<int>(index));
@@ -55,8 +55,9 @@ std::vector<int> readLandmarks(const std::string& path)
   return indices;
 }
 
-std::vector<int> landmarkIdsFromIndices(
-  const std::vector<int>& indices, std::size_t numberOfVertices, const std::string& name)
+std::vector<int> landmarkIdsFromIndices(const std::vector<int>& indices,
+  std::size_t numberOfVertices,
+  const std::string& name)
 {
   std::vector<int> ids(numberOfVertices, -1);
   for (std::size_t k = 0; k < indices.size(); ++k)

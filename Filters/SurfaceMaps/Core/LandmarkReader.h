@@ -19,7 +19,8 @@ std::vector<int> parseLandmarks(const std::string& text, const std::string& name
 /// Per-vertex landmark ids (-1 none) from a list of vertex indices (id = position
 /// in the list). Throws InputError naming `name` when an index is out of range
 /// or a vertex is listed twice.
-std::vector<int> landmarkIdsFromIndices(
-  const std::vector<int>& indices, std::size_t numberOfVertices, const std::string& name);
+std::vector<int> landmarkIdsFromIndices(const std::vector<int>& indices,
+  std::size_t numberOfVertices,
+  const std::string& name);
 
 } // namespace surfacemaps

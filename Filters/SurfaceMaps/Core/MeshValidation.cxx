@@ -109,8 +109,8 @@ bool checkStructure(const PolygonMesh& mesh, MeshValidationResult& result)
   if (nonTriangles > 0)
   {
     result.defects.push_back("is not a triangle mesh: " + std::to_string(nonTriangles) + " of " +
-      plural(static_cast<long long>(nf), "polygon", "polygons") + " are not triangles (first: face " +
-      std::to_string(firstNonTriangle) + " with " +
+      plural(static_cast<long long>(nf), "polygon", "polygons") +
+      " are not triangles (first: face " + std::to_string(firstNonTriangle) + " with " +
       std::to_string(mesh.faceSize(firstNonTriangle)) + " vertices)");
   }
   if (badIndex > 0)
@@ -160,7 +160,8 @@ void checkVertices(const PolygonMesh& mesh, MeshValidationResult& result)
 
   std::vector<int> order(nv);
   std::iota(order.begin(), order.end(), 0);
-  auto less = [&](int a, int b) {
+  auto less = [&](int a, int b)
+  {
     const auto& p = mesh.points[a];
     const auto& q = mesh.points[b];
     return std::tie(p.x(), p.y(), p.z()) < std::tie(q.x(), q.y(), q.z());
@@ -187,7 +188,8 @@ void checkVertices(const PolygonMesh& mesh, MeshValidationResult& result)
   }
 }
 
-void measureTriangles(const PolygonMesh& mesh, const MeshValidationOptions& options,
+void measureTriangles(const PolygonMesh& mesh,
+  const MeshValidationOptions& options,
   MeshValidationResult& result)
 {
   MeshStatistics& stats = result.statistics;
@@ -285,12 +287,14 @@ void checkTopology(const PolygonMesh& mesh, MeshValidationResult& result)
       halfedges.push_back({ t[k], t[(k + 1) % 3], static_cast<int>(f) });
     }
   }
-  std::sort(halfedges.begin(), halfedges.end(), [](const DirectedEdge& a, const DirectedEdge& b) {
-    return std::make_pair(a.lo(), a.hi()) < std::make_pair(b.lo(), b.hi());
-  });
+  std::sort(halfedges.begin(),
+    halfedges.end(),
+    [](const DirectedEdge& a, const DirectedEdge& b)
+    { return std::make_pair(a.lo(), a.hi()) < std::make_pair(b.lo(), b.hi()); });
 
   long long edges = 0, boundary = 0, nonManifold = 0, misoriented = 0;
-  std::array<int, 2> firstBoundary{ -1, -1 }, firstNonManifold{ -1, -1 }, firstMisoriented{ -1, -1 };
+  std::array<int, 2> firstBoundary{ -1, -1 }, firstNonManifold{ -1, -1 },
+    firstMisoriented{ -1, -1 };
   for (std::size_t i = 0; i < halfedges.size();)
   {
     std::size_t j = i + 1;
@@ -320,23 +324,24 @@ void checkTopology(const PolygonMesh& mesh, MeshValidationResult& result)
   stats.boundaryEdges = boundary;
   stats.nonManifoldEdges = nonManifold;
 
-  auto edgeText = [](const std::array<int, 2>& e) {
-    return "edge " + std::to_string(e[0]) + "-" + std::to_string(e[1]);
-  };
+  auto edgeText = [](const std::array<int, 2>& e)
+  { return "edge " + std::to_string(e[0]) + "-" + std::to_string(e[1]); };
   if (boundary > 0)
   {
-    result.defects.push_back("is not closed: " + plural(boundary, "boundary edge", "boundary edges") +
+    result.defects.push_back(
+      "is not closed: " + plural(boundary, "boundary edge", "boundary edges") +
       " (first: " + edgeText(firstBoundary) + ")");
   }
   if (nonManifold > 0)
   {
-    result.defects.push_back("has " + plural(nonManifold, "non-manifold edge", "non-manifold edges") +
+    result.defects.push_back("has " +
+      plural(nonManifold, "non-manifold edge", "non-manifold edges") +
       " shared by more than two triangles (first: " + edgeText(firstNonManifold) + ")");
   }
   if (misoriented > 0)
   {
-    result.defects.push_back("is not consistently oriented: " +
-      plural(misoriented, "edge is", "edges are") +
+    result.defects.push_back(
+      "is not consistently oriented: " + plural(misoriented, "edge is", "edges are") +
       " traversed in the same direction by both triangles (first: " + edgeText(firstMisoriented) +
       ")");
   }
@@ -380,8 +385,10 @@ void checkTopology(const PolygonMesh& mesh, MeshValidationResult& result)
     std::sort(local.begin(), local.end());
     local.erase(std::unique(local.begin(), local.end()), local.end());
     UnionFind uf(local.size());
-    auto id = [&](int w) {
-      return static_cast<std::size_t>(std::lower_bound(local.begin(), local.end(), w) - local.begin());
+    auto id = [&](int w)
+    {
+      return static_cast<std::size_t>(
+        std::lower_bound(local.begin(), local.end(), w) - local.begin());
     };
     for (int i = begin; i < end; ++i)
     {
@@ -450,8 +457,8 @@ void checkTopology(const PolygonMesh& mesh, MeshValidationResult& result)
     stats.genus = static_cast<int>((2 - chi) / 2);
     if (stats.genus != 0)
     {
-      result.defects.push_back(
-        "has genus " + std::to_string(stats.genus) + "; a genus-0 (sphere-like) surface is required");
+      result.defects.push_back("has genus " + std::to_string(stats.genus) +
+        "; a genus-0 (sphere-like) surface is required");
     }
   }
 }
@@ -502,7 +509,8 @@ std::vector<std::string> checkLandmarkIds(const std::vector<int>& landmarkIds)
 }
 
 std::vector<std::vector<std::string>> checkLandmarkCorrespondence(
-  const std::vector<std::vector<int>>& landmarkIds, const std::vector<std::string>& names)
+  const std::vector<std::vector<int>>& landmarkIds,
+  const std::vector<std::string>& names)
 {
   std::vector<std::vector<std::string>> defects(landmarkIds.size());
   std::vector<std::map<int, int>> idToVertex(landmarkIds.size());

@@ -51,8 +51,8 @@ struct MeshValidationResult
 /// zero-area triangles, closed, edge- and vertex-manifold, consistently
 /// oriented, one connected component, genus 0. Defects name where they are
 /// (first offending element and counts). Never throws on bad content.
-MeshValidationResult validateMesh(
-  const PolygonMesh& mesh, const MeshValidationOptions& options = MeshValidationOptions());
+MeshValidationResult validateMesh(const PolygonMesh& mesh,
+  const MeshValidationOptions& options = MeshValidationOptions());
 
 /// Checks per-vertex landmark ids (-1 none) of one input: every id is >= -1
 /// and on at most one vertex. One sentence per defect, without the input name.
@@ -63,6 +63,7 @@ std::vector<std::string> checkLandmarkIds(const std::vector<int>& landmarkIds);
 /// first. Per input, one sentence per defect naming both inputs by `names`
 /// (the first input's list stays empty).
 std::vector<std::vector<std::string>> checkLandmarkCorrespondence(
-  const std::vector<std::vector<int>>& landmarkIds, const std::vector<std::string>& names);
+  const std::vector<std::vector<int>>& landmarkIds,
+  const std::vector<std::string>& names);
 
 } // namespace surfacemaps

@@ -54,7 +54,8 @@ PolygonMesh parseObj(const std::string& text, const std::string& name)
     {
       double xyz[3];
       int n = 0;
-      for (std::string_view token = scanner.nextToken(); !token.empty(); token = scanner.nextToken())
+      for (std::string_view token = scanner.nextToken(); !token.empty();
+           token = scanner.nextToken())
       {
         double value;
         if (!parseDouble(token, value))
@@ -70,9 +71,11 @@ PolygonMesh parseObj(const std::string& text, const std::string& name)
       // 3 coordinates, optionally w or an RGB colour.
       if (n != 3 && n != 4 && n != 6 && n != 7)
       {
-        fail(name, scanner,
+        fail(name,
+          scanner,
           "vertex has " + std::to_string(n) + " coordinates (3 expected)" +
-            (scanner.truncatedHere() ? "; the file ends without a newline and looks truncated" : ""));
+            (scanner.truncatedHere() ? "; the file ends without a newline and looks truncated"
+                                     : ""));
       }
       mesh.points.emplace_back(xyz[0], xyz[1], xyz[2]);
     }
@@ -80,7 +83,8 @@ PolygonMesh parseObj(const std::string& text, const std::string& name)
     {
       double uv[2] = { 0.0, 0.0 };
       int n = 0;
-      for (std::string_view token = scanner.nextToken(); !token.empty(); token = scanner.nextToken())
+      for (std::string_view token = scanner.nextToken(); !token.empty();
+           token = scanner.nextToken())
       {
         double value;
         if (!parseDouble(token, value))
@@ -102,7 +106,8 @@ PolygonMesh parseObj(const std::string& text, const std::string& name)
     else if (keyword == "f")
     {
       corners.clear();
-      for (std::string_view token = scanner.nextToken(); !token.empty(); token = scanner.nextToken())
+      for (std::string_view token = scanner.nextToken(); !token.empty();
+           token = scanner.nextToken())
       {
         const std::size_t slash = token.find('/');
         long long v;
@@ -113,7 +118,8 @@ PolygonMesh parseObj(const std::string& text, const std::string& name)
         const long long vi = resolveIndex(v, mesh.points.size());
         if (vi < 0)
         {
-          fail(name, scanner,
+          fail(name,
+            scanner,
             "face refers to vertex " + std::to_string(v) + ", but " +
               std::to_string(mesh.points.size()) + " vertices are defined before it");
         }

@@ -78,7 +78,8 @@ PolygonMesh parseOff(const std::string& text, const std::string& name)
     }
     if (!parseInt(token, counts[i]) || counts[i] < 0)
     {
-      fail(name, scanner, "expected vertex, face and edge counts, got '" + std::string(token) + "'");
+      fail(
+        name, scanner, "expected vertex, face and edge counts, got '" + std::string(token) + "'");
     }
     token = scanner.nextToken();
   }
@@ -100,7 +101,8 @@ PolygonMesh parseOff(const std::string& text, const std::string& name)
     {
       if (!parseDouble(token, xyz[k]))
       {
-        fail(name, scanner,
+        fail(name,
+          scanner,
           token.empty() ? "vertex has " + std::to_string(k) + " coordinates (3 expected)" +
               (scanner.truncatedHere() ? "; the file looks truncated" : "")
                         : "bad vertex coordinate '" + std::string(token) + "'");
@@ -131,7 +133,8 @@ PolygonMesh parseOff(const std::string& text, const std::string& name)
       long long index;
       if (token.empty())
       {
-        fail(name, scanner,
+        fail(name,
+          scanner,
           "face declares " + std::to_string(n) + " vertices but lists " + std::to_string(k) +
             (scanner.truncatedHere() ? "; the file looks truncated" : ""));
       }
@@ -141,7 +144,8 @@ PolygonMesh parseOff(const std::string& text, const std::string& name)
       }
       if (index < 0 || index >= nv)
       {
-        fail(name, scanner,
+        fail(name,
+          scanner,
           "face refers to vertex " + std::to_string(index) + ", but the file has " +
             std::to_string(nv) + " vertices");
       }

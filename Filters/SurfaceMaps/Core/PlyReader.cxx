@@ -146,15 +146,64 @@ public:
     }
     switch (type)
     {
-      case Type::Int8: { std::int8_t v; std::memcpy(&v, raw, 1); value = v; break; }
-      case Type::UInt8: { std::uint8_t v; std::memcpy(&v, raw, 1); value = v; break; }
-      case Type::Int16: { std::int16_t v; std::memcpy(&v, raw, 2); value = v; break; }
-      case Type::UInt16: { std::uint16_t v; std::memcpy(&v, raw, 2); value = v; break; }
-      case Type::Int32: { std::int32_t v; std::memcpy(&v, raw, 4); value = v; break; }
-      case Type::UInt32: { std::uint32_t v; std::memcpy(&v, raw, 4); value = v; break; }
-      case Type::Float32: { float v; std::memcpy(&v, raw, 4); value = v; break; }
-      case Type::Float64: { double v; std::memcpy(&v, raw, 8); value = v; break; }
-      default: return false;
+      case Type::Int8:
+      {
+        std::int8_t v;
+        std::memcpy(&v, raw, 1);
+        value = v;
+        break;
+      }
+      case Type::UInt8:
+      {
+        std::uint8_t v;
+        std::memcpy(&v, raw, 1);
+        value = v;
+        break;
+      }
+      case Type::Int16:
+      {
+        std::int16_t v;
+        std::memcpy(&v, raw, 2);
+        value = v;
+        break;
+      }
+      case Type::UInt16:
+      {
+        std::uint16_t v;
+        std::memcpy(&v, raw, 2);
+        value = v;
+        break;
+      }
+      case Type::Int32:
+      {
+        std::int32_t v;
+        std::memcpy(&v, raw, 4);
+        value = v;
+        break;
+      }
+      case Type::UInt32:
+      {
+        std::uint32_t v;
+        std::memcpy(&v, raw, 4);
+        value = v;
+        break;
+      }
+      case Type::Float32:
+      {
+        float v;
+        std::memcpy(&v, raw, 4);
+        value = v;
+        break;
+      }
+      case Type::Float64:
+      {
+        double v;
+        std::memcpy(&v, raw, 8);
+        value = v;
+        break;
+      }
+      default:
+        return false;
     }
     return true;
   }
@@ -195,9 +244,8 @@ PolygonMesh parsePly(const std::string& bytes, const std::string& name)
     std::istringstream words(line);
     std::string keyword;
     words >> keyword;
-    auto fail = [&](const std::string& what) {
-      throw InputError(name + ":" + std::to_string(lineNumber) + ": " + what);
-    };
+    auto fail = [&](const std::string& what)
+    { throw InputError(name + ":" + std::to_string(lineNumber) + ": " + what); };
     if (keyword == "format")
     {
       std::string f;
@@ -290,7 +338,8 @@ PolygonMesh parsePly(const std::string& bytes, const std::string& name)
       for (std::size_t k = 0; k < e.properties.size(); ++k)
       {
         const Property& p = e.properties[k];
-        auto truncated = [&]() {
+        auto truncated = [&]()
+        {
           throw InputError(name + ": the header declares " + std::to_string(e.count) + " " +
             e.name + " elements, but the data ends in element " + std::to_string(i) +
             "; the file looks truncated");

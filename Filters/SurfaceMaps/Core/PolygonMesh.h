@@ -34,7 +34,7 @@ struct PolygonMesh
     this->faceVertices.insert(this->faceVertices.end(), vertices.begin(), vertices.end());
     this->faceOffsets.push_back(static_cast<int>(this->faceVertices.size()));
   }
-  template <typename It>
+  template<typename It>
   void addFace(It begin, It end)
   {
     this->faceVertices.insert(this->faceVertices.end(), begin, end);

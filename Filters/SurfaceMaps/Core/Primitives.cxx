@@ -24,8 +24,14 @@ PolygonMesh makeOctahedron()
 {
   PolygonMesh mesh;
   mesh.points = { { 1, 0, 0 }, { -1, 0, 0 }, { 0, 1, 0 }, { 0, -1, 0 }, { 0, 0, 1 }, { 0, 0, -1 } };
-  for (auto t : { std::array<int, 3>{ 0, 2, 4 }, { 2, 1, 4 }, { 1, 3, 4 }, { 3, 0, 4 },
-         { 2, 0, 5 }, { 1, 2, 5 }, { 3, 1, 5 }, { 0, 3, 5 } })
+  for (auto t : { std::array<int, 3>{ 0, 2, 4 },
+         { 2, 1, 4 },
+         { 1, 3, 4 },
+         { 3, 0, 4 },
+         { 2, 0, 5 },
+         { 1, 2, 5 },
+         { 3, 1, 5 },
+         { 0, 3, 5 } })
   {
     mesh.addFace(t.begin(), t.end());
   }
@@ -35,21 +41,47 @@ PolygonMesh makeOctahedron()
 PolygonMesh makeIcosphere(int level)
 {
   const double t = (1.0 + std::sqrt(5.0)) / 2.0;
-  std::vector<Eigen::Vector3d> points = { { -1, t, 0 }, { 1, t, 0 }, { -1, -t, 0 }, { 1, -t, 0 },
-    { 0, -1, t }, { 0, 1, t }, { 0, -1, -t }, { 0, 1, -t }, { t, 0, -1 }, { t, 0, 1 },
-    { -t, 0, -1 }, { -t, 0, 1 } };
+  std::vector<Eigen::Vector3d> points = { { -1, t, 0 },
+    { 1, t, 0 },
+    { -1, -t, 0 },
+    { 1, -t, 0 },
+    { 0, -1, t },
+    { 0, 1, t },
+    { 0, -1, -t },
+    { 0, 1, -t },
+    { t, 0, -1 },
+    { t, 0, 1 },
+    { -t, 0, -1 },
+    { -t, 0, 1 } };
   for (auto& p : points)
   {
     p.normalize();
   }
-  std::vector<std::array<int, 3>> faces = { { 0, 11, 5 }, { 0, 5, 1 }, { 0, 1, 7 }, { 0, 7, 10 },
-    { 0, 10, 11 }, { 1, 5, 9 }, { 5, 11, 4 }, { 11, 10, 2 }, { 10, 7, 6 }, { 7, 1, 8 },
-    { 3, 9, 4 }, { 3, 4, 2 }, { 3, 2, 6 }, { 3, 6, 8 }, { 3, 8, 9 }, { 4, 9, 5 }, { 2, 4, 11 },
-    { 6, 2, 10 }, { 8, 6, 7 }, { 9, 8, 1 } };
+  std::vector<std::array<int, 3>> faces = { { 0, 11, 5 },
+    { 0, 5, 1 },
+    { 0, 1, 7 },
+    { 0, 7, 10 },
+    { 0, 10, 11 },
+    { 1, 5, 9 },
+    { 5, 11, 4 },
+    { 11, 10, 2 },
+    { 10, 7, 6 },
+    { 7, 1, 8 },
+    { 3, 9, 4 },
+    { 3, 4, 2 },
+    { 3, 2, 6 },
+    { 3, 6, 8 },
+    { 3, 8, 9 },
+    { 4, 9, 5 },
+    { 2, 4, 11 },
+    { 6, 2, 10 },
+    { 8, 6, 7 },
+    { 9, 8, 1 } };
   for (int l = 0; l < level; ++l)
   {
     std::map<std::pair<int, int>, int> midpoints;
-    auto midpoint = [&](int a, int b) {
+    auto midpoint = [&](int a, int b)
+    {
       const auto key = std::minmax(a, b);
       auto it = midpoints.find(key);
       if (it != midpoints.end())

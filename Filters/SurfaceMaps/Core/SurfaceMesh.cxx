@@ -21,8 +21,8 @@ SurfaceMesh toSurfaceMesh(const PolygonMesh& polygons)
       throw std::invalid_argument("face " + std::to_string(f) + " is not a triangle");
     }
     const int* t = polygons.face(f);
-    const SurfaceMesh::FaceHandle fh = mesh.add_face(
-      mesh.vertex_handle(t[0]), mesh.vertex_handle(t[1]), mesh.vertex_handle(t[2]));
+    const SurfaceMesh::FaceHandle fh =
+      mesh.add_face(mesh.vertex_handle(t[0]), mesh.vertex_handle(t[1]), mesh.vertex_handle(t[2]));
     if (!fh.is_valid())
     {
       throw std::invalid_argument("face " + std::to_string(f) + " makes the mesh non-manifold");

@@ -32,7 +32,10 @@ public:
   /// True when the text does not end with a newline (a hint of truncation).
   bool endsWithoutNewline() const { return !this->Text.empty() && this->Text.back() != '\n'; }
   /// True on an unterminated last line: a file cut off in the middle of it.
-  bool truncatedHere() const { return this->Next > this->Text.size() && this->endsWithoutNewline(); }
+  bool truncatedHere() const
+  {
+    return this->Next > this->Text.size() && this->endsWithoutNewline();
+  }
 
 private:
   std::string_view Text;

@@ -100,7 +100,8 @@ TEST(MeshValidation, NonTriangles)
   m.points = { { 0, 0, 0 }, { 1, 0, 0 }, { 1, 1, 0 }, { 0, 1, 0 } };
   m.addFace({ 0, 1, 2, 3 });
   m.addFace({ 0, 3, 2, 1 });
-  EXPECT_TRUE(onlyDefect(validateMesh(m), "2 of 2 polygons are not triangles (first: face 0 with 4"));
+  EXPECT_TRUE(
+    onlyDefect(validateMesh(m), "2 of 2 polygons are not triangles (first: face 0 with 4"));
 }
 
 TEST(MeshValidation, NonPolygonCells)
@@ -143,7 +144,8 @@ TEST(MeshValidation, DuplicateVertexPositions)
   PolygonMesh m = glued(makeTetrahedron(), makeTetrahedron(), Eigen::Vector3d(0, 0, 0));
   const MeshValidationResult r = validateMesh(m);
   ASSERT_FALSE(r.valid());
-  EXPECT_NE(r.defects[0].find("4 duplicate vertices (first: vertices 3 and 7 both at"), std::string::npos)
+  EXPECT_NE(
+    r.defects[0].find("4 duplicate vertices (first: vertices 3 and 7 both at"), std::string::npos)
     << r.defects[0];
 }
 
@@ -153,8 +155,12 @@ TEST(MeshValidation, ZeroAreaTriangle)
   // flipped: triangle (a, b, c) is flat, everything else is fine.
   PolygonMesh m;
   m.points = { { 0, 0, 0 }, { 1, 0, 0 }, { 2, 0, 0 }, { 1, 1.5, 0.5 }, { 1, -0.5, 1.5 } };
-  for (auto t : { std::array<int, 3>{ 0, 1, 2 }, { 0, 2, 3 }, { 2, 1, 4 }, { 1, 0, 4 },
-         { 0, 3, 4 }, { 2, 4, 3 } })
+  for (auto t : { std::array<int, 3>{ 0, 1, 2 },
+         { 0, 2, 3 },
+         { 2, 1, 4 },
+         { 1, 0, 4 },
+         { 0, 3, 4 },
+         { 2, 4, 3 } })
   {
     m.addFace(t.begin(), t.end());
   }
@@ -184,7 +190,8 @@ TEST(MeshValidation, NonManifoldEdge)
   }
   const MeshValidationResult r = validateMesh(m);
   ASSERT_FALSE(r.valid());
-  EXPECT_NE(r.defects[0].find("1 non-manifold edge shared by more than two triangles (first: edge 0-1)"),
+  EXPECT_NE(
+    r.defects[0].find("1 non-manifold edge shared by more than two triangles (first: edge 0-1)"),
     std::string::npos)
     << r.defects[0];
 }
@@ -205,7 +212,8 @@ TEST(MeshValidation, NonManifoldVertex)
   }
   m.points.pop_back(); // the welded vertex is the last one and now unused
   const MeshValidationResult r = validateMesh(m);
-  EXPECT_TRUE(onlyDefect(r, "1 non-manifold vertex where separate fans of triangles meet (first: vertex 0"));
+  EXPECT_TRUE(
+    onlyDefect(r, "1 non-manifold vertex where separate fans of triangles meet (first: vertex 0"));
 }
 
 TEST(MeshValidation, InconsistentOrientation)

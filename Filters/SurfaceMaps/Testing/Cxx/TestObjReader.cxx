@@ -94,6 +94,7 @@ TEST(ObjReader, MissingFile)
   }
   catch (const InputError& e)
   {
-    EXPECT_NE(std::string(e.what()).find("cannot open '/nonexistent/dir/mesh.obj'"), std::string::npos);
+    EXPECT_NE(
+      std::string(e.what()).find("cannot open '/nonexistent/dir/mesh.obj'"), std::string::npos);
   }
 }

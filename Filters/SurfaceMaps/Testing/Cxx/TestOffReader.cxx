@@ -48,8 +48,11 @@ TEST(OffReader, Errors)
   expectOffError("hello\n", "not an OFF file");
   expectOffError("OFF BINARY\n", "binary OFF is not supported");
   expectOffError("OFF\n3 1 0\n0 0 0\n1 0 0\n", "declares 3 vertices, but the file ends after 2");
-  expectOffError("OFF\n3 2 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n", "declares 2 faces, but the file ends after 1");
-  expectOffError("OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 3\n", "mesh.off:6: face refers to vertex 3, but the file has 3 vertices");
-  expectOffError("OFF\n3 1 0\n0 0 0\n1 a 0\n0 1 0\n3 0 1 2\n", "mesh.off:4: bad vertex coordinate 'a'");
+  expectOffError(
+    "OFF\n3 2 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n", "declares 2 faces, but the file ends after 1");
+  expectOffError("OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 3\n",
+    "mesh.off:6: face refers to vertex 3, but the file has 3 vertices");
+  expectOffError(
+    "OFF\n3 1 0\n0 0 0\n1 a 0\n0 1 0\n3 0 1 2\n", "mesh.off:4: bad vertex coordinate 'a'");
   expectOffError("OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1", "face declares 3 vertices but lists 2");
 }

@@ -23,7 +23,7 @@ void expectPlyError(const std::string& bytes, const std::string& part)
   }
 }
 
-template <typename T>
+template<typename T>
 void put(std::string& bytes, T value, bool bigEndian)
 {
   char raw[sizeof(T)];

@@ -55,16 +55,20 @@ TEST(SurfaceMeshReader, EveryFormat)
     const char* File;
     vtkIdType Points, Polys;
   };
-  for (const Case& c : { Case{ "ellipsoid.obj", 642, 1280 }, Case{ "blob.off", 642, 1280 },
-         Case{ "limbs.ply", 2562, 5120 }, Case{ "ellipsoid_coarse.stl", 162, 320 },
-         Case{ "blob.vtp", 642, 1280 }, Case{ "limbs_coarse.vtk", 642, 1280 },
+  for (const Case& c : { Case{ "ellipsoid.obj", 642, 1280 },
+         Case{ "blob.off", 642, 1280 },
+         Case{ "limbs.ply", 2562, 5120 },
+         Case{ "ellipsoid_coarse.stl", 162, 320 },
+         Case{ "blob.vtp", 642, 1280 },
+         Case{ "limbs_coarse.vtk", 642, 1280 },
          Case{ "spot.obj", 2930, 5856 } })
   {
     const ReadResult r = read(Data + "/" + c.File);
     EXPECT_TRUE(r.Error.empty()) << c.File << ": " << r.Error;
     EXPECT_EQ(r.Output->GetNumberOfPoints(), c.Points) << c.File;
     EXPECT_EQ(r.Output->GetNumberOfPolys(), c.Polys) << c.File;
-    auto* name = vtkStringArray::SafeDownCast(r.Output->GetFieldData()->GetAbstractArray("FileName"));
+    auto* name =
+      vtkStringArray::SafeDownCast(r.Output->GetFieldData()->GetAbstractArray("FileName"));
     ASSERT_NE(name, nullptr);
     EXPECT_EQ(name->GetValue(0), Data + "/" + c.File);
   }
@@ -83,7 +87,8 @@ TEST(SurfaceMeshReader, SpotKeepsItsTextureSeamsClosed)
   // Face 1 is "f 4/4/4 3/5/3 2/6/2": its second corner has vt 5.
   double t[6];
   tc->GetTuple(1, t);
-  const std::string text = [] {
+  const std::string text = []
+  {
     std::ifstream in(Data + "/spot.obj");
     std::string line;
     int vt = 0;
@@ -104,8 +109,8 @@ TEST(SurfaceMeshReader, SpotKeepsItsTextureSeamsClosed)
 
 TEST(SurfaceMeshReader, LandmarkFilesBecomeTheLandmarksArray)
 {
-  for (const std::string& pair : { std::string("ellipsoid.obj|ellipsoid.pinned"),
-         std::string("blob.off|blob.vts") })
+  for (const std::string& pair :
+    { std::string("ellipsoid.obj|ellipsoid.pinned"), std::string("blob.off|blob.vts") })
   {
     const std::size_t bar = pair.find('|');
     const ReadResult r = read(Data + "/" + pair.substr(0, bar), Data + "/" + pair.substr(bar + 1));
@@ -147,7 +152,8 @@ TEST(SurfaceMeshReader, ErrorsLeaveAnEmptyOutputAndNameTheFile)
          Case{ bad + "garbage.ply", "", "not a PLY file" },
          Case{ Data + "/missing.obj", "", "cannot open '" + Data + "/missing.obj'" },
          Case{ Data + "/generate_data.py", "", "unknown mesh format 'py'" },
-         Case{ Data + "/ellipsoid.obj", bad + "ellipsoid_out_of_range.pinned",
+         Case{ Data + "/ellipsoid.obj",
+           bad + "ellipsoid_out_of_range.pinned",
            "landmark 2 is vertex 5000, out of range for a mesh with 642 vertices" },
        })
   {
