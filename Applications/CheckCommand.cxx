@@ -32,7 +32,10 @@ const char* const CheckHelp =
   "  --landmarks FILE...  one landmark file per mesh, in the same order: one\n"
   "                       0-based vertex index per line (optionally 'lk i'),\n"
   "                       or SHREC .vts lines 'i x y z'. The landmark ids\n"
-  "                       (line order) must match across meshes.\n"
+  "                       (line order) must match across meshes, as a map\n"
+  "                       between them requires. Without --landmarks each\n"
+  "                       mesh is checked on its own (landmark arrays in VTP\n"
+  "                       files only need unique ids).\n"
   "\n"
   "Exit code 0 only if every mesh is valid; 2 otherwise.\n";
 
@@ -87,6 +90,7 @@ int runCheck(const std::vector<std::string>& args)
 
   bool ok = true;
   vtkNew<vtkSurfaceMeshValidator> validator;
+  validator->SetCheckLandmarkCorrespondence(inLandmarks);
   std::vector<std::string> names;
   for (std::size_t i = 0; i < meshes.size(); ++i)
   {

@@ -100,6 +100,12 @@ def test_landmarks_matching_and_not():
     assert "landmark counts do not match" in r.stderr
 
 
+def test_without_landmark_files_meshes_are_checked_on_their_own():
+    # blob.vtp carries 4 landmarks in its own array; ellipsoid.obj has none.
+    r = run("check", data("ellipsoid.obj"), data("blob.vtp"))
+    assert r.returncode == 0, r.stderr
+
+
 def test_usage_errors():
     r = run("check")
     assert r.returncode == 2 and "no mesh given" in r.stderr
