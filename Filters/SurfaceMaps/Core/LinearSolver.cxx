@@ -1,0 +1,85 @@
+#include "LinearSolver.h"
+
+#include <Eigen/CholmodSupport>
+
+#include <cmath>
+#include <sstream>
+
+namespace surfacemaps
+{
+
+struct LinearSolver::Internals
+{
+  Eigen::CholmodSupernodalLLT<Eigen::SparseMatrix<double>, Eigen::Upper> Cholesky;
+  bool Analysed = false;
+};
+
+LinearSolver::LinearSolver()
+  : Impl(new Internals)
+{
+}
+
+LinearSolver::~LinearSolver() = default;
+
+LinearSolveResult LinearSolver::solve(const Eigen::SparseMatrix<double>& H,
+  const Eigen::VectorXd& b,
+  Eigen::VectorXd& x,
+  bool patternChanged,
+  const Logger& log)
+{
+  LinearSolveResult result;
+  auto& cholesky = this->Impl->Cholesky;
+  if (patternChanged || !this->Impl->Analysed)
+  {
+    cholesky.analyzePattern(H);
+    this->Impl->Analysed = true;
+    result.analysed = true;
+  }
+  cholesky.factorize(H);
+  if (cholesky.info() == Eigen::Success)
+  {
+    x = cholesky.solve(b);
+    result.success = cholesky.info() == Eigen::Success && x.allFinite();
+    if (result.success)
+    {
+      return result;
+    }
+  }
+
+  // Regularise: H + shift I, the shift growing from a tiny fraction of the
+  // largest diagonal entry. The pattern already holds the diagonal.
+  double maxDiagonal = 0.0;
+  for (Eigen::Index i = 0; i < H.rows(); ++i)
+  {
+    maxDiagonal = std::max(maxDiagonal, std::abs(H.coeff(i, i)));
+  }
+  Eigen::SparseMatrix<double> shifted = H;
+  double shift = std::max(1e-12, 1e-10 * maxDiagonal);
+  for (int attempt = 0; attempt < 12; ++attempt, shift *= 10.0)
+  {
+    shifted = H;
+    for (Eigen::Index i = 0; i < shifted.rows(); ++i)
+    {
+      shifted.coeffRef(i, i) += shift;
+    }
+    cholesky.factorize(shifted);
+    if (cholesky.info() != Eigen::Success)
+    {
+      continue;
+    }
+    x = cholesky.solve(b);
+    if (cholesky.info() == Eigen::Success && x.allFinite())
+    {
+      std::ostringstream message;
+      message << "Cholesky factorisation failed; solved with diagonal shift " << shift;
+      log(Logger::Warning, message.str());
+      result.success = true;
+      result.shift = shift;
+      return result;
+    }
+  }
+  log(Logger::Warning, "Cholesky factorisation failed even with a diagonal shift");
+  return result;
+}
+
+} // namespace surfacemaps

@@ -1,0 +1,48 @@
+// SurfaceMaps engine: sparse symmetric positive definite solves (CHOLMOD).
+#pragma once
+
+#include "Log.h"
+
+#include <Eigen/Core>
+#include <Eigen/SparseCore>
+
+#include <memory>
+#include <string>
+
+namespace surfacemaps
+{
+
+struct LinearSolveResult
+{
+  bool success = false;
+  /// Diagonal shift that had to be added (0: the plain factorisation worked).
+  double shift = 0.0;
+  /// Whether the symbolic analysis was (re)done for this solve.
+  bool analysed = false;
+};
+
+/// Solves H x = b for a sparse symmetric positive (semi-)definite H given by
+/// its upper triangle, with CHOLMOD's supernodal Cholesky. The symbolic
+/// analysis is kept while the sparsity pattern stays the same. If the
+/// factorisation fails (H not numerically positive definite), H + shift I is
+/// factorised with a growing shift; the log says which happened.
+class LinearSolver
+{
+public:
+  LinearSolver();
+  ~LinearSolver();
+  LinearSolver(const LinearSolver&) = delete;
+  LinearSolver& operator=(const LinearSolver&) = delete;
+
+  LinearSolveResult solve(const Eigen::SparseMatrix<double>& H,
+    const Eigen::VectorXd& b,
+    Eigen::VectorXd& x,
+    bool patternChanged,
+    const Logger& log = Logger());
+
+private:
+  struct Internals;
+  std::unique_ptr<Internals> Impl;
+};
+
+} // namespace surfacemaps

@@ -1,0 +1,122 @@
+#include "NewtonSolver.h"
+
+#include <cmath>
+#include <sstream>
+
+namespace surfacemaps
+{
+
+NewtonStepResult newtonStep(Objective& objective,
+  SpherePoints& points,
+  LinearSolver& solver,
+  const NewtonOptions& options)
+{
+  NewtonStepResult result;
+  Eigen::VectorXd g;
+  Eigen::SparseMatrix<double> H;
+  bool patternChanged = false;
+  result.energyBefore = objective.hessian(points, options.projectionEps, g, H, &patternChanged);
+  result.energyAfter = result.energyBefore;
+  if (!std::isfinite(result.energyBefore))
+  {
+    // Not converged, not movable: the caller must not take this for a minimum.
+    result.decrement = std::numeric_limits<double>::infinity();
+    options.log(Logger::Warning, "Newton step from an invalid state (infinite energy)");
+    return result;
+  }
+  if (points.numberOfVariables() == 0)
+  {
+    return result;
+  }
+
+  Eigen::VectorXd d;
+  const LinearSolveResult solve = solver.solve(H, -g, d, patternChanged, options.log);
+  result.regularised = solve.shift > 0.0;
+  double slope = solve.success ? d.dot(g) : 0.0;
+  if (!solve.success || !(slope < 0.0))
+  {
+    d = -g;
+    slope = -g.squaredNorm();
+    result.gradientFallback = true;
+    options.log(Logger::Detail, "Newton direction is no descent direction; using -gradient");
+  }
+  result.decrement = std::sqrt(std::max(0.0, -slope));
+  if (!(slope < 0.0))
+  {
+    return result; // zero gradient: nothing to do
+  }
+
+  double initialStep = 1.0;
+  if (options.maxPointStep > 0.0)
+  {
+    double largest = 0.0;
+    for (int i = 0; i < points.size(); ++i)
+    {
+      const int v = points.variable(i);
+      if (v >= 0)
+      {
+        largest = std::max(largest, std::hypot(d[v], d[v + 1]));
+      }
+    }
+    if (largest > options.maxPointStep)
+    {
+      initialStep = options.maxPointStep / largest;
+    }
+  }
+
+  const std::vector<Eigen::Vector3d> start = points.positions();
+  auto energyAt = [&](double t)
+  {
+    points.setPositions(start);
+    points.retract(d, t);
+    if (options.acceptTrial && !options.acceptTrial(points))
+    {
+      return std::numeric_limits<double>::infinity();
+    }
+    return objective.value(points);
+  };
+  const LineSearchResult ls =
+    armijoBacktracking(energyAt, result.energyBefore, slope, initialStep, options.lineSearch);
+  result.lineSearchTrials = ls.trials;
+  points.setPositions(start);
+  if (ls.success)
+  {
+    points.retract(d, ls.step);
+    points.recentreBases();
+    result.step = ls.step;
+    result.energyAfter = ls.energy;
+    result.moved = true;
+  }
+  return result;
+}
+
+MinimizeResult minimize(Objective& objective, SpherePoints& points, const MinimizeOptions& options)
+{
+  MinimizeResult result;
+  LinearSolver solver;
+  result.initialEnergy = objective.value(points);
+  result.finalEnergy = result.initialEnergy;
+  for (int it = 0; it < options.maxIterations; ++it)
+  {
+    const NewtonStepResult step = newtonStep(objective, points, solver, options.newton);
+    result.iterations = it + 1;
+    result.finalEnergy = step.energyAfter;
+    if (options.callback && !options.callback(it, step))
+    {
+      result.aborted = true;
+      break;
+    }
+    if (step.decrement < options.decrementTolerance)
+    {
+      result.converged = true;
+      break;
+    }
+    if (!step.moved)
+    {
+      break;
+    }
+  }
+  return result;
+}
+
+} // namespace surfacemaps

@@ -1,0 +1,80 @@
+// SurfaceMaps engine: projected Newton on sphere points, step by step.
+#pragma once
+
+#include "LineSearch.h"
+#include "LinearSolver.h"
+#include "Log.h"
+#include "Objective.h"
+#include "SpherePoints.h"
+
+#include <functional>
+
+namespace surfacemaps
+{
+
+struct NewtonOptions
+{
+  /// Element Hessian eigenvalues are clamped to at least this.
+  double projectionEps = 1e-9;
+  /// Largest tangent step of any single point in one Newton step; the whole
+  /// step is scaled down (never clamped per point, which would change its
+  /// direction) to respect it. 0 = no cap.
+  double maxPointStep = 0.0;
+  LineSearchOptions lineSearch;
+  /// Extra validity check of trial positions (e.g. the embedding degree);
+  /// false rejects the trial like an infinite energy. Optional.
+  std::function<bool(const SpherePoints&)> acceptTrial;
+  Logger log;
+};
+
+struct NewtonStepResult
+{
+  double energyBefore = 0.0;
+  double energyAfter = 0.0;
+  /// Newton decrement sqrt(-d.g) of the (possibly fallback) direction.
+  double decrement = 0.0;
+  /// Accepted step length (0 if the line search failed).
+  double step = 0.0;
+  int lineSearchTrials = 0;
+  /// The Newton direction was no descent direction; -gradient was used.
+  bool gradientFallback = false;
+  /// The linear solve needed a diagonal shift.
+  bool regularised = false;
+  /// The points moved (line search succeeded).
+  bool moved = false;
+};
+
+/// One projected-Newton step on all unlocked points: derivatives with
+/// projected element Hessians, sparse solve H d = -g, Armijo line search on
+/// the retraction, bases re-centred. Points stay where they are if no trial
+/// is accepted.
+NewtonStepResult newtonStep(Objective& objective,
+  SpherePoints& points,
+  LinearSolver& solver,
+  const NewtonOptions& options = NewtonOptions());
+
+struct MinimizeOptions
+{
+  NewtonOptions newton;
+  int maxIterations = 50;
+  /// Converged when the Newton decrement is below this.
+  double decrementTolerance = 1e-4;
+  /// Called after every iteration with the iteration number (from 0) and its
+  /// step result; return false to stop (abort).
+  std::function<bool(int, const NewtonStepResult&)> callback;
+};
+
+struct MinimizeResult
+{
+  int iterations = 0;
+  bool converged = false;
+  bool aborted = false;
+  double initialEnergy = 0.0;
+  double finalEnergy = 0.0;
+};
+
+/// Newton steps until the decrement is below the tolerance, no step is
+/// possible, the iteration cap is reached, or the callback aborts.
+MinimizeResult minimize(Objective& objective, SpherePoints& points, const MinimizeOptions& options);
+
+} // namespace surfacemaps

@@ -1,0 +1,186 @@
+#include "AutoDiff.h"
+
+#include "FiniteDifferences.h"
+
+#include <Eigen/Geometry>
+#include <Eigen/LU>
+#include <gtest/gtest.h>
+
+using namespace surfacemaps;
+using namespace surfacemaps::testing;
+
+namespace
+{
+constexpr int N = 3;
+using D = Dual<N>;
+
+// Checks value, gradient and Hessian of f at x against plain evaluation and
+// central finite differences; f is a generic lambda over the scalar type.
+template<typename F>
+void check(const char* what, F f, const Eigen::Vector3d& x, double tolerance = 2e-6)
+{
+  std::array<D, N> vars;
+  for (int i = 0; i < N; ++i)
+  {
+    vars[i] = D::variable(x[i], i);
+  }
+  const D r = f(vars);
+  const std::array<double, N> plain{ x[0], x[1], x[2] };
+  const double value = f(plain);
+  EXPECT_DOUBLE_EQ(r.val, value) << what;
+
+  auto scalar = [&](const Eigen::VectorXd& y) {
+    return f(std::array<double, N>{ y[0], y[1], y[2] });
+  };
+  const Eigen::VectorXd g = finiteDifferenceGradient(scalar, x);
+  const Eigen::MatrixXd H = finiteDifferenceHessian(scalar, x);
+  EXPECT_LT(relativeError(r.grad, g), tolerance) << what << "\n"
+                                                 << r.grad.transpose() << "\n"
+                                                 << g.transpose();
+  EXPECT_LT(relativeError(r.Hess, H), 100 * tolerance) << what << "\n" << r.Hess << "\n\n" << H;
+  EXPECT_LT((r.Hess - r.Hess.transpose()).cwiseAbs().maxCoeff(), 1e-12) << what;
+
+  // The gradient-only scalar agrees with the full one.
+  std::array<Dual<N, false>, N> gvars;
+  for (int i = 0; i < N; ++i)
+  {
+    gvars[i] = Dual<N, false>::variable(x[i], i);
+  }
+  const Dual<N, false> rg = f(gvars);
+  EXPECT_DOUBLE_EQ(rg.val, r.val) << what;
+  EXPECT_LT((rg.grad - r.grad).cwiseAbs().maxCoeff(), 1e-14) << what;
+}
+const Eigen::Vector3d X(0.7, -0.4, 1.3);
+} // namespace
+
+TEST(AutoDiff, Arithmetic)
+{
+  check(
+    "a+b", [](const auto& v) { return v[0] + v[1] + 2.0 + v[2] * 3.0; }, X);
+  check(
+    "a-b", [](const auto& v) { return v[0] - v[1] - 2.0 - (1.0 - v[2]); }, X);
+  check(
+    "a*b", [](const auto& v) { return v[0] * v[1] * v[2] * v[0]; }, X);
+  check(
+    "a/b", [](const auto& v) { return v[0] / v[1] + 1.0 / v[2] + v[2] / 3.0; }, X);
+  check(
+    "neg", [](const auto& v) { return -(v[0] * v[2]) + +v[1]; }, X);
+  check(
+    "compound",
+    [](const auto& v)
+    {
+      auto a = v[0];
+      a += v[1];
+      a *= v[2];
+      a -= 0.5 * v[0];
+      a /= v[2] + 3.0;
+      return a;
+    },
+    X);
+}
+
+TEST(AutoDiff, Functions)
+{
+  check(
+    "sqrt", [](const auto& v) { return sqrt(v[0] * v[0] + v[1] * v[1] + v[2]); }, X);
+  check(
+    "log", [](const auto& v) { return log(v[0] * v[2] + 2.0); }, X);
+  check(
+    "exp", [](const auto& v) { return exp(v[0] * v[1] - v[2]); }, X);
+  check(
+    "pow double", [](const auto& v) { return pow(v[2] + v[0], 2.5); }, X);
+  check(
+    "pow scalar", [](const auto& v) { return pow(v[2], v[0] + 1.0); }, X);
+  check(
+    "atan2", [](const auto& v) { return atan2(v[1] * v[2], v[0] - v[2]); }, X);
+  check(
+    "acos", [](const auto& v) { return acos(0.3 * v[0] * v[1]); }, X);
+  check(
+    "abs negative", [](const auto& v) { return abs(v[1] * v[2]); }, X);
+  check(
+    "abs positive", [](const auto& v) { return abs(v[0] * v[2]); }, X);
+  check(
+    "min", [](const auto& v) { return min(v[0] * v[0], v[1] * v[2] + 2.0); }, X);
+  check(
+    "max", [](const auto& v) { return max(v[0] * v[0], v[1] * v[2] + 2.0); }, X);
+}
+
+TEST(AutoDiff, Comparisons)
+{
+  const D a = D::variable(1.0, 0), b = D::variable(2.0, 1);
+  EXPECT_TRUE(a < b);
+  EXPECT_TRUE(a <= b);
+  EXPECT_FALSE(a > b);
+  EXPECT_TRUE(b >= a);
+  EXPECT_TRUE(a != b);
+  EXPECT_TRUE(a == 1.0 * a);
+  EXPECT_TRUE(a < 1.5 && 1.5 < b && b > 1.5 && a <= 1.0 && 2.0 >= b && b >= 2.0);
+}
+
+TEST(AutoDiff, CompositesInsideEigen)
+{
+  // Frobenius norm of a 2x2 matrix and of its inverse (symmetric-Dirichlet-like).
+  check(
+    "2x2 inverse",
+    [](const auto& v)
+    {
+      using T = std::decay_t<decltype(v[0])>;
+      Eigen::Matrix<T, 2, 2> J;
+      J << v[0] + 2.0, v[1], v[2], v[0] * v[1] + 1.5;
+      const Eigen::Matrix<T, 2, 2> Jinv = J.inverse();
+      return J.squaredNorm() + Jinv.squaredNorm();
+    },
+    X);
+  check(
+    "cross dot",
+    [](const auto& v)
+    {
+      using T = std::decay_t<decltype(v[0])>;
+      const Eigen::Matrix<T, 3, 1> a(v[0], v[1], v[2]);
+      const Eigen::Matrix<T, 3, 1> b(v[1], T(2.0), v[0] * v[2]);
+      return a.cross(b).dot(Eigen::Matrix<T, 3, 1>(v[2], v[0], T(1.0))) + a.dot(b);
+    },
+    X);
+  check(
+    "normalisation",
+    [](const auto& v)
+    {
+      using T = std::decay_t<decltype(v[0])>;
+      const Eigen::Matrix<T, 3, 1> a(v[0], v[1], v[2]);
+      const Eigen::Matrix<T, 3, 1> n = a / a.norm();
+      return n[0] * 2.0 + n[1] * n[2];
+    },
+    X);
+  check(
+    "determinant",
+    [](const auto& v)
+    {
+      using T = std::decay_t<decltype(v[0])>;
+      Eigen::Matrix<T, 3, 3> M;
+      M << v[0], v[1], T(1.0), v[2], T(0.5), v[0], v[1] * v[2], T(2.0), v[0];
+      return M.determinant();
+    },
+    X);
+}
+
+TEST(AutoDiff, InvalidValuesPropagate)
+{
+  const D a = D::variable(-1.0, 0);
+  EXPECT_FALSE(isfinite(log(a)));
+  EXPECT_FALSE(isfinite(sqrt(a)));
+  EXPECT_TRUE(isfinite(log(-a)));
+}
+
+TEST(AutoDiff, TwentyFourVariables)
+{
+  using D24 = Dual<24>;
+  D24 sum = 0.0;
+  for (int i = 0; i < 24; ++i)
+  {
+    const D24 x = D24::variable(0.1 * (i + 1), i);
+    sum += x * x;
+  }
+  EXPECT_NEAR(sum.val, 0.01 * 24 * 25 * 49 / 6.0, 1e-12);
+  EXPECT_DOUBLE_EQ(sum.grad[23], 2 * 2.4);
+  EXPECT_TRUE(sum.Hess.isApprox(2.0 * Eigen::Matrix<double, 24, 24>::Identity()));
+}

@@ -1,0 +1,176 @@
+#include "NewtonSolver.h"
+#include "Primitives.h"
+#include "SphericalTriangulation.h"
+
+#include <gtest/gtest.h>
+
+#include <random>
+
+using namespace surfacemaps;
+
+namespace
+{
+std::vector<std::array<int, 3>> triangles(const PolygonMesh& m)
+{
+  std::vector<std::array<int, 3>> t;
+  for (std::size_t f = 0; f < m.numberOfFaces(); ++f)
+  {
+    t.push_back({ m.face(f)[0], m.face(f)[1], m.face(f)[2] });
+  }
+  return t;
+}
+
+// d / target - log d with d = det[a, b, c]: the log barrier of each chord
+// triangle plus a linear pull, smallest where the triangle has d = target;
+// +inf for an inverted triangle.
+struct AreaBarrierEnergy
+{
+  std::vector<std::array<int, 3>> triangles;
+  std::vector<double> targets;
+  int numberOfElements() const { return static_cast<int>(this->triangles.size()); }
+  std::array<int, 3> points(int e) const { return this->triangles[e]; }
+  template<typename T>
+  T operator()(int e, const std::array<Eigen::Matrix<T, 3, 1>, 3>& p) const
+  {
+    const T d = p[0].dot(p[1].cross(p[2]));
+    if (!(d > 0.0))
+    {
+      return T(std::numeric_limits<double>::infinity());
+    }
+    return d / this->targets[e] - log(d);
+  }
+};
+
+// A randomly perturbed icosphere pulled back towards the icosphere's nearly
+// equal triangle areas (a minimum isolated up to rotations).
+struct Problem
+{
+  PolygonMesh mesh = makeIcosphere(2);
+  SpherePoints points;
+  Objective objective;
+
+  explicit Problem(double perturbation)
+  {
+    std::mt19937 rng(42);
+    std::uniform_real_distribution<double> u(-perturbation, perturbation);
+    std::vector<Eigen::Vector3d> p = this->mesh.points;
+    for (auto& x : p)
+    {
+      x += Eigen::Vector3d(u(rng), u(rng), u(rng));
+    }
+    this->points = SpherePoints(p);
+    const auto t = triangles(this->mesh);
+    std::vector<double> targets;
+    for (const auto& f : t)
+    {
+      const auto& q = this->mesh.points;
+      targets.push_back(q[f[0]].dot(q[f[1]].cross(q[f[2]])));
+    }
+    this->objective.addTerm(std::make_shared<ElementTerm<3, AreaBarrierEnergy>>(
+      "area barrier", AreaBarrierEnergy{ t, targets }));
+  }
+
+  /// Largest |det / target - 1| over the triangles.
+  double areaError() const
+  {
+    double worst = 0.0;
+    const auto& q = this->mesh.points;
+    for (const auto& f : triangles(this->mesh))
+    {
+      const auto& p = this->points;
+      const double d = p.position(f[0]).dot(p.position(f[1]).cross(p.position(f[2])));
+      worst = std::max(worst, std::abs(d / q[f[0]].dot(q[f[1]].cross(q[f[2]])) - 1.0));
+    }
+    return worst;
+  }
+};
+
+} // namespace
+
+TEST(NewtonSolver, EqualAreasUnderTheBarrier)
+{
+  Problem problem(0.05);
+  ASSERT_TRUE(certifyBijective(problem.points.positions(), triangles(problem.mesh)).bijective)
+    << "test setup: the perturbed start must be a valid embedding";
+  const double errorBefore = problem.areaError();
+  EXPECT_GT(errorBefore, 0.1);
+
+  std::vector<double> energies{ problem.objective.value(problem.points) };
+  int inversions = 0;
+  MinimizeOptions options;
+  options.maxIterations = 30;
+  options.decrementTolerance = 1e-4; // the schedule's convergence threshold
+  options.callback = [&](int, const NewtonStepResult& step)
+  {
+    energies.push_back(step.energyAfter);
+    if (!certifyBijective(problem.points.positions(), triangles(problem.mesh)).bijective)
+    {
+      ++inversions;
+    }
+    return true;
+  };
+  const MinimizeResult result = minimize(problem.objective, problem.points, options);
+
+  EXPECT_TRUE(result.converged);
+  // Measured: 14 steps (the decrement falls from 3.3 to 8e-5; the energy
+  // settles to 1e-11 relative after 12).
+  EXPECT_LE(result.iterations, 20);
+  EXPECT_EQ(inversions, 0);
+  for (std::size_t i = 1; i < energies.size(); ++i)
+  {
+    EXPECT_LE(energies[i], energies[i - 1]) << "iteration " << i;
+  }
+  EXPECT_LT(problem.areaError(), 1e-3);
+}
+
+TEST(NewtonSolver, StepCapScalesTheWholeStep)
+{
+  Problem problem(0.05);
+  LinearSolver solver;
+  NewtonOptions options;
+  options.maxPointStep = 1e-3;
+  const std::vector<Eigen::Vector3d> before = problem.points.positions();
+  const NewtonStepResult step = newtonStep(problem.objective, problem.points, solver, options);
+  ASSERT_TRUE(step.moved);
+  EXPECT_LT(step.energyAfter, step.energyBefore);
+  double largest = 0.0;
+  for (int i = 0; i < problem.points.size(); ++i)
+  {
+    largest = std::max(largest, (problem.points.position(i) - before[i]).norm());
+  }
+  EXPECT_LE(largest, 1e-3 * (1 + 1e-9));
+  EXPECT_GT(largest, 1e-4);
+}
+
+TEST(NewtonSolver, TrialCheckAndAbort)
+{
+  Problem problem(0.05);
+  MinimizeOptions options;
+  options.newton.acceptTrial = [](const SpherePoints&) { return false; }; // reject everything
+  MinimizeResult result = minimize(problem.objective, problem.points, options);
+  EXPECT_FALSE(result.converged);
+  EXPECT_EQ(result.iterations, 1);
+  EXPECT_NEAR(result.finalEnergy, result.initialEnergy, 1e-12 * result.initialEnergy);
+
+  Problem other(0.05);
+  MinimizeOptions abort;
+  int calls = 0;
+  abort.callback = [&](int, const NewtonStepResult&) { return ++calls < 2; };
+  result = minimize(other.objective, other.points, abort);
+  EXPECT_TRUE(result.aborted);
+  EXPECT_EQ(result.iterations, 2);
+}
+
+TEST(NewtonSolver, LockedPointsStayPut)
+{
+  Problem problem(0.05);
+  problem.points.setLocked(0, true);
+  problem.points.setLocked(17, true);
+  problem.objective.structureChanged();
+  const Eigen::Vector3d p0 = problem.points.position(0), p17 = problem.points.position(17);
+  MinimizeOptions options;
+  options.maxIterations = 5;
+  minimize(problem.objective, problem.points, options);
+  EXPECT_EQ(problem.points.position(0), p0);
+  EXPECT_EQ(problem.points.position(17), p17);
+}
