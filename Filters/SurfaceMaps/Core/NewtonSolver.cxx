@@ -1,10 +1,19 @@
 #include "NewtonSolver.h"
 
+#include <chrono>
 #include <cmath>
 #include <sstream>
 
 namespace surfacemaps
 {
+
+namespace
+{
+double secondsSince(std::chrono::steady_clock::time_point start)
+{
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+} // namespace
 
 NewtonStepResult newtonStep(Objective& objective,
   SpherePoints& points,
@@ -15,7 +24,9 @@ NewtonStepResult newtonStep(Objective& objective,
   Eigen::VectorXd g;
   Eigen::SparseMatrix<double> H;
   bool patternChanged = false;
+  auto clock = std::chrono::steady_clock::now();
   result.energyBefore = objective.hessian(points, options.projectionEps, g, H, &patternChanged);
+  result.derivativeSeconds = secondsSince(clock);
   result.energyAfter = result.energyBefore;
   if (!std::isfinite(result.energyBefore))
   {
@@ -30,7 +41,9 @@ NewtonStepResult newtonStep(Objective& objective,
   }
 
   Eigen::VectorXd d;
+  clock = std::chrono::steady_clock::now();
   const LinearSolveResult solve = solver.solve(H, -g, d, patternChanged, options.log);
+  result.solveSeconds = secondsSince(clock);
   result.regularised = solve.shift > 0.0;
   double slope = solve.success ? d.dot(g) : 0.0;
   if (!solve.success || !(slope < 0.0))
@@ -75,6 +88,7 @@ NewtonStepResult newtonStep(Objective& objective,
     }
     return objective.value(points);
   };
+  clock = std::chrono::steady_clock::now();
   const LineSearchResult ls =
     armijoBacktracking(energyAt, result.energyBefore, slope, initialStep, options.lineSearch);
   result.lineSearchTrials = ls.trials;
@@ -87,6 +101,7 @@ NewtonStepResult newtonStep(Objective& objective,
     result.energyAfter = ls.energy;
     result.moved = true;
   }
+  result.lineSearchSeconds = secondsSince(clock);
   return result;
 }
 

@@ -42,6 +42,11 @@ struct NewtonStepResult
   bool regularised = false;
   /// The points moved (line search succeeded).
   bool moved = false;
+  /// Wall time of the parts: element derivatives with Hessian projection and
+  /// assembly, the linear solve, the line search.
+  double derivativeSeconds = 0.0;
+  double solveSeconds = 0.0;
+  double lineSearchSeconds = 0.0;
 };
 
 /// One projected-Newton step on all unlocked points: derivatives with

@@ -1,0 +1,200 @@
+// Benchmark of the optimisation engine (not a test): element derivative
+// throughput and one full projected-Newton iteration at the size of a typical
+// common triangulation. Prints a Markdown table.
+//
+//   build/bin/BenchmarkEngine [--threads N] [--repeat R]
+#include "BarrierEnergy.h"
+#include "NewtonSolver.h"
+#include "Objective.h"
+#include "Primitives.h"
+
+#include <omp.h>
+
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <memory>
+#include <string>
+
+using namespace surfacemaps;
+
+namespace
+{
+
+// Symmetric Dirichlet energy between the chord triangles of one triangle in
+// two sphere embeddings (6 points, 12 variables): the shape of the map
+// distortion element.
+struct ChordDirichletEnergy
+{
+  std::vector<std::array<int, 3>> triangles;
+  int offset = 0; // first point of the second embedding
+
+  int numberOfElements() const { return static_cast<int>(this->triangles.size()); }
+  std::array<int, 6> points(int e) const
+  {
+    const auto& t = this->triangles[e];
+    return { t[0], t[1], t[2], t[0] + offset, t[1] + offset, t[2] + offset };
+  }
+
+  // 2x2 matrix of the triangle's edges in an orthonormal frame of its plane.
+  template <typename T>
+  static Eigen::Matrix<T, 2, 2> frame(
+    const Eigen::Matrix<T, 3, 1>& a, const Eigen::Matrix<T, 3, 1>& b, const Eigen::Matrix<T, 3, 1>& c, T& area)
+  {
+    const Eigen::Matrix<T, 3, 1> e1 = b - a, e2 = c - a;
+    const T l1 = sqrt(e1.squaredNorm());
+    const T twiceArea = sqrt(e1.cross(e2).squaredNorm());
+    area = 0.5 * twiceArea;
+    Eigen::Matrix<T, 2, 2> M;
+    M(0, 0) = l1;
+    M(0, 1) = e1.dot(e2) / l1;
+    M(1, 0) = T(0.0);
+    M(1, 1) = twiceArea / l1;
+    return M;
+  }
+
+  template <typename T>
+  T operator()(int, const std::array<Eigen::Matrix<T, 3, 1>, 6>& p) const
+  {
+    T areaP, areaQ;
+    const Eigen::Matrix<T, 2, 2> P = frame<T>(p[0], p[1], p[2], areaP);
+    const Eigen::Matrix<T, 2, 2> Q = frame<T>(p[3], p[4], p[5], areaQ);
+    const Eigen::Matrix<T, 2, 2> J = Q * P.inverse();
+    const Eigen::Matrix<T, 2, 2> Jinv = P * Q.inverse();
+    return 0.25 * (areaQ * J.squaredNorm() + areaP * Jinv.squaredNorm());
+  }
+};
+
+double now()
+{
+  return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
+}
+
+} // namespace
+
+int main(int argc, char* argv[])
+{
+  int threads = omp_get_num_procs();
+  int repeat = 10;
+  for (int i = 1; i < argc; ++i)
+  {
+    if (!std::strcmp(argv[i], "--threads") && i + 1 < argc)
+    {
+      threads = std::atoi(argv[++i]);
+    }
+    else if (!std::strcmp(argv[i], "--repeat") && i + 1 < argc)
+    {
+      repeat = std::atoi(argv[++i]);
+    }
+    else
+    {
+      std::fprintf(stderr, "usage: BenchmarkEngine [--threads N] [--repeat R]\n");
+      return 2;
+    }
+  }
+
+  // 2 562 vertices, 5 120 triangles; the second embedding is the first seen
+  // from a point inside the sphere (a bijective, smoothly non-uniform map).
+  const PolygonMesh mesh = makeIcosphere(4);
+  const int n = static_cast<int>(mesh.points.size());
+  std::vector<std::array<int, 3>> triangles;
+  for (std::size_t f = 0; f < mesh.numberOfFaces(); ++f)
+  {
+    triangles.push_back({ mesh.face(f)[0], mesh.face(f)[1], mesh.face(f)[2] });
+  }
+  std::vector<Eigen::Vector3d> all = mesh.points;
+  for (const Eigen::Vector3d& p : mesh.points)
+  {
+    all.push_back((p + Eigen::Vector3d(0.25, -0.1, 0.3)).normalized());
+  }
+  SpherePoints points(all);
+
+  auto sd = std::make_shared<ElementTerm<6, ChordDirichletEnergy>>(
+    "map distortion", ChordDirichletEnergy{ triangles, n });
+  const int ne = sd->numberOfElements();
+  std::vector<double> values(ne), gradients(ne * 12), hessians(ne * 144);
+
+  std::printf("# SurfaceMaps engine benchmark\n\n");
+  std::printf("icosphere level 4: %d vertices, %d triangles, 2 embeddings (%d variables)\n\n", n, ne,
+    points.numberOfVariables());
+  std::printf("| measurement | threads | figure |\n|---|---|---|\n");
+
+  // Per-core throughput of the 12-variable element.
+  omp_set_num_threads(1);
+  sd->evaluateDerivatives(points, 1e-9, values.data(), gradients.data(), hessians.data()); // warm up
+  double t0 = now();
+  for (int r = 0; r < repeat; ++r)
+  {
+    sd->evaluateDerivatives(points, 1e-9, values.data(), gradients.data(), hessians.data());
+  }
+  const double withHessian = (now() - t0) / (repeat * double(ne));
+  t0 = now();
+  for (int r = 0; r < repeat; ++r)
+  {
+    sd->evaluateDerivatives(points, -1.0, values.data(), gradients.data(), hessians.data());
+  }
+  const double unprojected = (now() - t0) / (repeat * double(ne));
+  t0 = now();
+  for (int r = 0; r < repeat; ++r)
+  {
+    sd->evaluateDerivatives(points, 0.0, values.data(), gradients.data(), nullptr);
+  }
+  const double gradientOnly = (now() - t0) / (repeat * double(ne));
+  t0 = now();
+  for (int r = 0; r < 10 * repeat; ++r)
+  {
+    sd->evaluateValues(points, values.data());
+  }
+  const double valueOnly = (now() - t0) / (10 * repeat * double(ne));
+  std::printf("| 12-variable symmetric Dirichlet element, value + gradient + projected Hessian | 1 | "
+              "%.0f elements/s (%.2f us each) |\n",
+    1.0 / withHessian, 1e6 * withHessian);
+  std::printf("| same, Hessian not projected | 1 | %.0f elements/s (%.2f us each) |\n",
+    1.0 / unprojected, 1e6 * unprojected);
+  std::printf("| same, value + gradient | 1 | %.0f elements/s (%.2f us each) |\n", 1.0 / gradientOnly,
+    1e6 * gradientOnly);
+  std::printf("| same, value only (line-search trial) | 1 | %.0f elements/s (%.3f us each) |\n",
+    1.0 / valueOnly, 1e6 * valueOnly);
+
+  // One full Newton iteration: distortion + barrier on both embeddings.
+  omp_set_num_threads(threads);
+  Objective objective;
+  objective.addTerm(sd, 1.0);
+  objective.addTerm(
+    std::make_shared<ElementTerm<3, BarrierEnergy>>("barrier 0", BarrierEnergy{ triangles, 0 }), 1e-3);
+  objective.addTerm(
+    std::make_shared<ElementTerm<3, BarrierEnergy>>("barrier 1", BarrierEnergy{ triangles, n }), 1e-3);
+  LinearSolver solver;
+  NewtonOptions options;
+  options.maxPointStep = std::tan(75.0 * M_PI / 180.0);
+  NewtonStepResult first = newtonStep(objective, points, solver, options); // builds the pattern
+  double total = 0, derivatives = 0, solve = 0, lineSearch = 0, trials = 0;
+  int regularised = 0, fallbacks = 0;
+  const int iterations = repeat;
+  for (int it = 0; it < iterations; ++it)
+  {
+    t0 = now();
+    const NewtonStepResult step = newtonStep(objective, points, solver, options);
+    total += now() - t0;
+    derivatives += step.derivativeSeconds;
+    solve += step.solveSeconds;
+    lineSearch += step.lineSearchSeconds;
+    trials += step.lineSearchTrials;
+    regularised += step.regularised ? 1 : 0;
+    fallbacks += step.gradientFallback ? 1 : 0;
+  }
+  std::printf("| full Newton iteration (derivatives + projection + assembly + solve + line search), "
+              "mean of %d | %d | %.4f s |\n",
+    iterations, threads, total / iterations);
+  std::printf("| of which derivatives, projection and assembly | %d | %.4f s |\n", threads,
+    derivatives / iterations);
+  std::printf("| of which CHOLMOD solve | %d | %.4f s |\n", threads, solve / iterations);
+  std::printf("| of which line search (%.1f trials on average) | %d | %.4f s |\n",
+    trials / iterations, threads, lineSearch / iterations);
+  std::printf("| iterations that needed a regularised solve / a gradient fallback | %d | %d / %d |\n",
+    threads, regularised, fallbacks);
+  std::printf("| first iteration (pattern, symbolic analysis) | %d | %.4f s |\n", threads,
+    first.derivativeSeconds + first.solveSeconds + first.lineSearchSeconds);
+  return 0;
+}
