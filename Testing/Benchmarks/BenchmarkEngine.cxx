@@ -24,7 +24,10 @@ namespace
 
 // Symmetric Dirichlet energy between the chord triangles of one triangle in
 // two sphere embeddings (6 points, 12 variables): the shape of the map
-// distortion element.
+// distortion element. With Gram matrices G = [e1 e2]^T [e1 e2] of the edge
+// vectors, |J|^2 = tr(G_Q G_P^-1), |J^-1|^2 = tr(G_P G_Q^-1), area = sqrt(det G) / 2,
+// so the energy is a function of 6 numbers; each triangle's 3 depend on only
+// 6 of the 12 variables. Derivatives are composed from those pieces.
 struct ChordDirichletEnergy
 {
   std::vector<std::array<int, 3>> triangles;
@@ -37,32 +40,62 @@ struct ChordDirichletEnergy
     return { t[0], t[1], t[2], t[0] + offset, t[1] + offset, t[2] + offset };
   }
 
-  // 2x2 matrix of the triangle's edges in an orthonormal frame of its plane.
-  template <typename T>
-  static Eigen::Matrix<T, 2, 2> frame(
-    const Eigen::Matrix<T, 3, 1>& a, const Eigen::Matrix<T, 3, 1>& b, const Eigen::Matrix<T, 3, 1>& c, T& area)
+  // (e1.e1, e2.e2, e1.e2) of triangle abc.
+  template<typename T>
+  static std::array<T, 3> gram(const Eigen::Matrix<T, 3, 1>& a,
+    const Eigen::Matrix<T, 3, 1>& b,
+    const Eigen::Matrix<T, 3, 1>& c)
   {
     const Eigen::Matrix<T, 3, 1> e1 = b - a, e2 = c - a;
-    const T l1 = sqrt(e1.squaredNorm());
-    const T twiceArea = sqrt(e1.cross(e2).squaredNorm());
-    area = 0.5 * twiceArea;
-    Eigen::Matrix<T, 2, 2> M;
-    M(0, 0) = l1;
-    M(0, 1) = e1.dot(e2) / l1;
-    M(1, 0) = T(0.0);
-    M(1, 1) = twiceArea / l1;
-    return M;
+    return { e1.dot(e1), e2.dot(e2), e1.dot(e2) };
   }
 
-  template <typename T>
+  // The energy from the Gram entries u = (P11, P22, P12, Q11, Q22, Q12).
+  template<typename T>
+  static T fromGram(const std::array<T, 6>& u)
+  {
+    const T detP = u[0] * u[1] - u[2] * u[2];
+    const T detQ = u[3] * u[4] - u[5] * u[5];
+    const T cross = u[3] * u[1] + u[4] * u[0] - 2.0 * (u[5] * u[2]);
+    return 0.125 * (sqrt(detQ) * cross / detP + sqrt(detP) * cross / detQ);
+  }
+
+  template<typename T>
   T operator()(int, const std::array<Eigen::Matrix<T, 3, 1>, 6>& p) const
   {
-    T areaP, areaQ;
-    const Eigen::Matrix<T, 2, 2> P = frame<T>(p[0], p[1], p[2], areaP);
-    const Eigen::Matrix<T, 2, 2> Q = frame<T>(p[3], p[4], p[5], areaQ);
-    const Eigen::Matrix<T, 2, 2> J = Q * P.inverse();
-    const Eigen::Matrix<T, 2, 2> Jinv = P * Q.inverse();
-    return 0.25 * (areaQ * J.squaredNorm() + areaP * Jinv.squaredNorm());
+    if constexpr (!IsDual<T>::value)
+    {
+      const auto P = gram(p[0], p[1], p[2]), Q = gram(p[3], p[4], p[5]);
+      return fromGram<T>({ P[0], P[1], P[2], Q[0], Q[1], Q[2] });
+    }
+    else
+    {
+      constexpr bool H = !std::is_same_v<decltype(T::Hess), typename T::NoHessian>;
+      using D6 = Dual<6, H>;
+      std::array<T, 6> u;
+      for (int t = 0; t < 2; ++t)
+      {
+        std::array<Eigen::Matrix<D6, 3, 1>, 3> q;
+        for (int k = 0; k < 3; ++k)
+        {
+          for (int c = 0; c < 3; ++c)
+          {
+            q[k][c] = restrict<6>(p[3 * t + k][c], 6 * t);
+          }
+        }
+        const std::array<D6, 3> g = gram(q[0], q[1], q[2]);
+        for (int k = 0; k < 3; ++k)
+        {
+          u[3 * t + k] = embed<12>(g[k], 6 * t);
+        }
+      }
+      std::array<D6, 6> vars;
+      for (int k = 0; k < 6; ++k)
+      {
+        vars[k] = D6::variable(u[k].val, k);
+      }
+      return compose(fromGram(vars), u);
+    }
   }
 };
 
@@ -116,13 +149,16 @@ int main(int argc, char* argv[])
   std::vector<double> values(ne), gradients(ne * 12), hessians(ne * 144);
 
   std::printf("# SurfaceMaps engine benchmark\n\n");
-  std::printf("icosphere level 4: %d vertices, %d triangles, 2 embeddings (%d variables)\n\n", n, ne,
+  std::printf("icosphere level 4: %d vertices, %d triangles, 2 embeddings (%d variables)\n\n",
+    n,
+    ne,
     points.numberOfVariables());
   std::printf("| measurement | threads | figure |\n|---|---|---|\n");
 
   // Per-core throughput of the 12-variable element.
   omp_set_num_threads(1);
-  sd->evaluateDerivatives(points, 1e-9, values.data(), gradients.data(), hessians.data()); // warm up
+  sd->evaluateDerivatives(
+    points, 1e-9, values.data(), gradients.data(), hessians.data()); // warm up
   double t0 = now();
   for (int r = 0; r < repeat; ++r)
   {
@@ -147,24 +183,31 @@ int main(int argc, char* argv[])
     sd->evaluateValues(points, values.data());
   }
   const double valueOnly = (now() - t0) / (10 * repeat * double(ne));
-  std::printf("| 12-variable symmetric Dirichlet element, value + gradient + projected Hessian | 1 | "
-              "%.0f elements/s (%.2f us each) |\n",
-    1.0 / withHessian, 1e6 * withHessian);
+  std::printf(
+    "| 12-variable symmetric Dirichlet element, value + gradient + projected Hessian | 1 | "
+    "%.0f elements/s (%.2f us each) |\n",
+    1.0 / withHessian,
+    1e6 * withHessian);
   std::printf("| same, Hessian not projected | 1 | %.0f elements/s (%.2f us each) |\n",
-    1.0 / unprojected, 1e6 * unprojected);
-  std::printf("| same, value + gradient | 1 | %.0f elements/s (%.2f us each) |\n", 1.0 / gradientOnly,
+    1.0 / unprojected,
+    1e6 * unprojected);
+  std::printf("| same, value + gradient | 1 | %.0f elements/s (%.2f us each) |\n",
+    1.0 / gradientOnly,
     1e6 * gradientOnly);
   std::printf("| same, value only (line-search trial) | 1 | %.0f elements/s (%.3f us each) |\n",
-    1.0 / valueOnly, 1e6 * valueOnly);
+    1.0 / valueOnly,
+    1e6 * valueOnly);
 
   // One full Newton iteration: distortion + barrier on both embeddings.
   omp_set_num_threads(threads);
   Objective objective;
   objective.addTerm(sd, 1.0);
   objective.addTerm(
-    std::make_shared<ElementTerm<3, BarrierEnergy>>("barrier 0", BarrierEnergy{ triangles, 0 }), 1e-3);
+    std::make_shared<ElementTerm<3, BarrierEnergy>>("barrier 0", BarrierEnergy{ triangles, 0 }),
+    1e-3);
   objective.addTerm(
-    std::make_shared<ElementTerm<3, BarrierEnergy>>("barrier 1", BarrierEnergy{ triangles, n }), 1e-3);
+    std::make_shared<ElementTerm<3, BarrierEnergy>>("barrier 1", BarrierEnergy{ triangles, n }),
+    1e-3);
   LinearSolver solver;
   NewtonOptions options;
   options.maxPointStep = std::tan(75.0 * M_PI / 180.0);
@@ -184,17 +227,27 @@ int main(int argc, char* argv[])
     regularised += step.regularised ? 1 : 0;
     fallbacks += step.gradientFallback ? 1 : 0;
   }
-  std::printf("| full Newton iteration (derivatives + projection + assembly + solve + line search), "
-              "mean of %d | %d | %.4f s |\n",
-    iterations, threads, total / iterations);
-  std::printf("| of which derivatives, projection and assembly | %d | %.4f s |\n", threads,
+  std::printf(
+    "| full Newton iteration (derivatives + projection + assembly + solve + line search), "
+    "mean of %d | %d | %.4f s |\n",
+    iterations,
+    threads,
+    total / iterations);
+  std::printf("| of which derivatives, projection and assembly | %d | %.4f s |\n",
+    threads,
     derivatives / iterations);
   std::printf("| of which CHOLMOD solve | %d | %.4f s |\n", threads, solve / iterations);
   std::printf("| of which line search (%.1f trials on average) | %d | %.4f s |\n",
-    trials / iterations, threads, lineSearch / iterations);
-  std::printf("| iterations that needed a regularised solve / a gradient fallback | %d | %d / %d |\n",
-    threads, regularised, fallbacks);
-  std::printf("| first iteration (pattern, symbolic analysis) | %d | %.4f s |\n", threads,
+    trials / iterations,
+    threads,
+    lineSearch / iterations);
+  std::printf(
+    "| iterations that needed a regularised solve / a gradient fallback | %d | %d / %d |\n",
+    threads,
+    regularised,
+    fallbacks);
+  std::printf("| first iteration (pattern, symbolic analysis) | %d | %.4f s |\n",
+    threads,
     first.derivativeSeconds + first.solveSeconds + first.lineSearchSeconds);
   return 0;
 }

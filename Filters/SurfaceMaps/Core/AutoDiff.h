@@ -4,6 +4,7 @@
 
 #include <Eigen/Core>
 
+#include <array>
 #include <cmath>
 #include <limits>
 #include <type_traits>
@@ -68,8 +69,7 @@ struct Dual
     r.grad = df * this->grad;
     if constexpr (WithHessian)
     {
-      r.Hess = df * this->Hess;
-      r.Hess.noalias() += ddf * (this->grad * this->grad.transpose());
+      r.Hess.noalias() = df * this->Hess + (ddf * this->grad) * this->grad.transpose();
     }
     return r;
   }
@@ -148,13 +148,25 @@ struct Dual
     r.grad = a.val * b.grad + b.val * a.grad;
     if constexpr (WithHessian)
     {
-      r.Hess = a.val * b.Hess + b.val * a.Hess;
-      const Hessian outer = a.grad * b.grad.transpose();
-      r.Hess += outer + outer.transpose();
+      r.Hess.noalias() =
+        a.val * b.Hess + b.val * a.Hess + a.grad * b.grad.transpose() + b.grad * a.grad.transpose();
     }
     return r;
   }
-  friend Dual operator/(const Dual& a, const Dual& b) { return a * b.inverse(); }
+  friend Dual operator/(const Dual& a, const Dual& b)
+  {
+    // q = a / b: dq = (da - q db) / b, d2q = (d2a - q d2b - dq db' - db dq') / b.
+    const double inv = 1.0 / b.val;
+    Dual r;
+    r.val = a.val * inv;
+    r.grad.noalias() = inv * (a.grad - r.val * b.grad);
+    if constexpr (WithHessian)
+    {
+      r.Hess.noalias() = inv * (a.Hess - r.val * b.Hess) -
+        inv * (r.grad * b.grad.transpose() + b.grad * r.grad.transpose());
+    }
+    return r;
+  }
 
   Dual inverse() const
   {
@@ -216,14 +228,12 @@ struct Dual
     const double fxy = (y.val * y.val - x.val * x.val) / r4;
     Dual r;
     r.val = std::atan2(y.val, x.val);
-    r.grad = fy * y.grad + fx * x.grad;
+    r.grad.noalias() = fy * y.grad + fx * x.grad;
     if constexpr (WithHessian)
     {
-      r.Hess = fy * y.Hess + fx * x.Hess;
-      r.Hess.noalias() += fyy * (y.grad * y.grad.transpose());
-      r.Hess.noalias() += fxx * (x.grad * x.grad.transpose());
-      const Hessian cross = fxy * (x.grad * y.grad.transpose());
-      r.Hess += cross + cross.transpose();
+      r.Hess.noalias() = fy * y.Hess + fx * x.Hess + (fyy * y.grad) * y.grad.transpose() +
+        (fxx * x.grad) * x.grad.transpose() + (fxy * x.grad) * y.grad.transpose() +
+        (fxy * y.grad) * x.grad.transpose();
     }
     return r;
   }
@@ -231,6 +241,78 @@ struct Dual
   friend Dual max(const Dual& a, const Dual& b) { return a.val >= b.val ? a : b; }
   friend bool isfinite(const Dual& a) { return std::isfinite(a.val); }
   friend bool isnan(const Dual& a) { return std::isnan(a.val); }
+};
+
+/// Derivatives of g(x) = f(u(x)) from f's derivatives with respect to M
+/// intermediate quantities u (f evaluated with u as its variables) and the
+/// derivatives of each u_k with respect to the N variables x. Lets an element
+/// compute a few intermediate quantities with few variables each and combine
+/// them cheaply, instead of carrying all N derivatives through every operation.
+template<std::size_t M, int N, bool H>
+Dual<N, H> compose(const Dual<static_cast<int>(M), H>& f, const std::array<Dual<N, H>, M>& u)
+{
+  Dual<N, H> r;
+  r.val = f.val;
+  for (std::size_t k = 0; k < M; ++k)
+  {
+    r.grad.noalias() += f.grad[k] * u[k].grad;
+  }
+  if constexpr (H)
+  {
+    for (std::size_t k = 0; k < M; ++k)
+    {
+      r.Hess.noalias() += f.grad[k] * u[k].Hess;
+      Eigen::Matrix<double, N, 1> w = Eigen::Matrix<double, N, 1>::Zero();
+      for (std::size_t l = 0; l < M; ++l)
+      {
+        w.noalias() += f.Hess(k, l) * u[l].grad;
+      }
+      r.Hess.noalias() += u[k].grad * w.transpose();
+    }
+  }
+  return r;
+}
+
+/// A scalar that depends on K variables, seen as depending on N >= K
+/// variables of which its own are offset .. offset + K - 1.
+template<int N, int K, bool H>
+Dual<N, H> embed(const Dual<K, H>& d, int offset)
+{
+  static_assert(K <= N, "embed into at least as many variables");
+  Dual<N, H> r;
+  r.val = d.val;
+  r.grad.template segment<K>(offset) = d.grad;
+  if constexpr (H)
+  {
+    r.Hess.template block<K, K>(offset, offset) = d.Hess;
+  }
+  return r;
+}
+
+/// The variables offset .. offset + K - 1 of d as a K-variable scalar; exact
+/// when d depends on no other variables.
+template<int K, int N, bool H>
+Dual<K, H> restrict(const Dual<N, H>& d, int offset)
+{
+  static_assert(K <= N, "restrict to at most as many variables");
+  Dual<K, H> r;
+  r.val = d.val;
+  r.grad = d.grad.template segment<K>(offset);
+  if constexpr (H)
+  {
+    r.Hess = d.Hess.template block<K, K>(offset, offset);
+  }
+  return r;
+}
+
+/// True for Dual scalars, false for double.
+template<typename T>
+struct IsDual : std::false_type
+{
+};
+template<int N, bool H>
+struct IsDual<Dual<N, H>> : std::true_type
+{
 };
 
 /// The value of a scalar that may or may not carry derivatives.

@@ -2,11 +2,49 @@
 
 #include <Eigen/CholmodSupport>
 
+#include <dlfcn.h>
+
 #include <cmath>
 #include <sstream>
 
 namespace surfacemaps
 {
+
+namespace
+{
+// CHOLMOD's supernodal factorisation calls BLAS on many small dense blocks.
+// A multithreaded OpenBLAS slows that down by an order of magnitude (its
+// threads fight the engine's OpenMP threads over 2 cores), so BLAS runs on
+// one thread for the duration of a factorisation and is restored afterwards.
+// Looked up at run time: with another BLAS there is nothing to do.
+class SingleThreadedBlas
+{
+public:
+  SingleThreadedBlas()
+  {
+    using Get = int (*)();
+    using Set = void (*)(int);
+    auto get = reinterpret_cast<Get>(dlsym(RTLD_DEFAULT, "openblas_get_num_threads"));
+    this->SetThreads = reinterpret_cast<Set>(dlsym(RTLD_DEFAULT, "openblas_set_num_threads"));
+    if (get && this->SetThreads)
+    {
+      this->Previous = get();
+      this->SetThreads(1);
+    }
+  }
+  ~SingleThreadedBlas()
+  {
+    if (this->Previous > 0)
+    {
+      this->SetThreads(this->Previous);
+    }
+  }
+
+private:
+  void (*SetThreads)(int) = nullptr;
+  int Previous = 0;
+};
+} // namespace
 
 struct LinearSolver::Internals
 {
@@ -28,6 +66,7 @@ LinearSolveResult LinearSolver::solve(const Eigen::SparseMatrix<double>& H,
   const Logger& log)
 {
   LinearSolveResult result;
+  const SingleThreadedBlas blasThreads;
   auto& cholesky = this->Impl->Cholesky;
   if (patternChanged || !this->Impl->Analysed)
   {

@@ -129,11 +129,7 @@ private:
       std::array<Eigen::Matrix<T, 3, 1>, NV> p;
       for (int k = 0; k < NV; ++k)
       {
-        const int i = idx[k];
-        p[k] = SpherePoints::retraction(points.position(i),
-          points.basis(i),
-          T::variable(0.0, 2 * k),
-          T::variable(0.0, 2 * k + 1));
+        p[k] = points.seeded<T>(idx[k], 2 * k);
       }
       const T energy = this->Functor(e, p);
       values[e] = energy.val;

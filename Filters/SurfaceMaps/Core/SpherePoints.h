@@ -4,6 +4,8 @@
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 
+#include "AutoDiff.h"
+
 #include <vector>
 
 namespace surfacemaps
@@ -57,6 +59,37 @@ public:
     using std::sqrt;
     const T norm = sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2]);
     return q / norm;
+  }
+
+  /// Point i as a function of its own two tangent variables, which are
+  /// variables `first` and `first + 1` of T: the retraction's value, first and
+  /// second derivatives at x = 0 (p, B and -p I), seeded directly. The value
+  /// is p exactly, so derivative and value evaluations agree to the last bit.
+  template<typename T>
+  Eigen::Matrix<T, 3, 1> seeded(int i, int first) const
+  {
+    const Eigen::Vector3d& p = this->Positions[i];
+    Eigen::Matrix<T, 3, 1> q;
+    if constexpr (IsDual<T>::value)
+    {
+      const Eigen::Matrix<double, 3, 2>& B = this->Bases[i];
+      for (int k = 0; k < 3; ++k)
+      {
+        q[k] = T(p[k]);
+        q[k].grad[first] = B(k, 0);
+        q[k].grad[first + 1] = B(k, 1);
+        if constexpr (!std::is_same_v<decltype(q[k].Hess), typename T::NoHessian>)
+        {
+          q[k].Hess(first, first) = -p[k];
+          q[k].Hess(first + 1, first + 1) = -p[k];
+        }
+      }
+    }
+    else
+    {
+      q = p.template cast<T>();
+    }
+    return q;
   }
 
   /// An orthonormal tangent basis at the unit vector p.
