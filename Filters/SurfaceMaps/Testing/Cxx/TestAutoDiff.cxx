@@ -184,3 +184,34 @@ TEST(AutoDiff, TwentyFourVariables)
   EXPECT_DOUBLE_EQ(sum.grad[23], 2 * 2.4);
   EXPECT_TRUE(sum.Hess.isApprox(2.0 * Eigen::Matrix<double, 24, 24>::Identity()));
 }
+
+TEST(AutoDiff, ComposeEmbedRestrictMatchDirectDifferentiation)
+{
+  // g(x) = f(u1(x0, x1), u2(x2, x3)) with f(u1, u2) = u1^2 u2 + sin-free terms.
+  constexpr int NX = 4;
+  using DX = Dual<NX>;
+  using D2 = Dual<2>;
+  const double x[NX] = { 0.3, -1.2, 0.8, 0.45 };
+  auto u1 = [](const auto& a, const auto& b) { return a * b + a * a; };
+  auto u2 = [](const auto& a, const auto& b) { return sqrt(a * a + b * b + 1.0); };
+  auto f = [](const auto& p, const auto& q) { return p * p * q + log(q) / p; };
+
+  // Directly in 4 variables.
+  std::array<DX, NX> v;
+  for (int i = 0; i < NX; ++i)
+  {
+    v[i] = DX::variable(x[i], i);
+  }
+  const DX direct = f(u1(v[0], v[1]), u2(v[2], v[3]));
+
+  // In pieces: each u in 2 variables, embedded, then composed.
+  const D2 a = restrict<2>(v[0], 0), b = restrict<2>(v[1], 0);
+  const D2 c = restrict<2>(v[2], 2), d = restrict<2>(v[3], 2);
+  const std::array<DX, 2> u = { embed<NX>(u1(a, b), 0), embed<NX>(u2(c, d), 2) };
+  const D2 fu = f(D2::variable(u[0].val, 0), D2::variable(u[1].val, 1));
+  const DX composed = compose(fu, u);
+
+  EXPECT_DOUBLE_EQ(composed.val, direct.val);
+  EXPECT_LT((composed.grad - direct.grad).cwiseAbs().maxCoeff(), 1e-13);
+  EXPECT_LT((composed.Hess - direct.Hess).cwiseAbs().maxCoeff(), 1e-12);
+}

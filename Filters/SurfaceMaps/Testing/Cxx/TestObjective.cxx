@@ -88,6 +88,25 @@ TEST(SpherePoints, RetractionStaysOnTheSphereAndStartsAlongTheBasis)
   }
 }
 
+TEST(SpherePoints, SeededPointsEqualTheRetractionAtZero)
+{
+  SpherePoints points(makeIcosphere(1).points);
+  for (int i = 0; i < points.size(); ++i)
+  {
+    using D = Dual<6>;
+    const auto seeded = points.seeded<D>(i, 2);
+    const auto retracted = SpherePoints::retraction(
+      points.position(i), points.basis(i), D::variable(0.0, 2), D::variable(0.0, 3));
+    for (int k = 0; k < 3; ++k)
+    {
+      EXPECT_EQ(seeded[k].val, points.position(i)[k]); // exactly the stored point
+      EXPECT_NEAR(seeded[k].val, retracted[k].val, 1e-15);
+      EXPECT_LT((seeded[k].grad - retracted[k].grad).cwiseAbs().maxCoeff(), 1e-15);
+      EXPECT_LT((seeded[k].Hess - retracted[k].Hess).cwiseAbs().maxCoeff(), 1e-15);
+    }
+  }
+}
+
 TEST(SpherePoints, LockingRemovesVariables)
 {
   SpherePoints points(makeOctahedron().points);
