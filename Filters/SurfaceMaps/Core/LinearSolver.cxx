@@ -52,9 +52,16 @@ struct LinearSolver::Internals
   bool Analysed = false;
 };
 
-LinearSolver::LinearSolver()
+LinearSolver::LinearSolver(Ordering ordering)
   : Impl(new Internals)
 {
+  cholmod_common& common = this->Impl->Cholesky.cholmod();
+  common.nmethods = 1;
+  common.method[0].ordering = ordering == Ordering::Amd ? CHOLMOD_AMD : CHOLMOD_METIS;
+  common.postorder = 1;
+  // Failures are handled (and logged) here; CHOLMOD must not print them.
+  this->Impl->Cholesky.cholmod().print = 0;
+  this->Impl->Cholesky.cholmod().error_handler = nullptr;
 }
 
 LinearSolver::~LinearSolver() = default;

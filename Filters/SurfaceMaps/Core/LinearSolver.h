@@ -29,7 +29,17 @@ struct LinearSolveResult
 class LinearSolver
 {
 public:
-  LinearSolver();
+  /// Fill-reducing orderings: AMD analyses fast (for patterns that change
+  /// every step); nested dissection (METIS) takes longer to analyse but
+  /// factorises mesh-like matrices with fewer operations (for patterns that
+  /// stay for many steps).
+  enum class Ordering
+  {
+    Amd,
+    NestedDissection,
+  };
+
+  explicit LinearSolver(Ordering ordering = Ordering::Amd);
   ~LinearSolver();
   LinearSolver(const LinearSolver&) = delete;
   LinearSolver& operator=(const LinearSolver&) = delete;

@@ -61,6 +61,10 @@ class ElementTerm : public ObjectiveTerm
 {
 public:
   static constexpr int N = 2 * NV;
+  // Below these element counts a parallel loop costs more than it saves
+  // (waking threads takes microseconds; a value takes nanoseconds).
+  static constexpr int ParallelValueThreshold = 20000;
+  static constexpr int ParallelDerivativeThreshold = 200;
 
   ElementTerm(std::string name, Energy energy)
     : Name(std::move(name))
@@ -82,7 +86,7 @@ public:
   void evaluateValues(const SpherePoints& points, double* values) const override
   {
     const int ne = this->numberOfElements();
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (ne > ParallelValueThreshold)
     for (int e = 0; e < ne; ++e)
     {
       const std::array<int, NV> idx = this->Functor.points(e);
@@ -122,7 +126,7 @@ private:
     double* hessians) const
   {
     using T = Dual<N, WithHessian>;
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (ne > ParallelDerivativeThreshold)
     for (int e = 0; e < ne; ++e)
     {
       const std::array<int, NV> idx = this->Functor.points(e);

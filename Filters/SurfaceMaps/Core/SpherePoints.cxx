@@ -44,6 +44,13 @@ void SpherePoints::setLocked(int i, bool locked)
   this->renumber();
 }
 
+void SpherePoints::setLocked(const std::vector<char>& locked)
+{
+  this->Locked = locked;
+  this->Locked.resize(this->Positions.size(), 0);
+  this->renumber();
+}
+
 void SpherePoints::renumber()
 {
   this->FirstVariable.assign(this->Positions.size(), -1);

@@ -31,6 +31,8 @@ public:
 
   /// Locks or unlocks points; renumbers the variables.
   void setLocked(int i, bool locked);
+  /// Locks exactly the points with a non-zero entry; renumbers once.
+  void setLocked(const std::vector<char>& locked);
   bool locked(int i) const { return this->FirstVariable[i] < 0; }
   /// Index of point i's first variable (its second is that + 1), -1 if locked.
   int variable(int i) const { return this->FirstVariable[i]; }

@@ -1,0 +1,118 @@
+// SurfaceMaps engine: the distortion energy of a sphere embedding.
+#pragma once
+
+#include "AutoDiff.h"
+#include "SymmetricDirichlet.h"
+
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+
+#include <array>
+#include <cmath>
+#include <limits>
+#include <vector>
+
+namespace surfacemaps
+{
+
+/// Per triangle (a, b, c) of a mesh embedded on the sphere: the symmetric
+/// Dirichlet distortion (DESIGN.md section 6) from the 3D triangle of the
+/// same vertices to the chord triangle on the sphere, both meshes scaled to
+/// unit total area, plus barriers that keep the embedding valid:
+/// -barrierWeight log det[a, b, c] (orientation) and -barrierWeight log(a.b -
+/// cos 140 deg) per edge (spherical edges shorter than 140 degrees). Works for
+/// every level of a decimation hierarchy, whose triangles join input vertices.
+/// Both total areas are parameters, held fixed within a Newton step.
+struct EmbeddingEnergy
+{
+  std::vector<std::array<int, 3>> triangles;
+  /// The input's vertex positions.
+  const std::vector<Eigen::Vector3d>* input = nullptr;
+  /// Total area of `triangles` in 3D and on the sphere (chords).
+  double inputArea = 1.0;
+  double chordArea = 4.0 * M_PI;
+  /// Weight of the distortion term (0: barrier only).
+  double distortionWeight = 1.0;
+  double barrierWeight = 1e-4;
+  /// Cosine of the largest allowed spherical edge length (140 degrees).
+  double minEdgeCos = std::cos(140.0 * M_PI / 180.0);
+
+  int numberOfElements() const { return static_cast<int>(this->triangles.size()); }
+  std::array<int, 3> points(int e) const { return this->triangles[e]; }
+
+  template <typename T>
+  T operator()(int e, const std::array<Eigen::Matrix<T, 3, 1>, 3>& p) const
+  {
+    return this->triangleEnergy(this->triangles[e], p);
+  }
+
+  /// The energy of triangle t (input vertex indices) at sphere points p.
+  /// On the unit sphere it depends on p only through det[a, b, c] and the
+  /// three dot products a.b, b.c, c.a (|b - a|^2 = 2 - 2 a.b, ...). Those four
+  /// are computed with p's derivatives; the rest with derivatives in those four
+  /// only, composed at the end: half the cost of carrying all derivatives.
+  template <typename T>
+  T triangleEnergy(const std::array<int, 3>& t, const std::array<Eigen::Matrix<T, 3, 1>, 3>& p) const
+  {
+    const std::array<T, 4> u = { p[0].dot(p[1].cross(p[2])), p[0].dot(p[1]), p[1].dot(p[2]),
+      p[2].dot(p[0]) };
+    if constexpr (IsDual<T>::value)
+    {
+      using D4 = Dual<4, !std::is_same_v<decltype(T::Hess), typename T::NoHessian>>;
+      std::array<D4, 4> vars;
+      for (int k = 0; k < 4; ++k)
+      {
+        vars[k] = D4::variable(u[k].val, k);
+      }
+      const D4 f = this->fromInvariants(t, vars);
+      if (!std::isfinite(f.val))
+      {
+        return T(std::numeric_limits<double>::infinity());
+      }
+      return compose(f, u);
+    }
+    else
+    {
+      return this->fromInvariants(t, u);
+    }
+  }
+
+  /// The energy from u = (det[a, b, c], a.b, b.c, c.a).
+  template <typename T>
+  T fromInvariants(const std::array<int, 3>& t, const std::array<T, 4>& u) const
+  {
+    const double inf = std::numeric_limits<double>::infinity();
+    if (!(u[0] > 0.0))
+    {
+      return T(inf);
+    }
+    T energy = -this->barrierWeight * log(u[0]);
+    for (int k = 1; k < 4; ++k)
+    {
+      const T slack = u[k] - this->minEdgeCos;
+      if (!(slack > 0.0))
+      {
+        return T(inf);
+      }
+      // Each edge is seen by two triangles: half the weight each.
+      energy -= 0.5 * this->barrierWeight * log(slack);
+    }
+    if (this->distortionWeight > 0.0)
+    {
+      const auto& x = *this->input;
+      std::array<double, 3> P = gramEntries(x[t[0]], x[t[1]], x[t[2]]);
+      for (double& v : P)
+      {
+        v /= this->inputArea;
+      }
+      // Edges b - a and c - a of the chord triangle.
+      const double scale = 1.0 / this->chordArea;
+      const std::array<T, 3> Q = { scale * (2.0 - 2.0 * u[1]), scale * (2.0 - 2.0 * u[3]),
+        scale * (u[2] - u[1] - u[3] + 1.0) };
+      energy += this->distortionWeight * symmetricDirichlet(P, Q);
+    }
+    return energy;
+  }
+};
+
+} // namespace surfacemaps

@@ -1,0 +1,85 @@
+// SurfaceMaps engine: bijective embedding of a genus-0 mesh on the unit sphere.
+#pragma once
+
+#include "Log.h"
+#include "PolygonMesh.h"
+#include "SphericalTriangulation.h"
+
+#include <Eigen/Core>
+
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace surfacemaps
+{
+
+struct SphereEmbeddingOptions
+{
+  /// Total weight of the barriers (orientation, edge length), spread evenly
+  /// over the triangles, against the distortion (whose minimum is 1). The
+  /// retry with a stronger barrier multiplies it by 100.
+  double barrierWeight = 0.1;
+  /// Newton iterations on the whole current mesh after inserting a level,
+  /// and the same above 1 000 vertices; they stop earlier once the decrease
+  /// a Newton step expects (decrement^2 / 2) is below levelTolerance times
+  /// the energy.
+  int levelIterations = 20;
+  int levelIterationsLarge = 5;
+  double levelTolerance = 1e-5;
+  /// Newton iterations on the input mesh at the end, and their tolerance
+  /// (as for the levels).
+  int finalIterations = 50;
+  double finalTolerance = 1e-6;
+  /// Newton iterations on each inserted vertex's own two variables.
+  int localIterations = 5;
+  /// Largest tangent step of one point per Newton step (tan 75 degrees).
+  double maxPointStep = 3.7320508075688772;
+  /// Called with the fraction done (0..1); return false to abort.
+  std::function<bool(double)> progress;
+  Logger log;
+};
+
+struct SphereEmbeddingResult
+{
+  /// Unit vectors, one per input vertex.
+  std::vector<Eigen::Vector3d> positions;
+  BijectivityCertificate certificate;
+  /// Final energy (distortion + barriers) and the distortion alone (DESIGN.md
+  /// section 6 symmetric Dirichlet between input and chord triangles).
+  double energy = 0.0;
+  double distortion = 0.0;
+  int levels = 0;
+  int newtonIterations = 0;
+  /// 1: default weights; 2: stronger barrier; 3: barrier alone.
+  int attempt = 0;
+  double seconds = 0.0;
+};
+
+/// Thrown when the embedding is aborted through the progress callback.
+struct EmbeddingAborted
+{
+};
+
+/// Embeds a valid closed genus-0 triangle mesh bijectively on the unit sphere
+/// (DESIGN.md section 1.9): decimation to a tetrahedron, regular tetrahedron
+/// on the sphere, reinsertion level by level (each vertex inside its one-ring's
+/// kernel, local Newton, a few global Newton iterations), final global
+/// iterations; every step keeps all triangles positively oriented and the
+/// degree 1. The result is certified with exact predicates; on failure the
+/// embedding is retried with a stronger barrier, then with the barrier alone.
+/// Throws std::runtime_error if no attempt certifies.
+SphereEmbeddingResult embedOnSphere(
+  const PolygonMesh& mesh, const SphereEmbeddingOptions& options = SphereEmbeddingOptions());
+
+/// The rotation R (det +1) minimising sum |R a_k - b_k|^2 (Kabsch), e.g. to
+/// turn one embedding's landmark points onto another's.
+Eigen::Matrix3d bestRotation(
+  const std::vector<Eigen::Vector3d>& from, const std::vector<Eigen::Vector3d>& to);
+
+/// Symmetric Dirichlet distortion (DESIGN.md section 6) between a mesh and
+/// its chord triangles on the sphere, both at unit total area.
+double embeddingDistortion(const std::vector<Eigen::Vector3d>& input,
+  const std::vector<Eigen::Vector3d>& sphere, const std::vector<std::array<int, 3>>& triangles);
+
+} // namespace surfacemaps

@@ -1,0 +1,99 @@
+// Benchmark of the sphere embedding (not a test): time, peak memory and
+// quality per mesh. Prints a Markdown table row per mesh.
+//
+//   build/bin/BenchmarkEmbedding MESH.(obj|off|ply)...
+#include "MeshValidation.h"
+#include "ObjReader.h"
+#include "OffReader.h"
+#include "PlyReader.h"
+#include "SphereEmbedding.h"
+
+#include <sys/resource.h>
+
+#include <chrono>
+#include <cstdio>
+#include <iostream>
+#include <string>
+
+using namespace surfacemaps;
+
+namespace
+{
+PolygonMesh read(const std::string& path)
+{
+  const std::string ext = path.substr(path.find_last_of('.') + 1);
+  if (ext == "obj")
+  {
+    return readObj(path);
+  }
+  if (ext == "off")
+  {
+    return readOff(path);
+  }
+  if (ext == "ply")
+  {
+    return readPly(path);
+  }
+  throw std::runtime_error(path + ": the benchmark reads .obj, .off and .ply");
+}
+
+double peakMegabytes()
+{
+  rusage usage{};
+  getrusage(RUSAGE_SELF, &usage);
+  return usage.ru_maxrss / 1024.0;
+}
+} // namespace
+
+int main(int argc, char* argv[])
+{
+  if (argc < 2)
+  {
+    std::fprintf(stderr, "usage: BenchmarkEmbedding MESH...\n");
+    return 2;
+  }
+  std::printf("| mesh | vertices | time (s) | peak RSS (MB) | certified | attempt | SD distortion | "
+              "levels | Newton iterations |\n|---|---|---|---|---|---|---|---|---|\n");
+  double total = 0.0;
+  for (int i = 1; i < argc; ++i)
+  {
+    try
+    {
+      const auto start = std::chrono::steady_clock::now();
+      const PolygonMesh mesh = read(argv[i]);
+      const MeshValidationResult validation = validateMesh(mesh);
+      if (!validation.valid())
+      {
+        std::fprintf(stderr, "%s: %s\n", argv[i], validation.defects[0].c_str());
+        return 2;
+      }
+      SphereEmbeddingOptions options;
+      if (const char* w = std::getenv("SURFACEMAPS_BARRIER"))
+      {
+        options.barrierWeight = std::atof(w);
+      }
+      if (const char* w = std::getenv("SURFACEMAPS_LEVEL_ITERATIONS"))
+      {
+        options.levelIterationsLarge = std::atoi(w);
+      }
+      if (std::getenv("SURFACEMAPS_VERBOSE"))
+      {
+        options.log.sink = [](Logger::Level, const std::string& m) { std::cerr << m << "\n"; };
+      }
+      const SphereEmbeddingResult r = embedOnSphere(mesh, options);
+      const double seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+      total += seconds;
+      std::printf("| %s | %zu | %.2f | %.0f | %s | %d | %.3f | %d | %d |\n", argv[i],
+        mesh.points.size(), seconds, peakMegabytes(), r.certificate.bijective ? "yes" : "NO",
+        r.attempt, r.distortion, r.levels, r.newtonIterations);
+      std::fflush(stdout);
+    }
+    catch (const std::exception& e)
+    {
+      std::printf("| %s | | | | FAILED: %s | | | | |\n", argv[i], e.what());
+    }
+  }
+  std::printf("\ntotal time %.2f s\n", total);
+  return 0;
+}
