@@ -26,6 +26,10 @@ struct UsageError
 int runCheck(const std::vector<std::string>& args);
 extern const char* const CheckHelp;
 
+/// `surfacemap embed MESH -o OUT.vtp [--on-sphere] [--landmarks FILE]`
+int runEmbed(const std::vector<std::string>& args);
+extern const char* const EmbedHelp;
+
 /// Prints "surfacemap: error: <message>" on stderr.
 void printError(const std::string& message);
 

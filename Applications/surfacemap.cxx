@@ -36,6 +36,10 @@ const Command Commands[] = {
     "validate meshes as SurfaceMaps inputs and print their statistics",
     &surfacemap::runCheck,
     &surfacemap::CheckHelp },
+  { "embed",
+    "bijective embedding of a mesh on the unit sphere",
+    &surfacemap::runEmbed,
+    &surfacemap::EmbedHelp },
 };
 
 void printUsage(std::ostream& os)

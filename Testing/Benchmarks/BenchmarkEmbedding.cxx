@@ -52,8 +52,9 @@ int main(int argc, char* argv[])
     std::fprintf(stderr, "usage: BenchmarkEmbedding MESH...\n");
     return 2;
   }
-  std::printf("| mesh | vertices | time (s) | peak RSS (MB) | certified | attempt | SD distortion | "
-              "levels | Newton iterations |\n|---|---|---|---|---|---|---|---|---|\n");
+  std::printf(
+    "| mesh | vertices | time (s) | peak RSS (MB) | certified | attempt | SD distortion | "
+    "levels | Newton iterations |\n|---|---|---|---|---|---|---|---|---|\n");
   double total = 0.0;
   for (int i = 1; i < argc; ++i)
   {
@@ -84,9 +85,16 @@ int main(int argc, char* argv[])
       const double seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
       total += seconds;
-      std::printf("| %s | %zu | %.2f | %.0f | %s | %d | %.3f | %d | %d |\n", argv[i],
-        mesh.points.size(), seconds, peakMegabytes(), r.certificate.bijective ? "yes" : "NO",
-        r.attempt, r.distortion, r.levels, r.newtonIterations);
+      std::printf("| %s | %zu | %.2f | %.0f | %s | %d | %.3f | %d | %d |\n",
+        argv[i],
+        mesh.points.size(),
+        seconds,
+        peakMegabytes(),
+        r.certificate.bijective ? "yes" : "NO",
+        r.attempt,
+        r.distortion,
+        r.levels,
+        r.newtonIterations);
       std::fflush(stdout);
     }
     catch (const std::exception& e)

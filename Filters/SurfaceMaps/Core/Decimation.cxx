@@ -115,7 +115,9 @@ DecimationResult decimateToTetrahedron(const PolygonMesh& input, const Decimatio
   for (const auto& t : result.triangles)
   {
     totalArea += 0.5 *
-      (input.points[t[1]] - input.points[t[0]]).cross(input.points[t[2]] - input.points[t[0]]).norm();
+      (input.points[t[1]] - input.points[t[0]])
+        .cross(input.points[t[2]] - input.points[t[0]])
+        .norm();
   }
   const double minArea = options.minAreaFraction * totalArea;
   std::vector<Quadric> Q = vertexQuadrics(mesh);
@@ -146,7 +148,8 @@ DecimationResult decimateToTetrahedron(const PolygonMesh& input, const Decimatio
       const Eigen::Vector4d x(pu.x(), pu.y(), pu.z(), 1.0);
       candidates.push_back({ x.dot((Q[v.idx()] + Q[u.idx()]) * x), h });
     }
-    std::sort(candidates.begin(), candidates.end(),
+    std::sort(candidates.begin(),
+      candidates.end(),
       [](const Candidate& a, const Candidate& b) { return a.cost < b.cost; });
 
     DecimationLevel current;

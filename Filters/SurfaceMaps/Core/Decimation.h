@@ -55,7 +55,7 @@ struct DecimationResult
 /// order of quadric error, in levels of independent collapses, down to a
 /// tetrahedron. Vertex indices are the input's throughout. Throws
 /// std::runtime_error if the mesh cannot be reduced (it is not genus 0).
-DecimationResult decimateToTetrahedron(
-  const PolygonMesh& mesh, const DecimationOptions& options = DecimationOptions());
+DecimationResult decimateToTetrahedron(const PolygonMesh& mesh,
+  const DecimationOptions& options = DecimationOptions());
 
 } // namespace surfacemaps

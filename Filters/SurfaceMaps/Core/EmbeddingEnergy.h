@@ -40,7 +40,7 @@ struct EmbeddingEnergy
   int numberOfElements() const { return static_cast<int>(this->triangles.size()); }
   std::array<int, 3> points(int e) const { return this->triangles[e]; }
 
-  template <typename T>
+  template<typename T>
   T operator()(int e, const std::array<Eigen::Matrix<T, 3, 1>, 3>& p) const
   {
     return this->triangleEnergy(this->triangles[e], p);
@@ -51,11 +51,13 @@ struct EmbeddingEnergy
   /// three dot products a.b, b.c, c.a (|b - a|^2 = 2 - 2 a.b, ...). Those four
   /// are computed with p's derivatives; the rest with derivatives in those four
   /// only, composed at the end: half the cost of carrying all derivatives.
-  template <typename T>
-  T triangleEnergy(const std::array<int, 3>& t, const std::array<Eigen::Matrix<T, 3, 1>, 3>& p) const
+  template<typename T>
+  T triangleEnergy(const std::array<int, 3>& t,
+    const std::array<Eigen::Matrix<T, 3, 1>, 3>& p) const
   {
-    const std::array<T, 4> u = { p[0].dot(p[1].cross(p[2])), p[0].dot(p[1]), p[1].dot(p[2]),
-      p[2].dot(p[0]) };
+    const std::array<T, 4> u = {
+      p[0].dot(p[1].cross(p[2])), p[0].dot(p[1]), p[1].dot(p[2]), p[2].dot(p[0])
+    };
     if constexpr (IsDual<T>::value)
     {
       using D4 = Dual<4, !std::is_same_v<decltype(T::Hess), typename T::NoHessian>>;
@@ -78,7 +80,7 @@ struct EmbeddingEnergy
   }
 
   /// The energy from u = (det[a, b, c], a.b, b.c, c.a).
-  template <typename T>
+  template<typename T>
   T fromInvariants(const std::array<int, 3>& t, const std::array<T, 4>& u) const
   {
     const double inf = std::numeric_limits<double>::infinity();
@@ -107,8 +109,9 @@ struct EmbeddingEnergy
       }
       // Edges b - a and c - a of the chord triangle.
       const double scale = 1.0 / this->chordArea;
-      const std::array<T, 3> Q = { scale * (2.0 - 2.0 * u[1]), scale * (2.0 - 2.0 * u[3]),
-        scale * (u[2] - u[1] - u[3] + 1.0) };
+      const std::array<T, 3> Q = {
+        scale * (2.0 - 2.0 * u[1]), scale * (2.0 - 2.0 * u[3]), scale * (u[2] - u[1] - u[3] + 1.0)
+      };
       energy += this->distortionWeight * symmetricDirichlet(P, Q);
     }
     return energy;

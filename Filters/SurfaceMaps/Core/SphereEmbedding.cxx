@@ -41,8 +41,10 @@ struct AttemptFailed
 
 // True if p joined to its ring gives positively oriented triangles and
 // spherical edges shorter than the energy's limit, so the energy is finite.
-bool validInRing(const Eigen::Vector3d& p, const std::vector<int>& ring,
-  const std::vector<Eigen::Vector3d>& pos, double minEdgeCos)
+bool validInRing(const Eigen::Vector3d& p,
+  const std::vector<int>& ring,
+  const std::vector<Eigen::Vector3d>& pos,
+  double minEdgeCos)
 {
   const std::size_t n = ring.size();
   for (std::size_t i = 0; i < n; ++i)
@@ -61,7 +63,9 @@ bool validInRing(const Eigen::Vector3d& p, const std::vector<int>& ring,
 // to it, with all new edges short enough: the ring centroid if that works,
 // else a point close to `kept`, inside the angle its two ring edges make
 // (valid for small distances, since the collapsed mesh was valid).
-bool placeInKernel(const Collapse& c, const std::vector<Eigen::Vector3d>& pos, double minEdgeCos,
+bool placeInKernel(const Collapse& c,
+  const std::vector<Eigen::Vector3d>& pos,
+  double minEdgeCos,
   Eigen::Vector3d& out)
 {
   Eigen::Vector3d centroid = Eigen::Vector3d::Zero();
@@ -120,12 +124,15 @@ bool placeInKernel(const Collapse& c, const std::vector<Eigen::Vector3d>& pos, d
 }
 
 // Newton on the two tangent variables of vertex v, its ring fixed.
-void relaxVertex(const Collapse& c, const EmbeddingEnergy& energy, std::vector<Eigen::Vector3d>& pos,
+void relaxVertex(const Collapse& c,
+  const EmbeddingEnergy& energy,
+  std::vector<Eigen::Vector3d>& pos,
   int iterations)
 {
   const int v = c.removed;
   const std::size_t n = c.ring.size();
-  auto starEnergy = [&](const Eigen::Vector3d& p) {
+  auto starEnergy = [&](const Eigen::Vector3d& p)
+  {
     double e = 0.0;
     for (std::size_t i = 0; i < n; ++i)
     {
@@ -154,8 +161,8 @@ void relaxVertex(const Collapse& c, const EmbeddingEnergy& energy, std::vector<E
     for (std::size_t i = 0; i < n; ++i)
     {
       const std::array<int, 3> t{ v, c.ring[i], c.ring[(i + 1) % n] };
-      e += energy.triangleEnergy<D>(t,
-        { pv, pos[t[1]].cast<D>().eval(), pos[t[2]].cast<D>().eval() });
+      e +=
+        energy.triangleEnergy<D>(t, { pv, pos[t[1]].cast<D>().eval(), pos[t[2]].cast<D>().eval() });
     }
     if (!std::isfinite(e.val))
     {
@@ -174,11 +181,11 @@ void relaxVertex(const Collapse& c, const EmbeddingEnergy& energy, std::vector<E
     {
       return;
     }
-    LineSearchResult ls = armijoBacktracking(
-      [&](double s) {
-        return starEnergy(SpherePoints::retraction(p, B, s * d[0], s * d[1]));
-      },
-      e.val, slope, std::min(1.0, 0.5 / std::max(1e-12, d.norm())));
+    LineSearchResult ls = armijoBacktracking([&](double s)
+      { return starEnergy(SpherePoints::retraction(p, B, s * d[0], s * d[1])); },
+      e.val,
+      slope,
+      std::min(1.0, 0.5 / std::max(1e-12, d.norm())));
     if (!ls.success)
     {
       return;
@@ -196,7 +203,8 @@ struct Attempt
 class Embedder
 {
 public:
-  Embedder(const PolygonMesh& mesh, const DecimationResult& hierarchy,
+  Embedder(const PolygonMesh& mesh,
+    const DecimationResult& hierarchy,
     const SphereEmbeddingOptions& options)
     : Mesh(mesh)
     , Hierarchy(hierarchy)
@@ -235,7 +243,8 @@ public:
     {
       this->Positions[corners[k]] = tet.points[k];
     }
-    if (orient3dOrigin(this->Positions[base[0][0]], this->Positions[base[0][1]],
+    if (orient3dOrigin(this->Positions[base[0][0]],
+          this->Positions[base[0][1]],
           this->Positions[base[0][2]]) < 0)
     {
       std::swap(this->Positions[corners[0]], this->Positions[corners[1]]);
@@ -280,10 +289,12 @@ public:
         this->Active[c.removed] = 1;
       }
       inserted += collapses.size();
-      const int iterations = inserted > 1000 ? this->Options.levelIterationsLarge
-                                             : this->Options.levelIterations;
-      this->optimise(energy, level > 0 ? iterations : this->Options.finalIterations,
-        level > 0 ? this->Options.levelTolerance : this->Options.finalTolerance, result);
+      const int iterations =
+        inserted > 1000 ? this->Options.levelIterationsLarge : this->Options.levelIterations;
+      this->optimise(energy,
+        level > 0 ? iterations : this->Options.finalIterations,
+        level > 0 ? this->Options.levelTolerance : this->Options.finalTolerance,
+        result);
       this->report(0.9 * static_cast<double>(inserted) / static_cast<double>(nv));
     }
     if (levels.empty())
@@ -306,7 +317,10 @@ private:
     }
   }
 
-  void optimise(EmbeddingEnergy& energy, int iterations, double tolerance, SphereEmbeddingResult& result)
+  void optimise(EmbeddingEnergy& energy,
+    int iterations,
+    double tolerance,
+    SphereEmbeddingResult& result)
   {
     SpherePoints points(this->Positions);
     std::vector<char> locked(this->Active.size());
@@ -324,9 +338,8 @@ private:
     newton.maxPointStep = this->Options.maxPointStep;
     newton.log = this->Options.log;
     const Triangles& triangles = energy.triangles;
-    newton.acceptTrial = [&triangles](const SpherePoints& p) {
-      return std::lround(sphericalDegree(p.positions(), triangles)) == 1;
-    };
+    newton.acceptTrial = [&triangles](const SpherePoints& p)
+    { return std::lround(sphericalDegree(p.positions(), triangles)) == 1; };
     for (int it = 0; it < iterations; ++it)
     {
       term->energy().chordArea = inputAreaOf(points.positions(), triangles);
@@ -353,7 +366,8 @@ private:
 } // namespace
 
 double embeddingDistortion(const std::vector<Eigen::Vector3d>& input,
-  const std::vector<Eigen::Vector3d>& sphere, const Triangles& triangles)
+  const std::vector<Eigen::Vector3d>& sphere,
+  const Triangles& triangles)
 {
   const double inputArea = inputAreaOf(input, triangles);
   const double chordArea = inputAreaOf(sphere, triangles);
@@ -372,8 +386,8 @@ double embeddingDistortion(const std::vector<Eigen::Vector3d>& input,
   return sum;
 }
 
-Eigen::Matrix3d bestRotation(
-  const std::vector<Eigen::Vector3d>& from, const std::vector<Eigen::Vector3d>& to)
+Eigen::Matrix3d bestRotation(const std::vector<Eigen::Vector3d>& from,
+  const std::vector<Eigen::Vector3d>& to)
 {
   Eigen::Matrix3d M = Eigen::Matrix3d::Zero();
   for (std::size_t k = 0; k < from.size() && k < to.size(); ++k)
@@ -415,8 +429,10 @@ SphereEmbeddingResult embedOnSphere(const PolygonMesh& mesh, const SphereEmbeddi
     }
     catch (const AttemptFailed& failure)
     {
-      reasons += (reasons.empty() ? "" : "; ") + ("attempt " + std::to_string(a + 1) + ": " + failure.reason);
-      options.log(Logger::Warning, "sphere embedding attempt " + std::to_string(a + 1) + " failed: " + failure.reason);
+      reasons += (reasons.empty() ? "" : "; ") +
+        ("attempt " + std::to_string(a + 1) + ": " + failure.reason);
+      options.log(Logger::Warning,
+        "sphere embedding attempt " + std::to_string(a + 1) + " failed: " + failure.reason);
       continue;
     }
     result.certificate = certifyBijective(result.positions, hierarchy.triangles);
@@ -425,8 +441,8 @@ SphereEmbeddingResult embedOnSphere(const PolygonMesh& mesh, const SphereEmbeddi
       reasons += (reasons.empty() ? "" : "; ") +
         ("attempt " + std::to_string(a + 1) + ": " + result.certificate.reason);
       options.log(Logger::Warning,
-        "sphere embedding attempt " + std::to_string(a + 1) + " not bijective: " +
-          result.certificate.reason);
+        "sphere embedding attempt " + std::to_string(a + 1) +
+          " not bijective: " + result.certificate.reason);
       continue;
     }
     result.distortion = embeddingDistortion(mesh.points, result.positions, hierarchy.triangles);

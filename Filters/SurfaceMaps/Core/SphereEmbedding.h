@@ -69,17 +69,18 @@ struct EmbeddingAborted
 /// degree 1. The result is certified with exact predicates; on failure the
 /// embedding is retried with a stronger barrier, then with the barrier alone.
 /// Throws std::runtime_error if no attempt certifies.
-SphereEmbeddingResult embedOnSphere(
-  const PolygonMesh& mesh, const SphereEmbeddingOptions& options = SphereEmbeddingOptions());
+SphereEmbeddingResult embedOnSphere(const PolygonMesh& mesh,
+  const SphereEmbeddingOptions& options = SphereEmbeddingOptions());
 
 /// The rotation R (det +1) minimising sum |R a_k - b_k|^2 (Kabsch), e.g. to
 /// turn one embedding's landmark points onto another's.
-Eigen::Matrix3d bestRotation(
-  const std::vector<Eigen::Vector3d>& from, const std::vector<Eigen::Vector3d>& to);
+Eigen::Matrix3d bestRotation(const std::vector<Eigen::Vector3d>& from,
+  const std::vector<Eigen::Vector3d>& to);
 
 /// Symmetric Dirichlet distortion (DESIGN.md section 6) between a mesh and
 /// its chord triangles on the sphere, both at unit total area.
 double embeddingDistortion(const std::vector<Eigen::Vector3d>& input,
-  const std::vector<Eigen::Vector3d>& sphere, const std::vector<std::array<int, 3>>& triangles);
+  const std::vector<Eigen::Vector3d>& sphere,
+  const std::vector<std::array<int, 3>>& triangles);
 
 } // namespace surfacemaps

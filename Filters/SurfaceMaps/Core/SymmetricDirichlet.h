@@ -12,9 +12,10 @@ namespace surfacemaps
 
 /// Gram entries (e1.e1, e2.e2, e1.e2) of the edges e1 = b - a, e2 = c - a:
 /// all a triangle's intrinsic shape, independent of its placement in space.
-template <typename T>
-std::array<T, 3> gramEntries(
-  const Eigen::Matrix<T, 3, 1>& a, const Eigen::Matrix<T, 3, 1>& b, const Eigen::Matrix<T, 3, 1>& c)
+template<typename T>
+std::array<T, 3> gramEntries(const Eigen::Matrix<T, 3, 1>& a,
+  const Eigen::Matrix<T, 3, 1>& b,
+  const Eigen::Matrix<T, 3, 1>& c)
 {
   const Eigen::Matrix<T, 3, 1> e1 = b - a, e2 = c - a;
   return { e1.dot(e1), e2.dot(e2), e1.dot(e2) };
@@ -26,7 +27,7 @@ std::array<T, 3> gramEntries(
 /// two triangles' edges: s1^2 + s2^2 = tr(G_Q G_P^-1), s1^-2 + s2^-2 =
 /// tr(G_P G_Q^-1), area = sqrt(det G) / 2. Orientation-blind: flips are kept
 /// out by a barrier. +inf (or NaN) for a degenerate triangle.
-template <typename T, typename U>
+template<typename T, typename U>
 T symmetricDirichlet(const std::array<U, 3>& P, const std::array<T, 3>& Q)
 {
   const U detP = P[0] * P[1] - P[2] * P[2];

@@ -1,0 +1,173 @@
+#include "CommandSupport.h"
+
+#include "Commands.h"
+
+#include "vtkAlgorithm.h"
+#include "vtkCallbackCommand.h"
+#include "vtkCommand.h"
+#include "vtkNew.h"
+#include "vtkPolyData.h"
+#include "vtkSurfaceMeshReader.h"
+#include "vtkSurfaceMeshValidator.h"
+#include "vtkTable.h"
+#include "vtkVariant.h"
+#include "vtkXMLPolyDataWriter.h"
+
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+#include <iostream>
+#include <sstream>
+#include <stdexcept>
+
+namespace surfacemap
+{
+
+ErrorCapture::ErrorCapture(vtkAlgorithm* algorithm)
+  : Algorithm(algorithm)
+{
+  vtkNew<vtkCallbackCommand> command;
+  command->SetCallback(&ErrorCapture::callback);
+  command->SetClientData(this);
+  this->Tag = algorithm->AddObserver(vtkCommand::ErrorEvent, command);
+}
+
+ErrorCapture::~ErrorCapture()
+{
+  this->Algorithm->RemoveObserver(this->Tag);
+}
+
+void ErrorCapture::callback(vtkObject*, unsigned long, void* self, void* text)
+{
+  std::string message = text ? static_cast<const char*>(text) : "unknown error";
+  // vtkErrorMacro text: "ERROR: In file, line N\nClass (0x...): message"
+  const std::size_t marker = message.find("): ");
+  if (marker != std::string::npos)
+  {
+    message = message.substr(marker + 3);
+  }
+  while (!message.empty() && (message.back() == '\n' || message.back() == ' '))
+  {
+    message.pop_back();
+  }
+  static_cast<ErrorCapture*>(self)->Messages.push_back(message);
+}
+
+ProgressBar::ProgressBar(vtkAlgorithm* algorithm)
+  : Algorithm(algorithm)
+{
+  if (!isatty(STDERR_FILENO))
+  {
+    return;
+  }
+  vtkNew<vtkCallbackCommand> command;
+  command->SetCallback(&ProgressBar::callback);
+  command->SetClientData(this);
+  this->Tag = algorithm->AddObserver(vtkCommand::ProgressEvent, command);
+}
+
+ProgressBar::~ProgressBar()
+{
+  if (this->Tag)
+  {
+    this->Algorithm->RemoveObserver(this->Tag);
+  }
+  if (this->Shown)
+  {
+    std::cerr << "\n";
+  }
+}
+
+void ProgressBar::callback(vtkObject*, unsigned long, void* self, void*)
+{
+  auto* bar = static_cast<ProgressBar*>(self);
+  const double progress = bar->Algorithm->GetProgress();
+  const int width = 30;
+  const int filled = static_cast<int>(progress * width + 0.5);
+  const char* text = bar->Algorithm->GetProgressText();
+  std::cerr << "\r[" << std::string(filled, '#') << std::string(width - filled, ' ') << "] "
+            << static_cast<int>(100 * progress + 0.5) << "% " << (text ? text : "") << "   "
+            << std::flush;
+  bar->Shown = true;
+}
+
+vtkSmartPointer<vtkPolyData> readValidMesh(const std::string& path, const std::string& landmarks)
+{
+  vtkNew<vtkSurfaceMeshReader> reader;
+  ErrorCapture readErrors(reader);
+  reader->SetFileName(path.c_str());
+  if (!landmarks.empty())
+  {
+    reader->SetLandmarkFileName(landmarks.c_str());
+  }
+  reader->Update();
+  if (*reader->GetLastErrorMessage())
+  {
+    printError(reader->GetLastErrorMessage());
+    return nullptr;
+  }
+  vtkSmartPointer<vtkPolyData> mesh = reader->GetOutput();
+
+  vtkNew<vtkSurfaceMeshValidator> validator;
+  validator->AddInputDataObject(mesh);
+  validator->Update();
+  if (!validator->GetAllValid())
+  {
+    std::istringstream defects(validator->GetOutput()->GetValueByName(0, "Defects").ToString());
+    for (std::string line; std::getline(defects, line);)
+    {
+      printError(path + " " + line);
+    }
+    return nullptr;
+  }
+  return mesh;
+}
+
+namespace
+{
+std::string temporaryName(const std::string& path)
+{
+  return path + ".tmp." + std::to_string(getpid());
+}
+} // namespace
+
+void checkWritable(const std::string& path)
+{
+  const std::string temporary = temporaryName(path);
+  std::FILE* file = std::fopen(temporary.c_str(), "wb");
+  if (!file)
+  {
+    throw std::runtime_error("cannot write '" + path + "': " + std::strerror(errno));
+  }
+  std::fclose(file);
+  std::remove(temporary.c_str());
+}
+
+void writePolyDataAtomically(vtkPolyData* data, const std::string& path)
+{
+  const std::string temporary = temporaryName(path);
+  vtkNew<vtkXMLPolyDataWriter> writer;
+  ErrorCapture errors(writer);
+  writer->SetInputData(data);
+  writer->SetFileName(temporary.c_str());
+  writer->SetDataModeToAppended();
+  writer->EncodeAppendedDataOff();
+  writer->SetCompressorTypeToZLib();
+  const int ok = writer->Write();
+  if (!ok || !errors.messages().empty())
+  {
+    std::remove(temporary.c_str());
+    throw std::runtime_error("cannot write '" + path + "'" +
+      (errors.messages().empty() ? std::string() : ": " + errors.messages().front()));
+  }
+  if (std::rename(temporary.c_str(), path.c_str()) != 0)
+  {
+    const std::string reason = std::strerror(errno);
+    std::remove(temporary.c_str());
+    throw std::runtime_error("cannot write '" + path + "': " + reason);
+  }
+}
+
+} // namespace surfacemap

@@ -1,0 +1,65 @@
+// The `surfacemap` command line: pieces shared by the commands.
+#pragma once
+
+#include "vtkSmartPointer.h"
+
+#include <string>
+#include <vector>
+
+class vtkAlgorithm;
+class vtkObject;
+class vtkPolyData;
+
+namespace surfacemap
+{
+
+/// Collects the messages of a VTK algorithm's ErrorEvents (without VTK's
+/// source-location prefix), so commands can print them their own way.
+class ErrorCapture
+{
+public:
+  explicit ErrorCapture(vtkAlgorithm* algorithm);
+  ~ErrorCapture();
+  ErrorCapture(const ErrorCapture&) = delete;
+  ErrorCapture& operator=(const ErrorCapture&) = delete;
+
+  const std::vector<std::string>& messages() const { return this->Messages; }
+
+private:
+  static void callback(vtkObject*, unsigned long, void* self, void* text);
+  vtkAlgorithm* Algorithm;
+  unsigned long Tag = 0;
+  std::vector<std::string> Messages;
+};
+
+/// A progress bar on stderr while an algorithm runs, only if stderr is a
+/// terminal.
+class ProgressBar
+{
+public:
+  explicit ProgressBar(vtkAlgorithm* algorithm);
+  ~ProgressBar();
+  ProgressBar(const ProgressBar&) = delete;
+  ProgressBar& operator=(const ProgressBar&) = delete;
+
+private:
+  static void callback(vtkObject*, unsigned long, void* self, void*);
+  vtkAlgorithm* Algorithm;
+  unsigned long Tag = 0;
+  bool Shown = false;
+};
+
+/// Reads a mesh (and optional landmark file) with vtkSurfaceMeshReader and
+/// validates it; on failure prints the reasons and returns null.
+vtkSmartPointer<vtkPolyData> readValidMesh(const std::string& path, const std::string& landmarks);
+
+/// Throws std::runtime_error naming `path` if no file can be created there
+/// (checked before long computations whose result would be lost).
+void checkWritable(const std::string& path);
+
+/// Writes VTK XML PolyData to a temporary name beside `path`, then renames it,
+/// so a failed or interrupted write never leaves a half-written file. Throws
+/// std::runtime_error naming the file on failure.
+void writePolyDataAtomically(vtkPolyData* data, const std::string& path);
+
+} // namespace surfacemap

@@ -1,0 +1,217 @@
+#include "Decimation.h"
+#include "EmbeddingEnergy.h"
+#include "FiniteDifferences.h"
+#include "MeshValidation.h"
+#include "ObjReader.h"
+#include "Objective.h"
+#include "OffReader.h"
+#include "PlyReader.h"
+#include "Primitives.h"
+#include "SphereEmbedding.h"
+
+#include <gtest/gtest.h>
+#include <omp.h>
+
+#include <random>
+#include <set>
+
+using namespace surfacemaps;
+using namespace surfacemaps::testing;
+
+namespace
+{
+const std::string Data = SURFACEMAPS_DATA_DIR;
+
+std::vector<std::array<int, 3>> triangles(const PolygonMesh& m)
+{
+  std::vector<std::array<int, 3>> t;
+  for (std::size_t f = 0; f < m.numberOfFaces(); ++f)
+  {
+    t.push_back({ m.face(f)[0], m.face(f)[1], m.face(f)[2] });
+  }
+  return t;
+}
+
+PolygonMesh ellipsoid()
+{
+  return readObj(Data + "/ellipsoid.obj");
+}
+} // namespace
+
+TEST(Decimation, ReachesATetrahedronThroughIndependentLevels)
+{
+  const PolygonMesh mesh = ellipsoid();
+  const DecimationResult r = decimateToTetrahedron(mesh);
+  ASSERT_FALSE(r.levels.empty());
+  EXPECT_EQ(r.levels.back().triangles.size(), 4u);
+  std::set<int> removedSoFar;
+  std::size_t previousTriangles = r.triangles.size();
+  for (const DecimationLevel& level : r.levels)
+  {
+    std::set<int> removed;
+    for (const Collapse& c : level.collapses)
+    {
+      removed.insert(c.removed);
+      EXPECT_EQ(removedSoFar.count(c.removed), 0u);
+      EXPECT_NE(std::find(c.ring.begin(), c.ring.end(), c.kept), c.ring.end());
+    }
+    for (const Collapse& c : level.collapses)
+    {
+      for (int w : c.ring)
+      {
+        EXPECT_EQ(removed.count(w), 0u) << "ring vertex removed in the same level";
+      }
+    }
+    // Each half-edge collapse removes a vertex and two triangles.
+    EXPECT_EQ(level.triangles.size(), previousTriangles - 2 * level.collapses.size());
+    previousTriangles = level.triangles.size();
+    removedSoFar.insert(removed.begin(), removed.end());
+  }
+  EXPECT_EQ(removedSoFar.size(), mesh.points.size() - 4);
+}
+
+TEST(EmbeddingEnergy, DerivativesMatchFiniteDifferences)
+{
+  const PolygonMesh mesh = ellipsoid();
+  std::vector<Eigen::Vector3d> sphere;
+  for (const auto& p : mesh.points)
+  {
+    sphere.push_back((p + Eigen::Vector3d(0.1, 0.0, 0.05)).normalized());
+  }
+  SpherePoints points(sphere);
+  EmbeddingEnergy energy;
+  energy.triangles = triangles(mesh);
+  energy.input = &mesh.points;
+  energy.barrierWeight = 0.01;
+  energy.inputArea = 2.0;
+  energy.chordArea = 11.0;
+  Objective objective;
+  objective.addTerm(std::make_shared<ElementTerm<3, EmbeddingEnergy>>("embedding", energy));
+
+  // Restrict the finite differences to the variables of a few vertices.
+  Eigen::VectorXd g;
+  Eigen::SparseMatrix<double> H;
+  const double e = objective.hessian(points, -1.0, g, H);
+  EXPECT_NEAR(e, objective.value(points), 1e-12 * std::abs(e));
+  const Eigen::MatrixXd full = Eigen::MatrixXd(H).selfadjointView<Eigen::Upper>();
+  const std::vector<int> vars = { 0, 1, 14, 15, 300, 301 };
+  auto f = [&](const Eigen::VectorXd& y)
+  {
+    Eigen::VectorXd x = Eigen::VectorXd::Zero(points.numberOfVariables());
+    for (std::size_t k = 0; k < vars.size(); ++k)
+    {
+      x[vars[k]] = y[k];
+    }
+    SpherePoints moved = points;
+    moved.retract(x, 1.0);
+    return objective.value(moved);
+  };
+  const Eigen::VectorXd y0 = Eigen::VectorXd::Zero(vars.size());
+  const Eigen::VectorXd fdG = finiteDifferenceGradient(f, y0);
+  const Eigen::MatrixXd fdH = finiteDifferenceHessian(f, y0);
+  Eigen::VectorXd gSub(vars.size());
+  Eigen::MatrixXd hSub(vars.size(), vars.size());
+  for (std::size_t a = 0; a < vars.size(); ++a)
+  {
+    gSub[a] = g[vars[a]];
+    for (std::size_t b = 0; b < vars.size(); ++b)
+    {
+      hSub(a, b) = full(vars[a], vars[b]);
+    }
+  }
+  EXPECT_LT(relativeError(gSub, fdG), 1e-6);
+  EXPECT_LT(relativeError(hSub, fdH), 1e-4);
+}
+
+TEST(EmbeddingEnergy, DistortionIsOneForTheSphereItself)
+{
+  // A fine icosphere is nearly its own chord mesh: distortion close to 1.
+  const PolygonMesh ico = makeIcosphere(3);
+  EXPECT_NEAR(embeddingDistortion(ico.points, ico.points, triangles(ico)), 1.0, 1e-12);
+  std::vector<Eigen::Vector3d> stretched = ico.points;
+  for (auto& p : stretched)
+  {
+    p.x() *= 2.0;
+  }
+  EXPECT_GT(embeddingDistortion(stretched, ico.points, triangles(ico)), 1.1);
+}
+
+TEST(SphereEmbedding, CertifiedOnEveryDataMesh)
+{
+  const std::vector<PolygonMesh> meshes = { readObj(Data + "/ellipsoid.obj"),
+    readOff(Data + "/blob.off"),
+    readPly(Data + "/limbs.ply"),
+    readObj(Data + "/spot.obj"),
+    makeTetrahedron(),
+    makeOctahedron() };
+  for (const PolygonMesh& mesh : meshes)
+  {
+    ASSERT_TRUE(validateMesh(mesh).valid());
+    const SphereEmbeddingResult r = embedOnSphere(mesh);
+    ASSERT_EQ(r.positions.size(), mesh.points.size());
+    // Certified independently of the embedding's own check.
+    const BijectivityCertificate c = certifyBijective(r.positions, triangles(mesh));
+    EXPECT_TRUE(c.bijective) << c.reason;
+    EXPECT_NEAR(c.degree, 1.0, 1e-9);
+    for (const auto& p : r.positions)
+    {
+      EXPECT_NEAR(p.norm(), 1.0, 1e-12);
+    }
+    EXPECT_GE(r.distortion, 1.0);
+    EXPECT_LT(r.distortion, 2.0) << mesh.points.size() << " vertices";
+  }
+}
+
+TEST(SphereEmbedding, DeterministicForAFixedThreadCount)
+{
+  const PolygonMesh mesh = readOff(Data + "/blob.off");
+  const SphereEmbeddingResult a = embedOnSphere(mesh);
+  const SphereEmbeddingResult b = embedOnSphere(mesh);
+  ASSERT_EQ(a.positions.size(), b.positions.size());
+  for (std::size_t i = 0; i < a.positions.size(); ++i)
+  {
+    ASSERT_EQ(a.positions[i], b.positions[i]) << "vertex " << i;
+  }
+  EXPECT_EQ(a.newtonIterations, b.newtonIterations);
+}
+
+TEST(SphereEmbedding, ProgressIsMonotoneAndAbortStops)
+{
+  const PolygonMesh mesh = ellipsoid();
+  SphereEmbeddingOptions options;
+  std::vector<double> reported;
+  options.progress = [&](double f)
+  {
+    reported.push_back(f);
+    return true;
+  };
+  embedOnSphere(mesh, options);
+  ASSERT_GT(reported.size(), 3u);
+  for (std::size_t i = 1; i < reported.size(); ++i)
+  {
+    EXPECT_GE(reported[i], reported[i - 1]);
+  }
+  EXPECT_EQ(reported.back(), 1.0);
+
+  int calls = 0;
+  options.progress = [&](double) { return ++calls < 3; };
+  EXPECT_THROW(embedOnSphere(mesh, options), EmbeddingAborted);
+  EXPECT_EQ(calls, 3);
+}
+
+TEST(SphereEmbedding, BestRotationRecoversARotation)
+{
+  std::mt19937 rng(3);
+  std::normal_distribution<double> n;
+  const Eigen::Matrix3d R =
+    Eigen::AngleAxisd(0.7, Eigen::Vector3d(1, 2, 3).normalized()).toRotationMatrix();
+  std::vector<Eigen::Vector3d> from, to;
+  for (int k = 0; k < 5; ++k)
+  {
+    from.push_back(Eigen::Vector3d(n(rng), n(rng), n(rng)).normalized());
+    to.push_back(R * from.back());
+  }
+  const Eigen::Matrix3d found = bestRotation(from, to);
+  EXPECT_LT((found - R).norm(), 1e-12);
+  EXPECT_NEAR(found.determinant(), 1.0, 1e-12);
+}

@@ -1,0 +1,64 @@
+"""`surfacemap embed`: certified output file, bad input, unwritable output."""
+
+import math
+import os
+import re
+import subprocess
+
+CLI = os.environ["SURFACEMAPS_CLI"]
+DATA = os.environ["SURFACEMAPS_DATA"]
+
+
+def run(*args):
+    return subprocess.run([CLI, *args], capture_output=True, text=True, timeout=300)
+
+
+def data(name):
+    return os.path.join(DATA, name)
+
+
+def test_embed_writes_a_valid_mesh_with_sphere_positions(tmp_path):
+    out = tmp_path / "blob_sphere.vtp"
+    r = run("embed", data("blob.off"), "-o", str(out), "--landmarks", data("blob.vts"))
+    assert r.returncode == 0, r.stderr
+    assert "certified bijective sphere embedding of 642 vertices" in r.stdout
+    assert out.exists()
+    assert not [p for p in os.listdir(tmp_path) if ".tmp." in p]
+    # The written file is itself a valid input with the landmarks kept.
+    r = run("check", str(out))
+    assert r.returncode == 0 and "landmarks 4" in r.stdout
+
+
+def test_on_sphere(tmp_path):
+    out = tmp_path / "s.vtp"
+    r = run("embed", data("ellipsoid.obj"), "--on-sphere", "-o", str(out))
+    assert r.returncode == 0, r.stderr
+    r = run("check", str(out))
+    assert r.returncode == 0
+    # Chord triangles of the unit sphere: area just under 4 pi, diagonal just under 2 sqrt 3.
+    area = float(re.search(r"area ([0-9.]+)", r.stdout).group(1))
+    diagonal = float(re.search(r"bbox diagonal ([0-9.]+)", r.stdout).group(1))
+    assert 12.0 < area < 4 * math.pi
+    assert 3.3 < diagonal <= 2 * math.sqrt(3)
+
+
+def test_bad_input_writes_nothing(tmp_path):
+    out = tmp_path / "t.vtp"
+    r = run("embed", data("bad/torus.obj"), "-o", str(out))
+    assert r.returncode == 2
+    assert "has genus 1" in r.stderr
+    assert not out.exists()
+
+
+def test_unwritable_output_is_reported_before_computing(tmp_path):
+    r = run("embed", data("ellipsoid.obj"), "-o", str(tmp_path / "no" / "such" / "dir.vtp"))
+    assert r.returncode == 2
+    assert "cannot write" in r.stderr
+
+
+def test_usage():
+    assert run("embed").returncode == 2
+    r = run("embed", data("ellipsoid.obj"))
+    assert r.returncode == 2 and "no output file" in r.stderr
+    r = run("embed", "--help")
+    assert r.returncode == 0 and "--on-sphere" in r.stdout
