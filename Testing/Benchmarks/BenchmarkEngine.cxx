@@ -70,7 +70,7 @@ struct ChordDirichletEnergy
     }
     else
     {
-      constexpr bool H = !std::is_same_v<decltype(T::Hess), typename T::NoHessian>;
+      constexpr bool H = T::HasHessian;
       using D6 = Dual<6, H>;
       std::array<T, 6> u;
       for (int t = 0; t < 2; ++t)

@@ -20,6 +20,9 @@ namespace surfacemaps
 template<int N, bool WithHessian = true>
 struct Dual
 {
+  /// Number of variables and whether second derivatives are carried.
+  static constexpr int Variables = N;
+  static constexpr bool HasHessian = WithHessian;
   using Gradient = Eigen::Matrix<double, N, 1>;
   using Hessian = Eigen::Matrix<double, N, N>;
   struct NoHessian
@@ -314,6 +317,12 @@ template<int N, bool H>
 struct IsDual<Dual<N, H>> : std::true_type
 {
 };
+
+/// Number of variables a scalar type carries derivatives for (0 for double).
+template<typename T>
+inline constexpr int variablesOf = 0;
+template<int N, bool H>
+inline constexpr int variablesOf<Dual<N, H>> = N;
 
 /// The value of a scalar that may or may not carry derivatives.
 inline double valueOf(double x)

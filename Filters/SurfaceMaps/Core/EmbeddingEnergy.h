@@ -58,9 +58,9 @@ struct EmbeddingEnergy
     const std::array<T, 4> u = {
       p[0].dot(p[1].cross(p[2])), p[0].dot(p[1]), p[1].dot(p[2]), p[2].dot(p[0])
     };
-    if constexpr (IsDual<T>::value)
+    if constexpr (variablesOf < T >> 4)
     {
-      using D4 = Dual<4, !std::is_same_v<decltype(T::Hess), typename T::NoHessian>>;
+      using D4 = Dual<4, T::HasHessian>;
       std::array<D4, 4> vars;
       for (int k = 0; k < 4; ++k)
       {

@@ -177,7 +177,8 @@ void relaxVertex(const Collapse& c,
       d = -e.grad;
       slope = -e.grad.squaredNorm();
     }
-    if (!(slope < -1e-30))
+    // Converged: the decrease a Newton step expects is negligible.
+    if (!(-slope > 1e-10 * std::abs(e.val)))
     {
       return;
     }

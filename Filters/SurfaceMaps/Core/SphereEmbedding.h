@@ -30,9 +30,9 @@ struct SphereEmbeddingOptions
   /// Newton iterations on the input mesh at the end, and their tolerance
   /// (as for the levels).
   int finalIterations = 50;
-  double finalTolerance = 1e-6;
+  double finalTolerance = 1e-5;
   /// Newton iterations on each inserted vertex's own two variables.
-  int localIterations = 5;
+  int localIterations = 10;
   /// Largest tangent step of one point per Newton step (tan 75 degrees).
   double maxPointStep = 3.7320508075688772;
   /// Called with the fraction done (0..1); return false to abort.

@@ -80,7 +80,7 @@ public:
         q[k] = T(p[k]);
         q[k].grad[first] = B(k, 0);
         q[k].grad[first + 1] = B(k, 1);
-        if constexpr (!std::is_same_v<decltype(q[k].Hess), typename T::NoHessian>)
+        if constexpr (T::HasHessian)
         {
           q[k].Hess(first, first) = -p[k];
           q[k].Hess(first + 1, first + 1) = -p[k];
