@@ -48,17 +48,21 @@ struct EmbeddingEnergy
 
   /// The energy of triangle t (input vertex indices) at sphere points p.
   /// On the unit sphere it depends on p only through det[a, b, c] and the
-  /// three dot products a.b, b.c, c.a (|b - a|^2 = 2 - 2 a.b, ...). Those four
-  /// are computed with p's derivatives; the rest with derivatives in those four
-  /// only, composed at the end: half the cost of carrying all derivatives.
+  /// Gram entries of the edges e1 = b - a, e2 = c - a (the points' dot
+  /// products follow: a.b = 1 - |e1|^2 / 2, ...). Those four are computed with
+  /// p's derivatives; the rest with derivatives in those four only, composed
+  /// at the end: half the cost of carrying all derivatives. (The Gram entries
+  /// come from the edge vectors, not from 2 - 2 a.b, which cancels to 0 for
+  /// tiny triangles.)
   template<typename T>
   T triangleEnergy(const std::array<int, 3>& t,
     const std::array<Eigen::Matrix<T, 3, 1>, 3>& p) const
   {
-    const std::array<T, 4> u = {
-      p[0].dot(p[1].cross(p[2])), p[0].dot(p[1]), p[1].dot(p[2]), p[2].dot(p[0])
-    };
-    if constexpr (variablesOf < T >> 4)
+    const Eigen::Matrix<T, 3, 1> e1 = p[1] - p[0];
+    const Eigen::Matrix<T, 3, 1> e2 = p[2] - p[0];
+    const std::array<T, 4> u = { p[0].dot(p[1].cross(p[2])), e1.dot(e1), e2.dot(e2), e1.dot(e2) };
+    constexpr int variables = variablesOf<T>;
+    if constexpr (variables > 4)
     {
       using D4 = Dual<4, T::HasHessian>;
       std::array<D4, 4> vars;
@@ -79,7 +83,7 @@ struct EmbeddingEnergy
     }
   }
 
-  /// The energy from u = (det[a, b, c], a.b, b.c, c.a).
+  /// The energy from u = (det[a, b, c], e1.e1, e2.e2, e1.e2).
   template<typename T>
   T fromInvariants(const std::array<int, 3>& t, const std::array<T, 4>& u) const
   {
@@ -89,9 +93,11 @@ struct EmbeddingEnergy
       return T(inf);
     }
     T energy = -this->barrierWeight * log(u[0]);
-    for (int k = 1; k < 4; ++k)
+    // Squared lengths of the edges ab, ca and bc; a.b = 1 - |b - a|^2 / 2.
+    const std::array<T, 3> squaredLengths = { u[1], u[2], u[1] + u[2] - 2.0 * u[3] };
+    for (const T& l2 : squaredLengths)
     {
-      const T slack = u[k] - this->minEdgeCos;
+      const T slack = (1.0 - 0.5 * l2) - this->minEdgeCos;
       if (!(slack > 0.0))
       {
         return T(inf);
@@ -107,11 +113,8 @@ struct EmbeddingEnergy
       {
         v /= this->inputArea;
       }
-      // Edges b - a and c - a of the chord triangle.
       const double scale = 1.0 / this->chordArea;
-      const std::array<T, 3> Q = {
-        scale * (2.0 - 2.0 * u[1]), scale * (2.0 - 2.0 * u[3]), scale * (u[2] - u[1] - u[3] + 1.0)
-      };
+      const std::array<T, 3> Q = { scale * u[1], scale * u[2], scale * u[3] };
       energy += this->distortionWeight * symmetricDirichlet(P, Q);
     }
     return energy;

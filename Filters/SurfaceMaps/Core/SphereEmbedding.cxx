@@ -58,30 +58,68 @@ bool validInRing(const Eigen::Vector3d& p,
   return true;
 }
 
-// A point strictly inside the kernel of the star polygon `ring` (on the
-// sphere), which contains `kept` as a vertex and is star-shaped with respect
-// to it, with all new edges short enough: the ring centroid if that works,
-// else a point close to `kept`, inside the angle its two ring edges make
-// (valid for small distances, since the collapsed mesh was valid).
-bool placeInKernel(const Collapse& c,
+// The energy of the triangles around c.removed if it were at p.
+double starEnergy(const Collapse& c,
+  const EmbeddingEnergy& energy,
   const std::vector<Eigen::Vector3d>& pos,
-  double minEdgeCos,
+  const Eigen::Vector3d& p)
+{
+  const std::size_t n = c.ring.size();
+  double e = 0.0;
+  for (std::size_t i = 0; i < n && std::isfinite(e); ++i)
+  {
+    const std::array<int, 3> t{ c.removed, c.ring[i], c.ring[(i + 1) % n] };
+    e += energy.triangleEnergy<double>(t, { p, pos[t[1]], pos[t[2]] });
+  }
+  return e;
+}
+
+// A point strictly inside the kernel of the star polygon c.ring on the sphere
+// (which contains c.kept as a vertex and is star-shaped with respect to it),
+// with all new edges short enough: of a few candidates that qualify, the one
+// with the lowest energy of the new triangles. Candidates: the ring's
+// centroid, the ring's average weighted like the removed vertex's 3D
+// neighbourhood, and points close to c.kept inside the angle its two ring
+// edges make (which qualify for small enough distances, since the coarser
+// embedding was valid).
+bool placeInKernel(const Collapse& c,
+  const EmbeddingEnergy& energy,
+  const std::vector<Eigen::Vector3d>& pos,
   Eigen::Vector3d& out)
 {
+  const std::size_t n = c.ring.size();
+  const std::vector<Eigen::Vector3d>& x = *energy.input;
+  double best = std::numeric_limits<double>::infinity();
+  auto consider = [&](const Eigen::Vector3d& candidate)
+  {
+    if (!(candidate.norm() > 1e-12))
+    {
+      return false;
+    }
+    const Eigen::Vector3d p = candidate.normalized();
+    if (!validInRing(p, c.ring, pos, energy.minEdgeCos))
+    {
+      return false;
+    }
+    const double e = starEnergy(c, energy, pos, p);
+    if (e < best)
+    {
+      best = e;
+      out = p;
+    }
+    return std::isfinite(e);
+  };
+
   Eigen::Vector3d centroid = Eigen::Vector3d::Zero();
+  Eigen::Vector3d weighted = Eigen::Vector3d::Zero();
   for (int w : c.ring)
   {
     centroid += pos[w];
+    weighted += pos[w] / std::max(1e-300, (x[w] - x[c.removed]).norm());
   }
-  if (centroid.norm() > 1e-12)
-  {
-    out = centroid.normalized();
-    if (validInRing(out, c.ring, pos, minEdgeCos))
-    {
-      return true;
-    }
-  }
-  const std::size_t n = c.ring.size();
+  consider(centroid);
+  consider(weighted);
+
   std::size_t iu = 0;
   while (iu < n && c.ring[iu] != c.kept)
   {
@@ -89,7 +127,7 @@ bool placeInKernel(const Collapse& c,
   }
   if (iu == n)
   {
-    return false;
+    return std::isfinite(best);
   }
   const Eigen::Vector3d& u = pos[c.kept];
   const Eigen::Vector3d& prev = pos[c.ring[(iu + n - 1) % n]];
@@ -101,7 +139,7 @@ bool placeInKernel(const Collapse& c,
   Eigen::Vector3d t = n1.normalized() + n2.normalized();
   if (!(t.norm() > 1e-12))
   {
-    return false;
+    return std::isfinite(best);
   }
   t.normalize();
   double shortest = 2.0;
@@ -112,15 +150,17 @@ bool placeInKernel(const Collapse& c,
       shortest = std::min(shortest, (pos[w] - u).norm());
     }
   }
-  for (double eps = 0.3 * shortest; eps > 1e-14; eps *= 0.5)
+  // A few distances from u; further halving only while nothing qualifies.
+  int tried = 0;
+  for (double eps = 0.4 * shortest; eps > 1e-14; eps *= 0.5, ++tried)
   {
-    out = (u + eps * t).normalized();
-    if (validInRing(out, c.ring, pos, minEdgeCos))
+    const bool ok = consider(u + eps * t);
+    if (tried >= 3 && (ok || std::isfinite(best)))
     {
-      return true;
+      break;
     }
   }
-  return false;
+  return std::isfinite(best);
 }
 
 // Newton on the two tangent variables of vertex v, its ring fixed.
@@ -131,20 +171,6 @@ void relaxVertex(const Collapse& c,
 {
   const int v = c.removed;
   const std::size_t n = c.ring.size();
-  auto starEnergy = [&](const Eigen::Vector3d& p)
-  {
-    double e = 0.0;
-    for (std::size_t i = 0; i < n; ++i)
-    {
-      const std::array<int, 3> t{ v, c.ring[i], c.ring[(i + 1) % n] };
-      e += energy.triangleEnergy<double>(t, { p, pos[t[1]], pos[t[2]] });
-      if (!std::isfinite(e))
-      {
-        return e;
-      }
-    }
-    return e;
-  };
   using D = Dual<2>;
   for (int it = 0; it < iterations; ++it)
   {
@@ -183,7 +209,7 @@ void relaxVertex(const Collapse& c,
       return;
     }
     LineSearchResult ls = armijoBacktracking([&](double s)
-      { return starEnergy(SpherePoints::retraction(p, B, s * d[0], s * d[1])); },
+      { return starEnergy(c, energy, pos, SpherePoints::retraction(p, B, s * d[0], s * d[1])); },
       e.val,
       slope,
       std::min(1.0, 0.5 / std::max(1e-12, d.norm())));
@@ -273,7 +299,7 @@ public:
       {
         const Collapse& c = collapses[i];
         Eigen::Vector3d p;
-        if (!placeInKernel(c, this->Positions, energy.minEdgeCos, p))
+        if (!placeInKernel(c, energy, this->Positions, p))
         {
           placed = false;
           continue;
@@ -348,8 +374,10 @@ private:
       ++result.newtonIterations;
       result.energy = step.energyAfter;
       // Converged when the decrease a Newton step expects (decrement^2 / 2)
-      // is a negligible fraction of the energy.
-      if (!step.moved || 0.5 * step.decrement * step.decrement < tolerance * step.energyAfter)
+      // is negligible. Absolute, in units of the distortion (whose minimum is
+      // 1): a relative test would stop at once when one bad triangle makes
+      // the energy huge.
+      if (!step.moved || 0.5 * step.decrement * step.decrement < tolerance)
       {
         break;
       }

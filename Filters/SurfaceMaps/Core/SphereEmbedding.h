@@ -22,8 +22,8 @@ struct SphereEmbeddingOptions
   double barrierWeight = 0.1;
   /// Newton iterations on the whole current mesh after inserting a level,
   /// and the same above 1 000 vertices; they stop earlier once the decrease
-  /// a Newton step expects (decrement^2 / 2) is below levelTolerance times
-  /// the energy.
+  /// a Newton step expects (decrement^2 / 2) is below levelTolerance (the
+  /// distortion's minimum is 1).
   int levelIterations = 20;
   int levelIterationsLarge = 5;
   double levelTolerance = 1e-5;
