@@ -85,7 +85,9 @@ int main(int argc, char* argv[])
       const double seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
       total += seconds;
-      std::printf("| %s | %zu | %.2f | %.0f | %s | %d | %.3f | %d | %d |\n",
+      std::printf(
+        "| %s | %zu | %.2f | %.0f | %s | %d | %.3f | %d | %d | %.2f / %.2f / %.2f / %.2f / "
+        "%.2f |\n",
         argv[i],
         mesh.points.size(),
         seconds,
@@ -94,12 +96,17 @@ int main(int argc, char* argv[])
         r.attempt,
         r.distortion,
         r.levels,
-        r.newtonIterations);
+        r.newtonIterations,
+        r.decimationSeconds,
+        r.placementSeconds,
+        r.derivativeSeconds,
+        r.solveSeconds,
+        r.lineSearchSeconds);
       std::fflush(stdout);
     }
     catch (const std::exception& e)
     {
-      std::printf("| %s | | | | FAILED: %s | | | | |\n", argv[i], e.what());
+      std::printf("| %s | | | | FAILED: %s | | | | | |\n", argv[i], e.what());
     }
   }
   std::printf("\ntotal time %.2f s\n", total);

@@ -22,7 +22,8 @@ struct LinearSolveResult
 };
 
 /// Solves H x = b for a sparse symmetric positive (semi-)definite H given by
-/// its upper triangle, with CHOLMOD's supernodal Cholesky. The symbolic
+/// its upper triangle, with CHOLMOD's Cholesky factorisation (supernodal for
+/// dense factors, simplicial for sparse ones). The symbolic
 /// analysis is kept while the sparsity pattern stays the same. If the
 /// factorisation fails (H not numerically positive definite), H + shift I is
 /// factorised with a growing shift; the log says which happened.

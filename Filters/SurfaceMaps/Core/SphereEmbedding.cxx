@@ -293,6 +293,7 @@ public:
       energy.chordArea = inputAreaOf(this->Positions, levels[level].triangles);
       const auto& collapses = levels[level].collapses;
       const int count = static_cast<int>(collapses.size());
+      const auto placementStart = std::chrono::steady_clock::now();
       bool placed = true;
 #pragma omp parallel for schedule(dynamic, 16) reduction(&& : placed)
       for (int i = 0; i < count; ++i)
@@ -307,6 +308,8 @@ public:
         this->Positions[c.removed] = p;
         relaxVertex(c, energy, this->Positions, this->Options.localIterations);
       }
+      result.placementSeconds +=
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - placementStart).count();
       if (!placed)
       {
         throw AttemptFailed{ "a vertex could not be placed inside its one-ring" };
@@ -372,6 +375,9 @@ private:
       term->energy().chordArea = inputAreaOf(points.positions(), triangles);
       const NewtonStepResult step = newtonStep(objective, points, solver, newton);
       ++result.newtonIterations;
+      result.derivativeSeconds += step.derivativeSeconds;
+      result.solveSeconds += step.solveSeconds;
+      result.lineSearchSeconds += step.lineSearchSeconds;
       result.energy = step.energyAfter;
       // Converged when the decrease a Newton step expects (decrement^2 / 2)
       // is negligible. Absolute, in units of the distortion (whose minimum is
@@ -438,6 +444,8 @@ SphereEmbeddingResult embedOnSphere(const PolygonMesh& mesh, const SphereEmbeddi
   DecimationOptions decimation;
   decimation.log = options.log;
   const DecimationResult hierarchy = decimateToTetrahedron(mesh, decimation);
+  const double decimationSeconds =
+    std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   options.log(Logger::Detail,
     "sphere embedding: " + std::to_string(hierarchy.levels.size()) + " decimation levels");
 
@@ -451,6 +459,7 @@ SphereEmbeddingResult embedOnSphere(const PolygonMesh& mesh, const SphereEmbeddi
   {
     SphereEmbeddingResult result;
     result.attempt = a + 1;
+    result.decimationSeconds = decimationSeconds;
     Embedder embedder(mesh, hierarchy, options);
     try
     {

@@ -54,6 +54,13 @@ struct SphereEmbeddingResult
   /// 1: default weights; 2: stronger barrier; 3: barrier alone.
   int attempt = 0;
   double seconds = 0.0;
+  /// Where the time went: decimation, vertex placement (with local Newton),
+  /// and the global Newton steps' derivatives, linear solves and line searches.
+  double decimationSeconds = 0.0;
+  double placementSeconds = 0.0;
+  double derivativeSeconds = 0.0;
+  double solveSeconds = 0.0;
+  double lineSearchSeconds = 0.0;
 };
 
 /// Thrown when the embedding is aborted through the progress callback.

@@ -20,9 +20,14 @@ double signedSphericalArea(const Eigen::Vector3d& a,
 double sphericalDegree(const std::vector<Eigen::Vector3d>& points,
   const std::vector<std::array<int, 3>>& triangles)
 {
+  // Called for every line-search trial: worth both cores. The summation
+  // order varies with the threads, far below what rounding the degree needs.
+  const long long n = static_cast<long long>(triangles.size());
   double sum = 0.0;
-  for (const auto& t : triangles)
+#pragma omp parallel for reduction(+ : sum) schedule(static) if (n > 20000)
+  for (long long f = 0; f < n; ++f)
   {
+    const auto& t = triangles[f];
     sum += signedSphericalArea(points[t[0]], points[t[1]], points[t[2]]);
   }
   return sum / (4.0 * M_PI);

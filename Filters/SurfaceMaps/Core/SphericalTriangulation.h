@@ -18,7 +18,8 @@ double signedSphericalArea(const Eigen::Vector3d& a,
   const Eigen::Vector3d& c);
 
 /// Sum of the signed spherical areas divided by 4 pi: 1 for a bijective
-/// embedding of a closed surface, k for a k-fold cover. Not rounded.
+/// embedding of a closed surface, k for a k-fold cover. Not rounded; the last
+/// bits may differ between thread counts.
 double sphericalDegree(const std::vector<Eigen::Vector3d>& points,
   const std::vector<std::array<int, 3>>& triangles);
 
