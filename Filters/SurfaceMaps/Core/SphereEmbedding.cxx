@@ -484,6 +484,16 @@ SphereEmbeddingResult embedOnSphere(const PolygonMesh& mesh, const SphereEmbeddi
       continue;
     }
     result.distortion = embeddingDistortion(mesh.points, result.positions, hierarchy.triangles);
+    // The barrier-only attempt minimises no distortion: accept what it gives.
+    if (!(result.distortion <= options.maxDistortion) && attempts[a].distortionWeight > 0.0)
+    {
+      const std::string reason = "nearly degenerate triangles on the sphere (distortion " +
+        std::to_string(result.distortion) + ")";
+      reasons += (reasons.empty() ? "" : "; ") + ("attempt " + std::to_string(a + 1) + ": " + reason);
+      options.log(
+        Logger::Warning, "sphere embedding attempt " + std::to_string(a + 1) + ": " + reason);
+      continue;
+    }
     result.seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     if (options.progress)

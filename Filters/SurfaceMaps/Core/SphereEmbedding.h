@@ -33,6 +33,10 @@ struct SphereEmbeddingOptions
   double finalTolerance = 1e-5;
   /// Newton iterations on each inserted vertex's own two variables.
   int localIterations = 10;
+  /// An attempt whose final distortion exceeds this (some triangles nearly
+  /// collapsed on the sphere, useless for locating points later) counts as
+  /// failed, like an uncertified one, and the next attempt runs.
+  double maxDistortion = 1e4;
   /// Largest tangent step of one point per Newton step (tan 75 degrees).
   double maxPointStep = 3.7320508075688772;
   /// Called with the fraction done (0..1); return false to abort.
