@@ -131,11 +131,7 @@ int main(int argc, char* argv[])
   // from a point inside the sphere (a bijective, smoothly non-uniform map).
   const PolygonMesh mesh = makeIcosphere(4);
   const int n = static_cast<int>(mesh.points.size());
-  std::vector<std::array<int, 3>> triangles;
-  for (std::size_t f = 0; f < mesh.numberOfFaces(); ++f)
-  {
-    triangles.push_back({ mesh.face(f)[0], mesh.face(f)[1], mesh.face(f)[2] });
-  }
+  const std::vector<std::array<int, 3>> triangles = mesh.triangles();
   std::vector<Eigen::Vector3d> all = mesh.points;
   for (const Eigen::Vector3d& p : mesh.points)
   {

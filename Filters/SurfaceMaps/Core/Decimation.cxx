@@ -106,10 +106,7 @@ DecimationResult decimateToTetrahedron(const PolygonMesh& input, const Decimatio
 {
   Mesh mesh = toSurfaceMesh(input);
   DecimationResult result;
-  for (std::size_t f = 0; f < input.numberOfFaces(); ++f)
-  {
-    result.triangles.push_back({ input.face(f)[0], input.face(f)[1], input.face(f)[2] });
-  }
+  result.triangles = input.triangles();
 
   double totalArea = 0.0;
   for (const auto& t : result.triangles)

@@ -3,6 +3,7 @@
 
 #include <Eigen/Core>
 
+#include <array>
 #include <cstddef>
 #include <initializer_list>
 #include <vector>
@@ -28,6 +29,18 @@ struct PolygonMesh
   std::size_t numberOfFaces() const { return this->faceOffsets.size() - 1; }
   int faceSize(std::size_t f) const { return this->faceOffsets[f + 1] - this->faceOffsets[f]; }
   const int* face(std::size_t f) const { return this->faceVertices.data() + this->faceOffsets[f]; }
+
+  /// The faces as vertex triples; every face must be a triangle.
+  std::vector<std::array<int, 3>> triangles() const
+  {
+    std::vector<std::array<int, 3>> result(this->numberOfFaces());
+    for (std::size_t f = 0; f < result.size(); ++f)
+    {
+      const int* t = this->face(f);
+      result[f] = { t[0], t[1], t[2] };
+    }
+    return result;
+  }
 
   void addFace(std::initializer_list<int> vertices)
   {

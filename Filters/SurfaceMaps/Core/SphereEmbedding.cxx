@@ -489,7 +489,8 @@ SphereEmbeddingResult embedOnSphere(const PolygonMesh& mesh, const SphereEmbeddi
     {
       const std::string reason = "nearly degenerate triangles on the sphere (distortion " +
         std::to_string(result.distortion) + ")";
-      reasons += (reasons.empty() ? "" : "; ") + ("attempt " + std::to_string(a + 1) + ": " + reason);
+      reasons +=
+        (reasons.empty() ? "" : "; ") + ("attempt " + std::to_string(a + 1) + ": " + reason);
       options.log(
         Logger::Warning, "sphere embedding attempt " + std::to_string(a + 1) + ": " + reason);
       continue;

@@ -85,35 +85,35 @@ bool TextScanner::lineExhausted()
   return this->Line.empty();
 }
 
-bool parseDouble(std::string_view token, double& value)
+namespace
 {
+// The whole token must be the number; from_chars rejects a leading '+',
+// which some writers emit.
+template<typename T>
+bool parseNumber(std::string_view token, T& value)
+{
+  if (!token.empty() && token.front() == '+')
+  {
+    token.remove_prefix(1);
+  }
   if (token.empty())
   {
     return false;
   }
-  // from_chars rejects a leading '+', which some writers emit.
-  if (token.front() == '+')
-  {
-    token.remove_prefix(1);
-  }
   const char* end = token.data() + token.size();
-  auto result = std::from_chars(token.data(), end, value);
+  const auto result = std::from_chars(token.data(), end, value);
   return result.ec == std::errc() && result.ptr == end;
+}
+} // namespace
+
+bool parseDouble(std::string_view token, double& value)
+{
+  return parseNumber(token, value);
 }
 
 bool parseInt(std::string_view token, long long& value)
 {
-  if (token.empty())
-  {
-    return false;
-  }
-  if (token.front() == '+')
-  {
-    token.remove_prefix(1);
-  }
-  const char* end = token.data() + token.size();
-  auto result = std::from_chars(token.data(), end, value);
-  return result.ec == std::errc() && result.ptr == end;
+  return parseNumber(token, value);
 }
 
 } // namespace surfacemaps

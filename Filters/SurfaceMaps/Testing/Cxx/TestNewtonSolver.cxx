@@ -10,15 +10,6 @@ using namespace surfacemaps;
 
 namespace
 {
-std::vector<std::array<int, 3>> triangles(const PolygonMesh& m)
-{
-  std::vector<std::array<int, 3>> t;
-  for (std::size_t f = 0; f < m.numberOfFaces(); ++f)
-  {
-    t.push_back({ m.face(f)[0], m.face(f)[1], m.face(f)[2] });
-  }
-  return t;
-}
 
 // d / target - log d with d = det[a, b, c]: the log barrier of each chord
 // triangle plus a linear pull, smallest where the triangle has d = target;
@@ -59,7 +50,7 @@ struct Problem
       x += Eigen::Vector3d(u(rng), u(rng), u(rng));
     }
     this->points = SpherePoints(p);
-    const auto t = triangles(this->mesh);
+    const auto t = this->mesh.triangles();
     std::vector<double> targets;
     for (const auto& f : t)
     {
@@ -75,7 +66,7 @@ struct Problem
   {
     double worst = 0.0;
     const auto& q = this->mesh.points;
-    for (const auto& f : triangles(this->mesh))
+    for (const auto& f : this->mesh.triangles())
     {
       const auto& p = this->points;
       const double d = p.position(f[0]).dot(p.position(f[1]).cross(p.position(f[2])));
@@ -90,7 +81,7 @@ struct Problem
 TEST(NewtonSolver, EqualAreasUnderTheBarrier)
 {
   Problem problem(0.05);
-  ASSERT_TRUE(certifyBijective(problem.points.positions(), triangles(problem.mesh)).bijective)
+  ASSERT_TRUE(certifyBijective(problem.points.positions(), problem.mesh.triangles()).bijective)
     << "test setup: the perturbed start must be a valid embedding";
   const double errorBefore = problem.areaError();
   EXPECT_GT(errorBefore, 0.1);
@@ -103,7 +94,7 @@ TEST(NewtonSolver, EqualAreasUnderTheBarrier)
   options.callback = [&](int, const NewtonStepResult& step)
   {
     energies.push_back(step.energyAfter);
-    if (!certifyBijective(problem.points.positions(), triangles(problem.mesh)).bijective)
+    if (!certifyBijective(problem.points.positions(), problem.mesh.triangles()).bijective)
     {
       ++inversions;
     }

@@ -1,26 +1,21 @@
 #include "InputError.h"
 #include "ObjReader.h"
 
+#include "ExpectInputError.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
 
 using namespace surfacemaps;
+using namespace surfacemaps::testing;
 
 namespace
 {
 // Expects parseObj to throw an InputError whose message contains `part`.
 void expectObjError(const std::string& text, const std::string& part)
 {
-  try
-  {
-    parseObj(text, "mesh.obj");
-    FAIL() << "no error for: " << text;
-  }
-  catch (const InputError& e)
-  {
-    EXPECT_NE(std::string(e.what()).find(part), std::string::npos) << e.what();
-  }
+  expectInputError([&] { parseObj(text, "mesh.obj"); }, part);
 }
 } // namespace
 

@@ -15,15 +15,6 @@ using namespace surfacemaps::testing;
 
 namespace
 {
-std::vector<std::array<int, 3>> triangles(const PolygonMesh& m)
-{
-  std::vector<std::array<int, 3>> t;
-  for (std::size_t f = 0; f < m.numberOfFaces(); ++f)
-  {
-    t.push_back({ m.face(f)[0], m.face(f)[1], m.face(f)[2] });
-  }
-  return t;
-}
 
 // Squared deviation of each triangle's det from a target: pulls towards equal areas.
 struct EqualDetEnergy
@@ -128,10 +119,10 @@ TEST(Objective, GradientAndHessianMatchFiniteDifferences)
   points.setLocked(5, true);
   Objective objective;
   objective.addTerm(
-    std::make_shared<ElementTerm<3, BarrierEnergy>>("barrier", BarrierEnergy{ triangles(ico), 0 }),
+    std::make_shared<ElementTerm<3, BarrierEnergy>>("barrier", BarrierEnergy{ ico.triangles(), 0 }),
     0.1);
-  objective.addTerm(
-    std::make_shared<ElementTerm<3, EqualDetEnergy>>("area", EqualDetEnergy{ triangles(ico), 0.1 }),
+  objective.addTerm(std::make_shared<ElementTerm<3, EqualDetEnergy>>(
+                      "area", EqualDetEnergy{ ico.triangles(), 0.1 }),
     2.0);
 
   Eigen::VectorXd g;
@@ -157,7 +148,7 @@ TEST(Objective, ProjectedHessianIsPositiveDefinite)
   SpherePoints points = perturbedSphere(ico, 0.1, 3);
   Objective objective;
   objective.addTerm(std::make_shared<ElementTerm<3, EqualDetEnergy>>(
-    "area", EqualDetEnergy{ triangles(ico), 0.05 }));
+    "area", EqualDetEnergy{ ico.triangles(), 0.05 }));
   Eigen::VectorXd g;
   Eigen::SparseMatrix<double> H;
   objective.hessian(points, 1e-9, g, H);
@@ -177,8 +168,8 @@ TEST(Objective, InvalidElementMakesTheEnergyInfinite)
   p[0] = -p[0]; // folds the triangles around vertex 0
   SpherePoints points(p);
   Objective objective;
-  objective.addTerm(
-    std::make_shared<ElementTerm<3, BarrierEnergy>>("barrier", BarrierEnergy{ triangles(ico), 0 }));
+  objective.addTerm(std::make_shared<ElementTerm<3, BarrierEnergy>>(
+    "barrier", BarrierEnergy{ ico.triangles(), 0 }));
   EXPECT_EQ(objective.value(points), std::numeric_limits<double>::infinity());
   Eigen::VectorXd g;
   EXPECT_EQ(objective.gradient(points, g), std::numeric_limits<double>::infinity());
@@ -189,8 +180,8 @@ TEST(Objective, SameResultForAnyThreadCount)
   const PolygonMesh ico = makeIcosphere(3);
   SpherePoints points = perturbedSphere(ico, 0.01, 11);
   Objective objective;
-  objective.addTerm(
-    std::make_shared<ElementTerm<3, BarrierEnergy>>("barrier", BarrierEnergy{ triangles(ico), 0 }));
+  objective.addTerm(std::make_shared<ElementTerm<3, BarrierEnergy>>(
+    "barrier", BarrierEnergy{ ico.triangles(), 0 }));
   auto run = [&](int threads, Eigen::VectorXd& g, Eigen::SparseMatrix<double>& H)
   {
     omp_set_num_threads(threads);

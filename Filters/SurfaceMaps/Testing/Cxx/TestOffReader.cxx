@@ -1,23 +1,18 @@
 #include "InputError.h"
 #include "OffReader.h"
 
+#include "ExpectInputError.h"
+
 #include <gtest/gtest.h>
 
 using namespace surfacemaps;
+using namespace surfacemaps::testing;
 
 namespace
 {
 void expectOffError(const std::string& text, const std::string& part)
 {
-  try
-  {
-    parseOff(text, "mesh.off");
-    FAIL() << "no error for: " << text;
-  }
-  catch (const InputError& e)
-  {
-    EXPECT_NE(std::string(e.what()).find(part), std::string::npos) << e.what();
-  }
+  expectInputError([&] { parseOff(text, "mesh.off"); }, part);
 }
 const char* const Tetrahedron = "OFF\n# a comment\n4 4 6\n"
                                 "1 1 1\n1 -1 -1\n-1 1 -1\n-1 -1 1\n"

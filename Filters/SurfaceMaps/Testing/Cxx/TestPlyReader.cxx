@@ -1,26 +1,21 @@
 #include "InputError.h"
 #include "PlyReader.h"
 
+#include "ExpectInputError.h"
+
 #include <gtest/gtest.h>
 
 #include <cstdint>
 #include <cstring>
 
 using namespace surfacemaps;
+using namespace surfacemaps::testing;
 
 namespace
 {
 void expectPlyError(const std::string& bytes, const std::string& part)
 {
-  try
-  {
-    parsePly(bytes, "mesh.ply");
-    FAIL() << "no error";
-  }
-  catch (const InputError& e)
-  {
-    EXPECT_NE(std::string(e.what()).find(part), std::string::npos) << e.what();
-  }
+  expectInputError([&] { parsePly(bytes, "mesh.ply"); }, part);
 }
 
 template<typename T>

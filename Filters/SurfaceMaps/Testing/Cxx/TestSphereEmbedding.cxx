@@ -22,16 +22,6 @@ namespace
 {
 const std::string Data = SURFACEMAPS_DATA_DIR;
 
-std::vector<std::array<int, 3>> triangles(const PolygonMesh& m)
-{
-  std::vector<std::array<int, 3>> t;
-  for (std::size_t f = 0; f < m.numberOfFaces(); ++f)
-  {
-    t.push_back({ m.face(f)[0], m.face(f)[1], m.face(f)[2] });
-  }
-  return t;
-}
-
 PolygonMesh ellipsoid()
 {
   return readObj(Data + "/ellipsoid.obj");
@@ -80,7 +70,7 @@ TEST(EmbeddingEnergy, DerivativesMatchFiniteDifferences)
   }
   SpherePoints points(sphere);
   EmbeddingEnergy energy;
-  energy.triangles = triangles(mesh);
+  energy.triangles = mesh.triangles();
   energy.input = &mesh.points;
   energy.barrierWeight = 0.01;
   energy.inputArea = 2.0;
@@ -127,13 +117,13 @@ TEST(EmbeddingEnergy, DistortionIsOneForTheSphereItself)
 {
   // A fine icosphere is nearly its own chord mesh: distortion close to 1.
   const PolygonMesh ico = makeIcosphere(3);
-  EXPECT_NEAR(embeddingDistortion(ico.points, ico.points, triangles(ico)), 1.0, 1e-12);
+  EXPECT_NEAR(embeddingDistortion(ico.points, ico.points, ico.triangles()), 1.0, 1e-12);
   std::vector<Eigen::Vector3d> stretched = ico.points;
   for (auto& p : stretched)
   {
     p.x() *= 2.0;
   }
-  EXPECT_GT(embeddingDistortion(stretched, ico.points, triangles(ico)), 1.1);
+  EXPECT_GT(embeddingDistortion(stretched, ico.points, ico.triangles()), 1.1);
 }
 
 TEST(SphereEmbedding, CertifiedOnEveryDataMesh)
@@ -150,7 +140,7 @@ TEST(SphereEmbedding, CertifiedOnEveryDataMesh)
     const SphereEmbeddingResult r = embedOnSphere(mesh);
     ASSERT_EQ(r.positions.size(), mesh.points.size());
     // Certified independently of the embedding's own check.
-    const BijectivityCertificate c = certifyBijective(r.positions, triangles(mesh));
+    const BijectivityCertificate c = certifyBijective(r.positions, mesh.triangles());
     EXPECT_TRUE(c.bijective) << c.reason;
     EXPECT_NEAR(c.degree, 1.0, 1e-9);
     for (const auto& p : r.positions)

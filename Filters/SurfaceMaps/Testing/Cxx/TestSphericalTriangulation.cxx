@@ -11,15 +11,6 @@ using namespace surfacemaps;
 
 namespace
 {
-std::vector<std::array<int, 3>> triangles(const PolygonMesh& m)
-{
-  std::vector<std::array<int, 3>> t;
-  for (std::size_t f = 0; f < m.numberOfFaces(); ++f)
-  {
-    t.push_back({ m.face(f)[0], m.face(f)[1], m.face(f)[2] });
-  }
-  return t;
-}
 } // namespace
 
 TEST(Predicates, ExactSignsOnDegenerateInput)
@@ -65,13 +56,13 @@ TEST(SphericalTriangulation, AreasAndDegree)
   EXPECT_NEAR(signedSphericalArea(x, y, z), M_PI / 2, 1e-15); // an octant
   EXPECT_NEAR(signedSphericalArea(x, z, y), -M_PI / 2, 1e-15);
   const PolygonMesh ico = makeIcosphere(3);
-  EXPECT_NEAR(sphericalDegree(ico.points, triangles(ico)), 1.0, 1e-12);
+  EXPECT_NEAR(sphericalDegree(ico.points, ico.triangles()), 1.0, 1e-12);
 }
 
 TEST(SphericalTriangulation, CertifiesBijectiveEmbeddings)
 {
   const PolygonMesh ico = makeIcosphere(2);
-  const BijectivityCertificate ok = certifyBijective(ico.points, triangles(ico));
+  const BijectivityCertificate ok = certifyBijective(ico.points, ico.triangles());
   EXPECT_TRUE(ok.bijective) << ok.reason;
   EXPECT_EQ(ok.nonPositiveTriangles, 0);
 }
@@ -81,13 +72,13 @@ TEST(SphericalTriangulation, RejectsFoldsAndMultipleCovers)
   const PolygonMesh ico = makeIcosphere(2);
   std::vector<Eigen::Vector3d> folded = ico.points;
   folded[0] = -folded[0];
-  const BijectivityCertificate fold = certifyBijective(folded, triangles(ico));
+  const BijectivityCertificate fold = certifyBijective(folded, ico.triangles());
   EXPECT_FALSE(fold.bijective);
   EXPECT_GT(fold.nonPositiveTriangles, 0);
   EXPECT_NE(fold.reason.find("not positively oriented"), std::string::npos);
 
   // Every triangle listed twice: all positive, but the sphere is covered twice.
-  std::vector<std::array<int, 3>> twice = triangles(ico);
+  std::vector<std::array<int, 3>> twice = ico.triangles();
   const auto once = twice;
   twice.insert(twice.end(), once.begin(), once.end());
   const BijectivityCertificate cover = certifyBijective(ico.points, twice);
@@ -98,7 +89,7 @@ TEST(SphericalTriangulation, RejectsFoldsAndMultipleCovers)
 
   // A triangle exactly degenerate (two equal points) is not positive.
   std::vector<Eigen::Vector3d> collapsed = ico.points;
-  const auto t0 = triangles(ico)[0];
+  const auto t0 = ico.triangles()[0];
   collapsed[t0[1]] = collapsed[t0[0]];
-  EXPECT_FALSE(certifyBijective(collapsed, triangles(ico)).bijective);
+  EXPECT_FALSE(certifyBijective(collapsed, ico.triangles()).bijective);
 }
