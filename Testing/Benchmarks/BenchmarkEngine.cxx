@@ -2,7 +2,7 @@
 // throughput and one full projected-Newton iteration at the size of a typical
 // common triangulation. Prints a Markdown table.
 //
-//   build/bin/BenchmarkEngine [--threads N] [--repeat R]
+//   build/bin/BenchmarkEngine [--threads N] [--repeat R] [--nested-dissection]
 #include "BarrierEnergy.h"
 #include "NewtonSolver.h"
 #include "Objective.h"
@@ -110,6 +110,7 @@ int main(int argc, char* argv[])
 {
   int threads = omp_get_num_procs();
   int repeat = 10;
+  LinearSolver::Ordering ordering = LinearSolver::Ordering::Amd;
   for (int i = 1; i < argc; ++i)
   {
     if (!std::strcmp(argv[i], "--threads") && i + 1 < argc)
@@ -120,9 +121,13 @@ int main(int argc, char* argv[])
     {
       repeat = std::atoi(argv[++i]);
     }
+    else if (!std::strcmp(argv[i], "--nested-dissection"))
+    {
+      ordering = LinearSolver::Ordering::NestedDissection;
+    }
     else
     {
-      std::fprintf(stderr, "usage: BenchmarkEngine [--threads N] [--repeat R]\n");
+      std::fprintf(stderr, "usage: BenchmarkEngine [--threads N] [--repeat R] [--nested-dissection]\n");
       return 2;
     }
   }
@@ -204,7 +209,7 @@ int main(int argc, char* argv[])
   objective.addTerm(
     std::make_shared<ElementTerm<3, BarrierEnergy>>("barrier 1", BarrierEnergy{ triangles, n }),
     1e-3);
-  LinearSolver solver;
+  LinearSolver solver(ordering);
   NewtonOptions options;
   options.maxPointStep = std::tan(75.0 * M_PI / 180.0);
   NewtonStepResult first = newtonStep(objective, points, solver, options); // builds the pattern
