@@ -93,7 +93,7 @@ void ProgressBar::callback(vtkObject*, unsigned long, void* self, void*)
   bar->Shown = true;
 }
 
-vtkSmartPointer<vtkPolyData> readValidMesh(const std::string& path, const std::string& landmarks)
+vtkSmartPointer<vtkPolyData> readMesh(const std::string& path, const std::string& landmarks)
 {
   vtkNew<vtkSurfaceMeshReader> reader;
   ErrorCapture readErrors(reader);
@@ -109,7 +109,16 @@ vtkSmartPointer<vtkPolyData> readValidMesh(const std::string& path, const std::s
     return nullptr;
   }
   vtkSmartPointer<vtkPolyData> mesh = reader->GetOutput();
+  return mesh;
+}
 
+vtkSmartPointer<vtkPolyData> readValidMesh(const std::string& path, const std::string& landmarks)
+{
+  vtkSmartPointer<vtkPolyData> mesh = readMesh(path, landmarks);
+  if (!mesh)
+  {
+    return nullptr;
+  }
   vtkNew<vtkSurfaceMeshValidator> validator;
   validator->AddInputDataObject(mesh);
   validator->Update();

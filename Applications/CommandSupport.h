@@ -49,6 +49,10 @@ private:
   bool Shown = false;
 };
 
+/// Reads a mesh with vtkSurfaceMeshReader; on failure prints the reason and
+/// returns null.
+vtkSmartPointer<vtkPolyData> readMesh(const std::string& path, const std::string& landmarks = "");
+
 /// Reads a mesh (and optional landmark file) with vtkSurfaceMeshReader and
 /// validates it; on failure prints the reasons and returns null.
 vtkSmartPointer<vtkPolyData> readValidMesh(const std::string& path, const std::string& landmarks);

@@ -30,6 +30,10 @@ extern const char* const CheckHelp;
 int runEmbed(const std::vector<std::string>& args);
 extern const char* const EmbedHelp;
 
+/// `surfacemap evaluate SOURCE TARGET [--originals A B] [--output-dir DIR]`
+int runEvaluate(const std::vector<std::string>& args);
+extern const char* const EvaluateHelp;
+
 /// Prints "surfacemap: error: <message>" on stderr.
 void printError(const std::string& message);
 

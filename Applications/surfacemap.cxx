@@ -40,6 +40,10 @@ const Command Commands[] = {
     "bijective embedding of a mesh on the unit sphere",
     &surfacemap::runEmbed,
     &surfacemap::EmbedHelp },
+  { "evaluate",
+    "distortion and approximation error of a map between two meshes",
+    &surfacemap::runEvaluate,
+    &surfacemap::EvaluateHelp },
 };
 
 void printUsage(std::ostream& os)

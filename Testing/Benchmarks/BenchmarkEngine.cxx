@@ -127,7 +127,8 @@ int main(int argc, char* argv[])
     }
     else
     {
-      std::fprintf(stderr, "usage: BenchmarkEngine [--threads N] [--repeat R] [--nested-dissection]\n");
+      std::fprintf(
+        stderr, "usage: BenchmarkEngine [--threads N] [--repeat R] [--nested-dissection]\n");
       return 2;
     }
   }

@@ -15,8 +15,8 @@ namespace
 {
 
 // Mesh centred at its area-weighted centroid and scaled to unit total area.
-std::vector<Eigen::Vector3d> normalised(
-  const std::vector<Eigen::Vector3d>& x, const std::vector<std::array<int, 3>>& triangles)
+std::vector<Eigen::Vector3d> normalised(const std::vector<Eigen::Vector3d>& x,
+  const std::vector<std::array<int, 3>>& triangles)
 {
   double area = 0.0;
   Eigen::Vector3d centroid = Eigen::Vector3d::Zero();
@@ -67,7 +67,8 @@ Eigen::Vector2d singularValues2x2(const Eigen::Matrix2d& J)
 }
 
 MapMetrics measureMap(const std::vector<Eigen::Vector3d>& Pin,
-  const std::vector<Eigen::Vector3d>& Qin, const std::vector<std::array<int, 3>>& triangles,
+  const std::vector<Eigen::Vector3d>& Qin,
+  const std::vector<std::array<int, 3>>& triangles,
   const MapMetricsOptions& options)
 {
   const std::vector<Eigen::Vector3d> P = normalised(Pin, triangles);

@@ -42,8 +42,10 @@ struct MapMetrics
   std::vector<double> cumulativeCurve(const std::vector<double>& thresholds) const;
 };
 
-MapMetrics measureMap(const std::vector<Eigen::Vector3d>& P, const std::vector<Eigen::Vector3d>& Q,
-  const std::vector<std::array<int, 3>>& triangles, const MapMetricsOptions& options = MapMetricsOptions());
+MapMetrics measureMap(const std::vector<Eigen::Vector3d>& P,
+  const std::vector<Eigen::Vector3d>& Q,
+  const std::vector<std::array<int, 3>>& triangles,
+  const MapMetricsOptions& options = MapMetricsOptions());
 
 /// Singular values (s1 >= s2 >= 0) of a 2x2 matrix, in closed form.
 Eigen::Vector2d singularValues2x2(const Eigen::Matrix2d& J);

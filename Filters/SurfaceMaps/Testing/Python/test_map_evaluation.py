@@ -1,0 +1,106 @@
+"""vtkSurfaceMapEvaluation: metrics of DESIGN.md section 6 from a VTK pipeline."""
+
+import os
+
+import numpy as np
+import pytest
+
+import surfacemaps
+from vtkmodules.vtkCommonCore import vtkCommand
+from vtkmodules.vtkCommonDataModel import vtkPolyData
+from vtkmodules.util.numpy_support import numpy_to_vtk, vtk_to_numpy
+
+DATA = os.environ.get("SURFACEMAPS_DATA", os.path.join(os.path.dirname(__file__), "..", "..", "..", "..", "Data"))
+
+
+def data(name):
+    return os.path.join(DATA, name)
+
+
+def with_points(mesh, points):
+    copy = vtkPolyData()
+    copy.DeepCopy(mesh)
+    copy.GetPoints().SetData(numpy_to_vtk(np.ascontiguousarray(points), deep=True))
+    return copy
+
+
+def evaluate(source, target, *originals):
+    e = surfacemaps.vtkSurfaceMapEvaluation()
+    errors = []
+    e.AddObserver(vtkCommand.ErrorEvent, lambda o, ev, text=None: errors.append(ev))
+    e.SetInputData(0, source)
+    e.SetInputData(1, target)
+    for k, o in enumerate(originals):
+        e.SetInputData(2 + k, o)
+    e.Update()
+    return e, errors
+
+
+def test_identity_and_known_stretch():
+    mesh = surfacemaps.read_mesh(data("ellipsoid.obj"))
+    e, errors = evaluate(mesh, mesh)
+    assert not errors
+    assert e.GetSummaryValue("SymmetricDirichlet") == pytest.approx(1.0, abs=1e-12)
+    assert e.GetSummaryValue("MaxDistortion") == pytest.approx(1.0, abs=1e-9)
+    assert e.GetSummaryValue("AreaBelow1.5") == 1.0
+    p = vtk_to_numpy(mesh.GetPoints().GetData()).copy()
+    stretched = with_points(mesh, p * np.array([2.0, 1.0, 1.0]))
+    e, _ = evaluate(mesh, stretched)
+    assert e.GetSummaryValue("SymmetricDirichlet") > 1.01
+    d = vtk_to_numpy(e.GetOutput().GetCellData().GetArray("Distortion"))
+    assert d.shape == (1280,) and (d >= 1.0 - 1e-12).all()
+    curve = vtk_to_numpy(e.GetOutput().GetFieldData().GetArray("DistortionCurve"))
+    assert curve.shape == (201, 2) and (np.diff(curve[:, 1]) >= 0).all() and curve[-1, 1] <= 1.0
+
+
+def test_independent_numpy_computation():
+    # Symmetric Dirichlet of DESIGN.md section 6 with numpy SVDs, on a smooth deformation.
+    mesh = surfacemaps.read_mesh(data("blob.off"))
+    p = vtk_to_numpy(mesh.GetPoints().GetData()).copy()
+    q = np.column_stack([p[:, 0] * (1 + 0.3 * p[:, 2]), 0.7 * p[:, 1] + 0.2 * p[:, 0] ** 2,
+                         p[:, 2] + 0.25 * np.sin(3 * p[:, 0])])
+    e, _ = evaluate(mesh, with_points(mesh, q))
+    tri = vtk_to_numpy(mesh.GetPolys().GetConnectivityArray()).reshape(-1, 3)
+
+    def unit(x):
+        a = 0.5 * np.linalg.norm(np.cross(x[tri[:, 1]] - x[tri[:, 0]], x[tri[:, 2]] - x[tri[:, 0]]), axis=1)
+        c = (a[:, None] * x[tri].mean(axis=1)).sum(axis=0) / a.sum()
+        return (x - c) / np.sqrt(a.sum())
+
+    P, Q = unit(p), unit(q)
+    EP = np.stack([P[tri[:, 1]] - P[tri[:, 0]], P[tri[:, 2]] - P[tri[:, 0]]], axis=2)
+    EQ = np.stack([Q[tri[:, 1]] - Q[tri[:, 0]], Q[tri[:, 2]] - Q[tri[:, 0]]], axis=2)
+    J = EQ @ np.linalg.pinv(EP)
+    s = np.linalg.svd(J, compute_uv=False)[:, :2]
+    aP = 0.5 * np.linalg.norm(np.cross(EP[:, :, 0], EP[:, :, 1]), axis=1)
+    aQ = 0.5 * np.linalg.norm(np.cross(EQ[:, :, 0], EQ[:, :, 1]), axis=1)
+    sd = 0.25 * (aQ * (s ** 2).sum(axis=1) + aP * (s ** -2).sum(axis=1)).sum()
+    assert e.GetSummaryValue("SymmetricDirichlet") == pytest.approx(sd, rel=1e-3)
+    assert e.GetSummaryValue("MaxDistortion") == pytest.approx(np.maximum(s[:, 0], 1 / s[:, 1]).max(), rel=1e-9)
+
+
+def test_embedding_distortion_agrees_and_certificate():
+    mesh = surfacemaps.read_mesh(data("ellipsoid.obj"))
+    embed = surfacemaps.vtkSphereEmbeddingFilter()
+    embed.SetInputData(mesh)
+    embed.Update()
+    embedded = embed.GetOutput()
+    on_sphere = with_points(embedded, vtk_to_numpy(embedded.GetPointData().GetArray("SpherePosition")))
+    e, _ = evaluate(embedded, on_sphere, mesh)
+    assert e.GetSummaryValue("SymmetricDirichlet") == pytest.approx(
+        embedded.GetFieldData().GetArray("EmbeddingDistortion").GetValue(0), rel=1e-12)
+    assert e.GetSummaryValue("Bijective") == 1.0
+    assert e.GetSummaryValue("HausdorffSource") == pytest.approx(0.0, abs=1e-12)
+
+
+def test_degenerate_and_mismatched():
+    mesh = surfacemaps.read_mesh(data("ellipsoid.obj"))
+    p = vtk_to_numpy(mesh.GetPoints().GetData()).copy()
+    tri = vtk_to_numpy(mesh.GetPolys().GetConnectivityArray()).reshape(-1, 3)
+    p[tri[0, 1]] = p[tri[0, 0]]
+    e, errors = evaluate(mesh, with_points(mesh, p))
+    assert not errors
+    assert e.GetSummaryValue("DegenerateTriangles") > 0
+    assert np.isinf(e.GetSummaryValue("MaxDistortion"))
+    e, errors = evaluate(mesh, surfacemaps.read_mesh(data("limbs.ply")))
+    assert errors and e.GetOutput().GetNumberOfPoints() == 0

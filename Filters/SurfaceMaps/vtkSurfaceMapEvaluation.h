@@ -1,0 +1,79 @@
+/**
+ * @class   vtkSurfaceMapEvaluation
+ * @brief   Distortion, approximation error and validity of a map between two meshes.
+ *
+ * Measures the piecewise linear map between two meshes of identical
+ * connectivity, source P (input port 0) and target Q (input port 1), the way
+ * SurfaceMaps reports every map (DESIGN.md section 6, after "Surface Maps via
+ * Adaptive Triangulations", Schmidt, Pieper, Kobbelt, Eurographics 2023): both
+ * meshes centred and scaled to unit area, per triangle the singular values
+ * s1 >= s2 of the Jacobian between the two triangles in their own frames.
+ *
+ * Optional ports 2 and 3: the original surfaces that P and Q approximate. With
+ * them the Hausdorff figure H (largest distance from an original vertex to the
+ * approximating mesh, closest point, in percent of the original's bounding box
+ * diagonal) is reported per side.
+ *
+ * Output: the source mesh with cell data "SingularValueMax", "SingularValueMin",
+ * "Distortion" (max(s1, 1/s2)), "AreaSource", "AreaTarget" (unit-area areas), and
+ * field data "SymmetricDirichlet" (1/4 sum area_Q (s1^2+s2^2) + area_P
+ * (s1^-2+s2^-2); 1 for an isometry), "AreaBelow1.5", "AreaBelow2" (area fraction
+ * of the source with distortion below 1.5 and 2), "MaxDistortion",
+ * "DegenerateTriangles", "DistortionCurve" (201 pairs: distortion from 1 to 3,
+ * area fraction of the source below it), "MinAngleSource", "MeanMinAngleSource",
+ * "MinAngleTarget", "MeanMinAngleTarget" (degrees), "HausdorffSource",
+ * "HausdorffTarget" (percent, when the originals are given), and, when both
+ * meshes carry "SpherePosition", "Bijective" (1 if both embeddings are
+ * certified with exact predicates) with "NonPositiveTriangles".
+ *
+ * Meshes whose connectivity differs are an error (the message says where);
+ * the output is then empty.
+ *
+ * @warning Linear in the mesh size except the Hausdorff figure, which builds a
+ * cell locator per side (n log n). Single-threaded.
+ *
+ * @sa vtkSphereEmbeddingFilter vtkSurfaceMeshValidator
+ */
+#ifndef vtkSurfaceMapEvaluation_h
+#define vtkSurfaceMapEvaluation_h
+
+#include "SurfaceMapsFiltersModule.h" // for export macro
+#include "vtkPolyDataAlgorithm.h"
+
+class SURFACEMAPSFILTERS_EXPORT vtkSurfaceMapEvaluation : public vtkPolyDataAlgorithm
+{
+public:
+  static vtkSurfaceMapEvaluation* New();
+  vtkTypeMacro(vtkSurfaceMapEvaluation, vtkPolyDataAlgorithm);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  ///@{
+  /** Convenience: source (port 0), target (1), originals (2, 3; optional). */
+  void SetSourceConnection(vtkAlgorithmOutput* output) { this->SetInputConnection(0, output); }
+  void SetTargetConnection(vtkAlgorithmOutput* output) { this->SetInputConnection(1, output); }
+  void SetSourceOriginalConnection(vtkAlgorithmOutput* output)
+  {
+    this->SetInputConnection(2, output);
+  }
+  void SetTargetOriginalConnection(vtkAlgorithmOutput* output)
+  {
+    this->SetInputConnection(3, output);
+  }
+  ///@}
+
+  /** The summary figures of the last update, by field-data name (NaN if absent). */
+  double GetSummaryValue(const char* name);
+
+protected:
+  vtkSurfaceMapEvaluation();
+  ~vtkSurfaceMapEvaluation() override = default;
+
+  int FillInputPortInformation(int port, vtkInformation* info) override;
+  int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+
+private:
+  vtkSurfaceMapEvaluation(const vtkSurfaceMapEvaluation&) = delete;
+  void operator=(const vtkSurfaceMapEvaluation&) = delete;
+};
+
+#endif
