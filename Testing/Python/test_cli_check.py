@@ -1,21 +1,10 @@
 """`surfacemap check`: every good mesh accepted, every bad input rejected with its message."""
 
 import os
-import subprocess
 
 import pytest
 
-CLI = os.environ["SURFACEMAPS_CLI"]
-DATA = os.environ["SURFACEMAPS_DATA"]
-SHARED = os.environ.get("SURFACEMAPS_SHARED_DATA", "")
-
-
-def run(*args):
-    return subprocess.run([CLI, *args], capture_output=True, text=True, timeout=120)
-
-
-def data(name):
-    return os.path.join(DATA, name)
+from cli import SHARED, data, run
 
 
 GOOD = ["ellipsoid.obj", "ellipsoid_coarse.stl", "blob.off", "blob.vtp", "limbs.ply",

@@ -3,18 +3,8 @@
 import math
 import os
 import re
-import subprocess
 
-CLI = os.environ["SURFACEMAPS_CLI"]
-DATA = os.environ["SURFACEMAPS_DATA"]
-
-
-def run(*args):
-    return subprocess.run([CLI, *args], capture_output=True, text=True, timeout=300)
-
-
-def data(name):
-    return os.path.join(DATA, name)
+from cli import data, run
 
 
 def test_embed_writes_a_valid_mesh_with_sphere_positions(tmp_path):

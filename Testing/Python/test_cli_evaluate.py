@@ -2,19 +2,8 @@
 
 import csv
 import json
-import os
-import subprocess
 
-CLI = os.environ["SURFACEMAPS_CLI"]
-DATA = os.environ["SURFACEMAPS_DATA"]
-
-
-def run(*args):
-    return subprocess.run([CLI, *args], capture_output=True, text=True, timeout=300)
-
-
-def data(name):
-    return os.path.join(DATA, name)
+from cli import data, run
 
 
 def test_evaluate_writes_summary_and_tables(tmp_path):

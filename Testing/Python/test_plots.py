@@ -1,16 +1,13 @@
 """Distortion curve plots from `surfacemap evaluate` output."""
 
-import os
 import subprocess
 import sys
 
-CLI = os.environ["SURFACEMAPS_CLI"]
-DATA = os.environ["SURFACEMAPS_DATA"]
+from cli import data, run
 
 
 def evaluate(a, b, out):
-    r = subprocess.run([CLI, "evaluate", os.path.join(DATA, a), os.path.join(DATA, b), "--output-dir", str(out)],
-                       capture_output=True, text=True, timeout=120)
+    r = run("evaluate", data(a), data(b), "--output-dir", out)
     assert r.returncode == 0, r.stderr
     return out / "distortion_curve.csv"
 

@@ -1,0 +1,18 @@
+"""Shared helpers of the end-to-end tests: run the CLI, find the bundled data."""
+
+import os
+import subprocess
+
+CLI = os.environ["SURFACEMAPS_CLI"]
+DATA = os.environ["SURFACEMAPS_DATA"]
+SHARED = os.environ.get("SURFACEMAPS_SHARED_DATA", "")
+
+
+def run(*args, timeout=300):
+    """Runs `surfacemap ARGS...`; returns the CompletedProcess (text output)."""
+    return subprocess.run([CLI, *map(str, args)], capture_output=True, text=True, timeout=timeout)
+
+
+def data(name):
+    """Path of a file in Data/."""
+    return os.path.join(DATA, name)
