@@ -162,6 +162,8 @@ int runEvaluate(const std::vector<std::string>& args)
     "MeanMinAngleTarget",
     "HausdorffSource",
     "HausdorffTarget",
+    "TwoSidedDistanceSource",
+    "TwoSidedDistanceTarget",
     "Bijective",
     "NonPositiveTriangles" };
   for (const char* name : summary)

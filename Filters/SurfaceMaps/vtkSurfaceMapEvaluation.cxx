@@ -67,26 +67,78 @@ std::vector<Eigen::Vector3d> spherePositions(vtkPolyData* mesh)
   return positions;
 }
 
-// Largest distance from a vertex of `original` to the surface `approximation`,
-// in percent of the original's bounding-box diagonal.
-double hausdorffPercent(vtkPolyData* original, vtkPolyData* approximation)
+// Closest-point distances to a surface.
+class SurfaceDistance
 {
-  vtkNew<vtkStaticCellLocator> locator;
-  locator->SetDataSet(approximation);
-  locator->BuildLocator();
-  vtkNew<vtkGenericCell> cell;
+public:
+  explicit SurfaceDistance(vtkPolyData* surface)
+  {
+    this->Locator->SetDataSet(surface);
+    this->Locator->BuildLocator();
+  }
+  double operator()(const double p[3])
+  {
+    double closest[3], distance2;
+    vtkIdType cellId;
+    int subId;
+    this->Locator->FindClosestPoint(p, closest, this->Cell, cellId, subId, distance2);
+    return std::sqrt(distance2);
+  }
+
+private:
+  vtkNew<vtkStaticCellLocator> Locator;
+  vtkNew<vtkGenericCell> Cell;
+};
+
+// Largest distance from a vertex of `original` to the surface `approximation`.
+double largestVertexDistance(vtkPolyData* original, vtkPolyData* approximation)
+{
+  SurfaceDistance distance(approximation);
   double largest = 0.0;
   for (vtkIdType i = 0; i < original->GetNumberOfPoints(); ++i)
   {
-    double p[3], closest[3], distance2;
-    vtkIdType cellId;
-    int subId;
+    double p[3];
     original->GetPoint(i, p);
-    locator->FindClosestPoint(p, closest, cell, cellId, subId, distance2);
-    largest = std::max(largest, std::sqrt(distance2));
+    largest = std::max(largest, distance(p));
   }
-  const double diagonal = original->GetLength();
-  return diagonal > 0.0 ? 100.0 * largest / diagonal : 0.0;
+  return largest;
+}
+
+// Largest distance from points sampled inside the triangles of `from` (their
+// vertices, edge midpoints and centroids) to the surface `to`.
+double largestSampledDistance(vtkPolyData* from, vtkPolyData* to)
+{
+  SurfaceDistance distance(to);
+  const surfacemaps::PolygonMesh mesh = vtkSurfaceMapsConversion::ToPolygonMesh(from);
+  double largest = 0.0;
+  const double weights[7][3] = { { 1, 0, 0 },
+    { 0, 1, 0 },
+    { 0, 0, 1 },
+    { 0.5, 0.5, 0 },
+    { 0, 0.5, 0.5 },
+    { 0.5, 0, 0.5 },
+    { 1 / 3.0, 1 / 3.0, 1 / 3.0 } };
+  for (std::size_t f = 0; f < mesh.numberOfFaces(); ++f)
+  {
+    if (mesh.faceSize(f) != 3)
+    {
+      continue;
+    }
+    const int* t = mesh.face(f);
+    for (const auto& w : weights)
+    {
+      const Eigen::Vector3d p =
+        w[0] * mesh.points[t[0]] + w[1] * mesh.points[t[1]] + w[2] * mesh.points[t[2]];
+      largest = std::max(largest, distance(p.data()));
+    }
+  }
+  return largest;
+}
+
+double percentOfDiagonal(double distance, vtkPolyData* reference)
+{
+  const double diagonal = reference->GetLength();
+  return diagonal > 0.0 ? 100.0 * distance / diagonal : 0.0;
 }
 
 } // namespace
@@ -197,13 +249,22 @@ int vtkSurfaceMapEvaluation::RequestData(vtkInformation*,
     addField(output, "MeanMinAngleSource", sourceStats.meanMinAngle);
     addField(output, "MinAngleTarget", targetStats.minAngle);
     addField(output, "MeanMinAngleTarget", targetStats.meanMinAngle);
-    if (sourceOriginal)
+    const char* sides[2][3] = { { "HausdorffSource", "TwoSidedDistanceSource", nullptr },
+      { "HausdorffTarget", "TwoSidedDistanceTarget", nullptr } };
+    vtkPolyData* approximations[2] = { source, target };
+    vtkPolyData* originals[2] = { sourceOriginal, targetOriginal };
+    for (int k = 0; k < 2; ++k)
     {
-      addField(output, "HausdorffSource", hausdorffPercent(sourceOriginal, source));
-    }
-    if (targetOriginal)
-    {
-      addField(output, "HausdorffTarget", hausdorffPercent(targetOriginal, target));
+      if (!originals[k])
+      {
+        continue;
+      }
+      addField(output,
+        sides[k][0],
+        percentOfDiagonal(largestVertexDistance(originals[k], approximations[k]), originals[k]));
+      const double twoSided = std::max(largestSampledDistance(originals[k], approximations[k]),
+        largestSampledDistance(approximations[k], originals[k]));
+      addField(output, sides[k][1], percentOfDiagonal(twoSided, originals[k]));
     }
     const auto sphereP = spherePositions(source);
     const auto sphereQ = spherePositions(target);

@@ -12,7 +12,9 @@
  * Optional ports 2 and 3: the original surfaces that P and Q approximate. With
  * them the Hausdorff figure H (largest distance from an original vertex to the
  * approximating mesh, closest point, in percent of the original's bounding box
- * diagonal) is reported per side.
+ * diagonal) is reported per side, and a two-sided distance: the larger of the
+ * largest distances from points sampled in each mesh's triangles (vertices,
+ * edge midpoints, centroids) to the other mesh, in the same unit.
  *
  * Output: the source mesh with cell data "SingularValueMax", "SingularValueMin",
  * "Distortion" (max(s1, 1/s2)), "AreaSource", "AreaTarget" (unit-area areas), and
@@ -22,7 +24,8 @@
  * "DegenerateTriangles", "DistortionCurve" (201 pairs: distortion from 1 to 3,
  * area fraction of the source below it), "MinAngleSource", "MeanMinAngleSource",
  * "MinAngleTarget", "MeanMinAngleTarget" (degrees), "HausdorffSource",
- * "HausdorffTarget" (percent, when the originals are given), and, when both
+ * "HausdorffTarget", "TwoSidedDistanceSource", "TwoSidedDistanceTarget"
+ * (percent, when the originals are given), and, when both
  * meshes carry "SpherePosition", "Bijective" (1 if both embeddings are
  * certified with exact predicates) with "NonPositiveTriangles".
  *

@@ -104,3 +104,38 @@ def test_degenerate_and_mismatched():
     assert np.isinf(e.GetSummaryValue("MaxDistortion"))
     e, errors = evaluate(mesh, surfacemaps.read_mesh(data("limbs.ply")))
     assert errors and e.GetOutput().GetNumberOfPoints() == 0
+
+
+def test_inverted_triangle_is_reported():
+    # A fold in one sphere embedding: the certificate fails and says how many triangles.
+    mesh = surfacemaps.read_mesh(data("ellipsoid.obj"))
+    embed = surfacemaps.vtkSphereEmbeddingFilter()
+    embed.SetInputData(mesh)
+    embed.Update()
+    good = embed.GetOutput()
+    folded = vtkPolyData()
+    folded.DeepCopy(good)
+    s = vtk_to_numpy(folded.GetPointData().GetArray("SpherePosition"))
+    s[0] = -s[0]  # vertex 0 to the antipode: its triangles turn over
+    folded.GetPointData().GetArray("SpherePosition").Modified()
+    e, errors = evaluate(good, folded)
+    assert not errors
+    assert e.GetSummaryValue("Bijective") == 0.0
+    assert e.GetSummaryValue("NonPositiveTriangles") >= 5
+    e, _ = evaluate(good, good)
+    assert e.GetSummaryValue("Bijective") == 1.0
+    assert e.GetSummaryValue("NonPositiveTriangles") == 0.0
+
+
+def test_distances_to_the_originals():
+    # The icosphere-like ellipsoid against a coarser ellipsoid of the same
+    # shape: both distances are small, positive, and the two-sided one >= H.
+    fine = surfacemaps.read_mesh(data("ellipsoid.obj"))
+    coarse = surfacemaps.read_mesh(data("ellipsoid_coarse.stl"))
+    e, _ = evaluate(fine, fine, coarse, fine)
+    h = e.GetSummaryValue("HausdorffSource")
+    two = e.GetSummaryValue("TwoSidedDistanceSource")
+    assert 0.0 < h < 5.0
+    assert two >= h
+    assert e.GetSummaryValue("HausdorffTarget") == pytest.approx(0.0, abs=1e-12)
+    assert e.GetSummaryValue("TwoSidedDistanceTarget") == pytest.approx(0.0, abs=1e-9)
