@@ -54,7 +54,8 @@ int main(int argc, char* argv[])
   }
   std::printf(
     "| mesh | vertices | time (s) | peak RSS (MB) | certified | attempt | SD distortion | "
-    "levels | Newton iterations |\n|---|---|---|---|---|---|---|---|---|\n");
+    "levels | Newton iterations | decimation / placement / derivatives / solve / line search "
+    "(s) |\n|---|---|---|---|---|---|---|---|---|---|\n");
   double total = 0.0;
   for (int i = 1; i < argc; ++i)
   {
