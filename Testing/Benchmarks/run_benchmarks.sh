@@ -31,6 +31,24 @@ bin=build/bin
     "$bin/BenchmarkEmbedding" "$shared/shrec/61.off" "$shared/shrec/248.off" \
       "$shared/hand/hand_plain.obj" "$shared/hand/hand_vulcan.obj"
   fi
+  # Pictures for the README: the deformation pair ellipsoid -> blob (same
+  # connectivity). They replace the pair 61 <-> 248 once the map exists.
+  pictures=Testing/Benchmarks/images
+  work=build/benchmarks/deformation
+  mkdir -p "$pictures" "$work"
+  echo
+  echo "## Deformation pair Data/ellipsoid.obj -> Data/blob.off"
+  echo
+  echo '```'
+  "$bin/surfacemap" evaluate Data/ellipsoid.obj Data/blob.off --output-dir "$work"
+  echo '```'
+  export PYTHONPATH="$PWD/build/lib/python3/dist-packages${PYTHONPATH:+:$PYTHONPATH}"
+  xvfb=""
+  [ -n "${DISPLAY:-}" ] || xvfb="xvfb-run -a"
+  /usr/bin/python3 -m surfacemaps.plots "$work/distortion_curve.csv" --labels "ellipsoid -> blob" \
+    -o "$pictures/deformation_curve.png"
+  $xvfb /usr/bin/python3 -m surfacemaps.render "$work/evaluated.vtp" --max 2 \
+    -o "$pictures/deformation_distortion.png"
 } > "$report.tmp"
 mv "$report.tmp" "$report"
-echo "benchmark report written to $report"
+echo "benchmark report written to $report; pictures in Testing/Benchmarks/images"

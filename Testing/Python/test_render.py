@@ -1,0 +1,44 @@
+"""Pictures: distortion heat map and checkerboard, rendered offscreen (under xvfb-run)."""
+
+import subprocess
+import sys
+
+from cli import data, run
+
+PNG = b"\x89PNG\r\n\x1a\n"
+
+
+def render(*args):
+    return subprocess.run([sys.executable, "-m", "surfacemaps.render", *map(str, args)],
+                          capture_output=True, text=True, timeout=120)
+
+
+def distinct_colours(path):
+    from vtkmodules.vtkIOImage import vtkPNGReader
+    from vtkmodules.util.numpy_support import vtk_to_numpy
+    import numpy as np
+    reader = vtkPNGReader()
+    reader.SetFileName(str(path))
+    reader.Update()
+    pixels = vtk_to_numpy(reader.GetOutput().GetPointData().GetScalars())
+    return len(np.unique(pixels[:, :3], axis=0))
+
+
+def test_distortion_and_checkerboard_pictures(tmp_path):
+    assert run("embed", data("ellipsoid.obj"), "-o", tmp_path / "e.vtp").returncode == 0
+    assert run("embed", data("ellipsoid.obj"), "--on-sphere", "-o", tmp_path / "s.vtp").returncode == 0
+    r = run("evaluate", tmp_path / "e.vtp", tmp_path / "s.vtp", "--output-dir", tmp_path)
+    assert r.returncode == 0, r.stderr
+    r = render(tmp_path / "evaluated.vtp", "-o", tmp_path / "distortion.png")
+    assert r.returncode == 0, r.stderr
+    r = render(tmp_path / "e.vtp", "--checkerboard", "-o", tmp_path / "checker.png")
+    assert r.returncode == 0, r.stderr
+    for name in ("distortion.png", "checker.png"):
+        assert (tmp_path / name).read_bytes()[:8] == PNG
+        assert distinct_colours(tmp_path / name) > 20, f"{name} looks empty"
+
+
+def test_missing_array_is_an_error(tmp_path):
+    r = render(data("ellipsoid.obj"), "-o", tmp_path / "x.png")
+    assert r.returncode == 2 and "no Distortion cell array" in r.stderr
+    assert not (tmp_path / "x.png").exists()

@@ -1,0 +1,140 @@
+"""Pictures of SurfaceMaps results: offscreen VTK rendering to PNG.
+
+``render_distortion(mesh, path)`` colours a mesh by its per-triangle
+"Distortion" cell array (from vtkSurfaceMapEvaluation): 1 (no distortion) is
+white, ``max_value`` and above dark red. ``render_checkerboard(mesh, path)``
+draws a checkerboard of the mesh's "SpherePosition" (or given) coordinates,
+so a map's effect on a regular pattern can be seen on any surface that
+carries the same coordinates.
+
+Rendering needs a display; on a headless machine run the script under
+``xvfb-run -a`` (Debian package xvfb, installed by .ci/install-deps.sh).
+
+From the command line::
+
+    xvfb-run -a /usr/bin/python3 -m surfacemaps.render evaluated.vtp -o distortion.png
+"""
+
+import argparse
+import os
+import sys
+
+import vtkmodules.vtkRenderingOpenGL2  # noqa: F401  (the OpenGL back end)
+from vtkmodules.vtkCommonCore import vtkLookupTable, vtkDoubleArray
+from vtkmodules.vtkIOImage import vtkPNGWriter
+from vtkmodules.vtkRenderingCore import (vtkActor, vtkPolyDataMapper, vtkRenderer, vtkRenderWindow,
+                                         vtkWindowToImageFilter)
+
+
+def _render(mesh, path, configure_mapper, size=(800, 600), azimuth=30.0, elevation=20.0):
+    mapper = vtkPolyDataMapper()
+    mapper.SetInputData(mesh)
+    configure_mapper(mapper)
+    actor = vtkActor()
+    actor.SetMapper(mapper)
+    renderer = vtkRenderer()
+    renderer.AddActor(actor)
+    renderer.SetBackground(1.0, 1.0, 1.0)
+    renderer.ResetCamera()
+    camera = renderer.GetActiveCamera()
+    camera.Azimuth(azimuth)
+    camera.Elevation(elevation)
+    renderer.ResetCameraClippingRange()
+    window = vtkRenderWindow()
+    window.SetOffScreenRendering(1)
+    window.AddRenderer(renderer)
+    window.SetSize(*size)
+    window.Render()
+    grab = vtkWindowToImageFilter()
+    grab.SetInput(window)
+    grab.Update()
+    writer = vtkPNGWriter()
+    temporary = path + ".tmp.png"
+    writer.SetFileName(temporary)
+    writer.SetInputConnection(grab.GetOutputPort())
+    writer.Write()
+    window.Finalize()
+    os.replace(temporary, path)
+
+
+def render_distortion(mesh, path, max_value=3.0, **view):
+    """PNG of `mesh` coloured by its "Distortion" cell array (1 white -> max_value red)."""
+    if mesh.GetCellData().GetArray("Distortion") is None:
+        raise ValueError("the mesh has no Distortion cell array (run vtkSurfaceMapEvaluation first)")
+    table = vtkLookupTable()
+    table.SetNumberOfTableValues(256)
+    for i in range(256):
+        t = i / 255.0
+        table.SetTableValue(i, 1.0, 1.0 - 0.8 * t, 1.0 - 0.9 * t, 1.0)
+    table.SetRange(1.0, max_value)
+    table.SetAboveRangeColor(0.5, 0.0, 0.0, 1.0)
+    table.UseAboveRangeColorOn()
+    table.Build()
+
+    def configure(mapper):
+        mapper.SetScalarModeToUseCellFieldData()
+        mapper.SelectColorArray("Distortion")
+        mapper.SetLookupTable(table)
+        mapper.UseLookupTableScalarRangeOn()
+        mapper.ScalarVisibilityOn()
+
+    _render(mesh, path, configure, **view)
+
+
+def render_checkerboard(mesh, path, coordinates="SpherePosition", squares=8, **view):
+    """PNG of `mesh` with a checkerboard of a 3-component point array (default SpherePosition)."""
+    array = mesh.GetPointData().GetArray(coordinates)
+    if array is None or array.GetNumberOfComponents() != 3:
+        raise ValueError(f"the mesh has no 3-component point array {coordinates!r}")
+    checks = vtkDoubleArray()
+    checks.SetName("Checkerboard")
+    for i in range(array.GetNumberOfTuples()):
+        x, y, z = array.GetTuple3(i)
+        cells = sum(int((c + 2.0) * squares / 2.0) for c in (x, y, z))
+        checks.InsertNextValue(float(cells % 2))
+    copy = type(mesh)()
+    copy.ShallowCopy(mesh)
+    copy.GetPointData().AddArray(checks)
+    table = vtkLookupTable()
+    table.SetNumberOfTableValues(2)
+    table.SetTableValue(0, 0.15, 0.3, 0.6, 1.0)
+    table.SetTableValue(1, 0.95, 0.95, 0.9, 1.0)
+    table.SetRange(0.0, 1.0)
+    table.Build()
+
+    def configure(mapper):
+        mapper.SetScalarModeToUsePointFieldData()
+        mapper.SelectColorArray("Checkerboard")
+        mapper.SetLookupTable(table)
+        mapper.UseLookupTableScalarRangeOn()
+        mapper.ScalarVisibilityOn()
+        mapper.InterpolateScalarsBeforeMappingOn()
+
+    _render(copy, path, configure, **view)
+
+
+def main(argv=None):
+    from . import read_mesh
+
+    parser = argparse.ArgumentParser(prog="python3 -m surfacemaps.render",
+                                     description="Render a mesh to PNG: distortion heat map or checkerboard.")
+    parser.add_argument("mesh", help="mesh file (e.g. the output of vtkSurfaceMapEvaluation saved as .vtp)")
+    parser.add_argument("-o", "--output", required=True, help="PNG file")
+    parser.add_argument("--checkerboard", metavar="ARRAY", nargs="?", const="SpherePosition",
+                        help="draw a checkerboard of this point array instead of the distortion")
+    parser.add_argument("--max", type=float, default=3.0, help="distortion shown darkest (default 3)")
+    args = parser.parse_args(argv)
+    try:
+        mesh = read_mesh(args.mesh)
+        if args.checkerboard:
+            render_checkerboard(mesh, args.output, args.checkerboard)
+        else:
+            render_distortion(mesh, args.output, args.max)
+    except (OSError, ValueError) as e:
+        print(f"surfacemaps.render: error: {e}", file=sys.stderr)
+        return 2
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
