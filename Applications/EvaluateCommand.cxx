@@ -217,7 +217,8 @@ int runEvaluate(const std::vector<std::string>& args)
       return ExitBadInput;
     }
     std::printf(
-      "  written to %s/summary.json, triangles.csv, distortion_curve.csv, evaluated.vtp\n", outputDir.c_str());
+      "  written to %s/summary.json, triangles.csv, distortion_curve.csv, evaluated.vtp\n",
+      outputDir.c_str());
   }
   return ExitOk;
 }
