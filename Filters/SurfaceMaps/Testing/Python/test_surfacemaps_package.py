@@ -68,3 +68,20 @@ def test_pipeline_with_repeatable_input():
     table = validator.GetOutput()
     assert table.GetNumberOfRows() == 2
     assert table.GetColumnByName("Input").GetValue(1).endswith("blob.off")
+
+
+def test_embed_and_evaluate_helpers():
+    mesh = surfacemaps.read_mesh(data("ellipsoid.obj"))
+    embedded = surfacemaps.embed_on_sphere(mesh, FinalIterations=20)
+    assert embedded.GetPointData().GetArray("SpherePosition") is not None
+    on_sphere = surfacemaps.embed_on_sphere(mesh, OutputPointsOnSphere=True)
+    metrics = surfacemaps.evaluate_map(embedded, on_sphere, mesh)
+    assert metrics["Bijective"] == 1.0
+    assert metrics["SymmetricDirichlet"] >= 1.0
+    assert metrics["HausdorffSource"] == pytest.approx(0.0, abs=1e-12)
+    with pytest.raises(surfacemaps.InputError, match="genus 1"):
+        surfacemaps.embed_on_sphere(surfacemaps.read_mesh(data("bad/torus.obj")))
+    with pytest.raises(surfacemaps.InputError, match="same connectivity"):
+        surfacemaps.evaluate_map(mesh, surfacemaps.read_mesh(data("limbs.ply")))
+    with pytest.raises(TypeError):
+        surfacemaps.embed_on_sphere(mesh, NoSuchSetting=1)
