@@ -81,10 +81,7 @@ def test_independent_numpy_computation():
 
 def test_embedding_distortion_agrees_and_certificate():
     mesh = surfacemaps.read_mesh(data("ellipsoid.obj"))
-    embed = surfacemaps.vtkSphereEmbeddingFilter()
-    embed.SetInputData(mesh)
-    embed.Update()
-    embedded = embed.GetOutput()
+    embedded = surfacemaps.embed_on_sphere(mesh)
     on_sphere = with_points(embedded, vtk_to_numpy(embedded.GetPointData().GetArray("SpherePosition")))
     e, _ = evaluate(embedded, on_sphere, mesh)
     assert e.GetSummaryValue("SymmetricDirichlet") == pytest.approx(
@@ -108,11 +105,7 @@ def test_degenerate_and_mismatched():
 
 def test_inverted_triangle_is_reported():
     # A fold in one sphere embedding: the certificate fails and says how many triangles.
-    mesh = surfacemaps.read_mesh(data("ellipsoid.obj"))
-    embed = surfacemaps.vtkSphereEmbeddingFilter()
-    embed.SetInputData(mesh)
-    embed.Update()
-    good = embed.GetOutput()
+    good = surfacemaps.embed_on_sphere(surfacemaps.read_mesh(data("ellipsoid.obj")))
     folded = vtkPolyData()
     folded.DeepCopy(good)
     s = vtk_to_numpy(folded.GetPointData().GetArray("SpherePosition"))
