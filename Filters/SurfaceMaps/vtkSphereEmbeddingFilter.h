@@ -19,9 +19,10 @@
  * inside its one-ring's kernel and optimised locally, then the whole level by
  * a few projected-Newton steps; the final mesh gets up to FinalIterations.
  * The result is certified with exact orientation predicates and a degree
- * check. If certification fails the embedding is retried with a 100x stronger
+ * check. If certification fails (or some triangles end up nearly collapsed,
+ * distortion above 1e4) the embedding is retried with a 100x stronger
  * barrier, then with the barrier alone; if all fail the filter reports an
- * error and produces no output.
+ * error and produces no output. "EmbeddingAttempt" says which attempt won.
  *
  * Input: vtkPolyData, triangles only, closed, manifold, genus 0 (what
  * vtkSurfaceMeshValidator accepts). Invalid input is reported with the same
@@ -36,7 +37,7 @@
  * "EmbeddingLevels", "EmbeddingAttempt" (1 = default weights), "EmbeddingSeconds".
  *
  * @warning Cost grows a little faster than linearly with the vertex count:
- * about 1 s for 3 000 vertices and 5 s for 12 000 on two cores (see the
+ * about 0.7 s for 3 000 vertices and 3.5 s for 12 000 on two cores (see the
  * README's performance section). Derivative evaluation runs on all OpenMP
  * threads. Progress is reported per level; AbortExecute stops the filter
  * within one Newton iteration and leaves the output empty.
