@@ -282,6 +282,7 @@ public:
     energy.distortionWeight = attempt.distortionWeight;
 
     std::size_t inserted = 4;
+    double levelEnergy = std::numeric_limits<double>::infinity();
     for (int level = static_cast<int>(levels.size()) - 1; level >= 0; --level)
     {
       const Triangles& finer = level > 0 ? levels[level - 1].triangles : this->Hierarchy.triangles;
@@ -321,10 +322,16 @@ public:
       inserted += collapses.size();
       const int iterations =
         inserted > 1000 ? this->Options.levelIterationsLarge : this->Options.levelIterations;
-      this->optimise(energy,
+      // Large levels get few iterations, unless the insertion left the energy
+      // far above the previous level's: then up to levelIterations, so that
+      // damage is not carried into the next levels.
+      const double previous = levelEnergy;
+      levelEnergy = this->optimise(energy,
         level > 0 ? iterations : this->Options.finalIterations,
         level > 0 ? this->Options.levelTolerance : this->Options.finalTolerance,
-        result);
+        result,
+        level > 0 ? std::max(iterations, this->Options.levelIterations) : 0,
+        1.5 * previous);
       this->report(0.9 * static_cast<double>(inserted) / static_cast<double>(nv));
     }
     if (levels.empty())
@@ -347,10 +354,15 @@ private:
     }
   }
 
-  void optimise(EmbeddingEnergy& energy,
+  // Newton steps on the active vertices; returns the final energy. After
+  // `iterations` steps it goes on, up to `extendedIterations` in all, while
+  // the energy is above `extendAbove`.
+  double optimise(EmbeddingEnergy& energy,
     int iterations,
     double tolerance,
-    SphereEmbeddingResult& result)
+    SphereEmbeddingResult& result,
+    int extendedIterations = 0,
+    double extendAbove = std::numeric_limits<double>::infinity())
   {
     SpherePoints points(this->Positions);
     std::vector<char> locked(this->Active.size());
@@ -370,8 +382,13 @@ private:
     const Triangles& triangles = energy.triangles;
     newton.acceptTrial = [&triangles](const SpherePoints& p)
     { return std::lround(sphericalDegree(p.positions(), triangles)) == 1; };
-    for (int it = 0; it < iterations; ++it)
+    double energyNow = std::numeric_limits<double>::infinity();
+    for (int it = 0; it < std::max(iterations, extendedIterations); ++it)
     {
+      if (it >= iterations && !(energyNow > extendAbove))
+      {
+        break;
+      }
       term->energy().chordArea = inputAreaOf(points.positions(), triangles);
       const NewtonStepResult step = newtonStep(objective, points, solver, newton);
       ++result.newtonIterations;
@@ -379,6 +396,7 @@ private:
       result.solveSeconds += step.solveSeconds;
       result.lineSearchSeconds += step.lineSearchSeconds;
       result.energy = step.energyAfter;
+      energyNow = step.energyAfter;
       // Converged when the decrease a Newton step expects (decrement^2 / 2)
       // is negligible. Absolute, in units of the distortion (whose minimum is
       // 1): a relative test would stop at once when one bad triangle makes
@@ -389,6 +407,7 @@ private:
       }
     }
     this->Positions = points.positions();
+    return energyNow;
   }
 
   const PolygonMesh& Mesh;
