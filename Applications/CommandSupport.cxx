@@ -18,6 +18,7 @@
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
+#include <fstream>
 #include <iostream>
 #include <sstream>
 #include <stdexcept>
@@ -152,6 +153,26 @@ void checkWritable(const std::string& path)
   }
   std::fclose(file);
   std::remove(temporary.c_str());
+}
+
+void writeFileAtomically(const std::string& path, const std::string& content)
+{
+  const std::string temporary = temporaryName(path);
+  {
+    std::ofstream out(temporary, std::ios::binary);
+    out << content;
+    if (!out)
+    {
+      std::remove(temporary.c_str());
+      throw std::runtime_error("cannot write '" + path + "': " + std::strerror(errno));
+    }
+  }
+  if (std::rename(temporary.c_str(), path.c_str()) != 0)
+  {
+    const std::string reason = std::strerror(errno);
+    std::remove(temporary.c_str());
+    throw std::runtime_error("cannot write '" + path + "': " + reason);
+  }
 }
 
 void writePolyDataAtomically(vtkPolyData* data, const std::string& path)

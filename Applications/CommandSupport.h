@@ -61,6 +61,10 @@ vtkSmartPointer<vtkPolyData> readValidMesh(const std::string& path, const std::s
 /// (checked before long computations whose result would be lost).
 void checkWritable(const std::string& path);
 
+/// Writes `content` to a temporary name beside `path`, then renames it.
+/// Throws std::runtime_error naming the file on failure.
+void writeFileAtomically(const std::string& path, const std::string& content);
+
 /// Writes VTK XML PolyData to a temporary name beside `path`, then renames it,
 /// so a failed or interrupted write never leaves a half-written file. Throws
 /// std::runtime_error naming the file on failure.

@@ -12,7 +12,6 @@
 
 #include <cmath>
 #include <cstdio>
-#include <fstream>
 #include <iomanip>
 #include <sstream>
 #include <stdexcept>
@@ -44,24 +43,6 @@ const char* const EvaluateHelp =
 
 namespace
 {
-void writeFileAtomically(const std::string& path, const std::string& content)
-{
-  const std::string temporary = path + ".tmp";
-  {
-    std::ofstream out(temporary);
-    out << content;
-    if (!out)
-    {
-      throw std::runtime_error("cannot write '" + path + "'");
-    }
-  }
-  if (std::rename(temporary.c_str(), path.c_str()) != 0)
-  {
-    std::remove(temporary.c_str());
-    throw std::runtime_error("cannot write '" + path + "'");
-  }
-}
-
 std::string number(double value)
 {
   if (!std::isfinite(value))
