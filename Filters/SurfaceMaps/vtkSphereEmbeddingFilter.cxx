@@ -5,6 +5,7 @@
 #include "MeshValidation.h"
 #include "SphereEmbedding.h"
 
+#include "vtkDataArray.h"
 #include "vtkDoubleArray.h"
 #include "vtkFieldData.h"
 #include "vtkInformation.h"
@@ -17,6 +18,8 @@
 #include "vtkPolyData.h"
 #include "vtkSmartPointer.h"
 
+#include <cmath>
+#include <map>
 #include <string>
 
 vtkStandardNewMacro(vtkSphereEmbeddingFilter);
@@ -33,7 +36,54 @@ void addFieldValue(vtkPolyData* output, const char* name, T value)
 }
 } // namespace
 
-vtkSphereEmbeddingFilter::vtkSphereEmbeddingFilter() = default;
+vtkSphereEmbeddingFilter::vtkSphereEmbeddingFilter()
+{
+  this->SetNumberOfInputPorts(2);
+}
+
+int vtkSphereEmbeddingFilter::FillInputPortInformation(int port, vtkInformation* info)
+{
+  info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkPolyData");
+  if (port == 1)
+  {
+    info->Set(vtkAlgorithm::INPUT_IS_OPTIONAL(), 1);
+  }
+  return 1;
+}
+
+namespace
+{
+// Landmark id -> sphere position, for the vertices with an id >= 0.
+std::map<int, Eigen::Vector3d> landmarkPositions(vtkPolyData* mesh,
+  const std::vector<Eigen::Vector3d>& sphere)
+{
+  std::map<int, Eigen::Vector3d> result;
+  const std::vector<int> ids = vtkSurfaceMapsConversion::LandmarkIds(mesh);
+  for (std::size_t v = 0; v < ids.size() && v < sphere.size(); ++v)
+  {
+    if (ids[v] >= 0)
+    {
+      result[ids[v]] = sphere[v];
+    }
+  }
+  return result;
+}
+
+std::vector<Eigen::Vector3d> spherePositionsOf(vtkPolyData* mesh)
+{
+  std::vector<Eigen::Vector3d> positions;
+  vtkDataArray* array = mesh ? mesh->GetPointData()->GetArray("SpherePosition") : nullptr;
+  if (array && array->GetNumberOfComponents() == 3)
+  {
+    positions.resize(static_cast<std::size_t>(array->GetNumberOfTuples()));
+    for (vtkIdType i = 0; i < array->GetNumberOfTuples(); ++i)
+    {
+      array->GetTuple(i, positions[i].data());
+    }
+  }
+  return positions;
+}
+} // namespace
 
 int vtkSphereEmbeddingFilter::RequestData(vtkInformation*,
   vtkInformationVector** inputVector,
@@ -85,7 +135,55 @@ int vtkSphereEmbeddingFilter::RequestData(vtkInformation*,
       }
     };
 
-    const surfacemaps::SphereEmbeddingResult result = surfacemaps::embedOnSphere(mesh, options);
+    surfacemaps::SphereEmbeddingResult result = surfacemaps::embedOnSphere(mesh, options);
+
+    // Rigid rotation onto the reference's landmarks.
+    double alignmentError = -1.0;
+    vtkPolyData* reference = vtkPolyData::GetData(inputVector[1], 0);
+    if (reference)
+    {
+      const auto own = landmarkPositions(input, result.positions);
+      const auto other = landmarkPositions(reference, spherePositionsOf(reference));
+      std::vector<Eigen::Vector3d> from, to;
+      for (const auto& [id, p] : own)
+      {
+        const auto it = other.find(id);
+        if (it != other.end())
+        {
+          from.push_back(p);
+          to.push_back(it->second.normalized());
+        }
+      }
+      if (from.empty())
+      {
+        vtkWarningMacro(<< name
+                        << ": no landmark ids in common with the reference embedding; "
+                           "not rotated");
+      }
+      else
+      {
+        const Eigen::Matrix3d R = surfacemaps::bestRotation(from, to);
+        for (Eigen::Vector3d& p : result.positions)
+        {
+          p = (R * p).normalized();
+        }
+        double sum = 0.0;
+        for (std::size_t k = 0; k < from.size(); ++k)
+        {
+          const Eigen::Vector3d q = R * from[k];
+          sum += std::pow(std::atan2(q.cross(to[k]).norm(), q.dot(to[k])), 2);
+        }
+        alignmentError = std::sqrt(sum / static_cast<double>(from.size()));
+        // A rotation keeps every orientation, but the certificate is cheap:
+        // recheck after rounding.
+        result.certificate = surfacemaps::certifyBijective(result.positions, mesh.triangles());
+        if (!result.certificate.bijective)
+        {
+          throw std::runtime_error(
+            "the rotated embedding is not bijective: " + result.certificate.reason);
+        }
+      }
+    }
 
     output->ShallowCopy(input);
     auto sphere = vtkSmartPointer<vtkDoubleArray>::New();
@@ -118,6 +216,10 @@ int vtkSphereEmbeddingFilter::RequestData(vtkInformation*,
     addFieldValue<vtkIntArray>(output, "EmbeddingLevels", result.levels);
     addFieldValue<vtkIntArray>(output, "EmbeddingAttempt", result.attempt);
     addFieldValue<vtkDoubleArray>(output, "EmbeddingSeconds", result.seconds);
+    if (alignmentError >= 0.0)
+    {
+      addFieldValue<vtkDoubleArray>(output, "LandmarkAlignmentError", alignmentError);
+    }
     this->UpdateProgress(1.0);
   }
   catch (const surfacemaps::EmbeddingAborted&)

@@ -29,6 +29,13 @@
  * messages as the validator (naming the input's "FileName" field-data string
  * when present) and gives an empty output.
  *
+ * Optional input port 1 (SetReferenceConnection / SetReferenceData): an already
+ * embedded mesh with "SpherePosition" and "Landmarks" arrays. When both it and
+ * the input carry landmarks with common ids, the new embedding is rotated
+ * rigidly (a rotation keeps it bijective) so that its landmarks come as close
+ * as possible to the reference's (least squares); field data
+ * "LandmarkAlignmentError" gives the remaining RMS angle (radians).
+ *
  * Output: the input mesh with the point array "SpherePosition" (3 doubles,
  * unit vectors). With OutputPointsOnSphere the points themselves are moved to
  * the sphere (for viewing) and the original coordinates are kept in the point
@@ -102,8 +109,18 @@ public:
   vtkGetMacro(FinalTolerance, double);
   ///@}
 
+  ///@{
+  /**
+   * Optional reference embedding (port 1) whose landmarks this embedding is
+   * rotated onto; see the class description.
+   */
+  void SetReferenceConnection(vtkAlgorithmOutput* output) { this->SetInputConnection(1, output); }
+  void SetReferenceData(vtkDataObject* data) { this->SetInputData(1, data); }
+  ///@}
+
 protected:
   vtkSphereEmbeddingFilter();
+  int FillInputPortInformation(int port, vtkInformation* info) override;
   ~vtkSphereEmbeddingFilter() override = default;
 
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
