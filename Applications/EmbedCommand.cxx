@@ -7,6 +7,7 @@
 #include "vtkDataArray.h"
 #include "vtkFieldData.h"
 #include "vtkNew.h"
+#include "vtkPointData.h"
 #include "vtkPolyData.h"
 
 #include <cstdio>
@@ -18,6 +19,7 @@ namespace surfacemap
 
 const char* const EmbedHelp =
   "usage: surfacemap embed MESH -o OUT.vtp [--on-sphere] [--landmarks FILE]\n"
+  "                        [--reference EMBEDDED.vtp]\n"
   "\n"
   "Computes a bijective embedding of MESH (closed, manifold, genus 0) on the\n"
   "unit sphere and writes MESH with the point array SpherePosition to OUT.vtp.\n"
@@ -27,24 +29,27 @@ const char* const EmbedHelp =
   "  --on-sphere           put the output points on the sphere (for viewing);\n"
   "                        the original coordinates go to InputPosition\n"
   "  --landmarks FILE      landmark file carried along as the Landmarks array\n"
+  "  --reference FILE      an embedding written by this command (with landmarks):\n"
+  "                        rotate the new embedding so that its landmarks come\n"
+  "                        closest to the reference's\n"
   "\n"
   "Exit code 0 with a certified embedding, 2 for bad usage or input, 3 if no\n"
   "certified embedding was found.\n";
 
 int runEmbed(const std::vector<std::string>& args)
 {
-  std::string mesh, output, landmarks;
+  std::string mesh, output, landmarks, reference;
   bool onSphere = false;
   for (std::size_t i = 0; i < args.size(); ++i)
   {
     const std::string& a = args[i];
-    if (a == "-o" || a == "--output" || a == "--landmarks")
+    if (a == "-o" || a == "--output" || a == "--landmarks" || a == "--reference")
     {
       if (i + 1 >= args.size())
       {
         throw UsageError{ a + " needs a file name" };
       }
-      (a == "--landmarks" ? landmarks : output) = args[++i];
+      (a == "--landmarks" ? landmarks : a == "--reference" ? reference : output) = args[++i];
     }
     else if (a == "--on-sphere")
     {
@@ -89,6 +94,20 @@ int runEmbed(const std::vector<std::string>& args)
 
   vtkNew<vtkSphereEmbeddingFilter> embedding;
   embedding->SetInputData(input);
+  if (!reference.empty())
+  {
+    vtkSmartPointer<vtkPolyData> referenceMesh = readMesh(reference);
+    if (!referenceMesh)
+    {
+      return ExitBadInput;
+    }
+    if (!referenceMesh->GetPointData()->GetArray("SpherePosition"))
+    {
+      printError(reference + " has no SpherePosition array (write it with surfacemap embed)");
+      return ExitBadInput;
+    }
+    embedding->SetReferenceData(referenceMesh);
+  }
   embedding->SetOutputPointsOnSphere(onSphere);
   ErrorCapture errors(embedding);
   {
@@ -127,6 +146,12 @@ int runEmbed(const std::vector<std::string>& args)
     static_cast<int>(value("EmbeddingNewtonIterations")),
     static_cast<int>(value("EmbeddingLevels")),
     value("EmbeddingSeconds"));
+  if (vtkDataArray* alignment = result->GetFieldData()->GetArray("LandmarkAlignmentError"))
+  {
+    std::printf("  rotated onto %s: landmarks %.4f rad (RMS) from the reference's\n",
+      reference.c_str(),
+      alignment->GetTuple1(0));
+  }
   std::printf("  written to %s\n", output.c_str());
   return ExitOk;
 }

@@ -52,3 +52,14 @@ def test_usage():
     assert r.returncode == 2 and "no output file" in r.stderr
     r = run("embed", "--help")
     assert r.returncode == 0 and "--on-sphere" in r.stdout
+
+
+def test_rotation_onto_a_reference(tmp_path):
+    ref = tmp_path / "ellipsoid.vtp"
+    assert run("embed", data("ellipsoid.obj"), "--landmarks", data("ellipsoid.pinned"), "-o", ref).returncode == 0
+    out = tmp_path / "blob.vtp"
+    r = run("embed", data("blob.off"), "--landmarks", data("blob.vts"), "--reference", ref, "-o", out)
+    assert r.returncode == 0, r.stderr
+    assert "rotated onto" in r.stdout and "rad (RMS)" in r.stdout
+    r = run("embed", data("blob.off"), "--reference", data("ellipsoid.obj"), "-o", out)
+    assert r.returncode == 2 and "no SpherePosition array" in r.stderr
