@@ -69,20 +69,6 @@ std::map<int, Eigen::Vector3d> landmarkPositions(vtkPolyData* mesh,
   return result;
 }
 
-std::vector<Eigen::Vector3d> spherePositionsOf(vtkPolyData* mesh)
-{
-  std::vector<Eigen::Vector3d> positions;
-  vtkDataArray* array = mesh ? mesh->GetPointData()->GetArray("SpherePosition") : nullptr;
-  if (array && array->GetNumberOfComponents() == 3)
-  {
-    positions.resize(static_cast<std::size_t>(array->GetNumberOfTuples()));
-    for (vtkIdType i = 0; i < array->GetNumberOfTuples(); ++i)
-    {
-      array->GetTuple(i, positions[i].data());
-    }
-  }
-  return positions;
-}
 } // namespace
 
 int vtkSphereEmbeddingFilter::RequestData(vtkInformation*,
@@ -143,7 +129,8 @@ int vtkSphereEmbeddingFilter::RequestData(vtkInformation*,
     if (reference)
     {
       const auto own = landmarkPositions(input, result.positions);
-      const auto other = landmarkPositions(reference, spherePositionsOf(reference));
+      const auto other =
+        landmarkPositions(reference, vtkSurfaceMapsConversion::SpherePositions(reference));
       std::vector<Eigen::Vector3d> from, to;
       for (const auto& [id, p] : own)
       {

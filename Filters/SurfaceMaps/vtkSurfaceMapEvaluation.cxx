@@ -50,23 +50,6 @@ void addCellArray(vtkPolyData* output, const char* name, const std::vector<doubl
   output->GetCellData()->AddArray(array);
 }
 
-std::vector<Eigen::Vector3d> spherePositions(vtkPolyData* mesh)
-{
-  std::vector<Eigen::Vector3d> positions;
-  vtkDataArray* array = mesh->GetPointData()->GetArray("SpherePosition");
-  if (!array || array->GetNumberOfComponents() != 3 ||
-    array->GetNumberOfTuples() != mesh->GetNumberOfPoints())
-  {
-    return positions;
-  }
-  positions.resize(static_cast<std::size_t>(array->GetNumberOfTuples()));
-  for (vtkIdType i = 0; i < array->GetNumberOfTuples(); ++i)
-  {
-    array->GetTuple(i, positions[i].data());
-  }
-  return positions;
-}
-
 // Closest-point distances to a surface.
 class SurfaceDistance
 {
@@ -266,8 +249,8 @@ int vtkSurfaceMapEvaluation::RequestData(vtkInformation*,
         largestSampledDistance(approximations[k], originals[k]));
       addField(output, sides[k][1], percentOfDiagonal(twoSided, originals[k]));
     }
-    const auto sphereP = spherePositions(source);
-    const auto sphereQ = spherePositions(target);
+    const auto sphereP = vtkSurfaceMapsConversion::SpherePositions(source);
+    const auto sphereQ = vtkSurfaceMapsConversion::SpherePositions(target);
     if (!sphereP.empty() && !sphereQ.empty())
     {
       const auto cp = surfacemaps::certifyBijective(sphereP, triangles);

@@ -133,6 +133,23 @@ vtkSmartPointer<vtkPolyData> vtkSurfaceMapsConversion::ToPolyData(
   return ToPolyData(surfacemaps::toPolygonMesh(mesh));
 }
 
+std::vector<Eigen::Vector3d> vtkSurfaceMapsConversion::SpherePositions(vtkPolyData* input)
+{
+  std::vector<Eigen::Vector3d> positions;
+  vtkDataArray* array = input ? input->GetPointData()->GetArray("SpherePosition") : nullptr;
+  if (!array || array->GetNumberOfComponents() != 3 ||
+    array->GetNumberOfTuples() != input->GetNumberOfPoints())
+  {
+    return positions;
+  }
+  positions.resize(static_cast<std::size_t>(array->GetNumberOfTuples()));
+  for (vtkIdType i = 0; i < array->GetNumberOfTuples(); ++i)
+  {
+    array->GetTuple(i, positions[i].data());
+  }
+  return positions;
+}
+
 std::vector<int> vtkSurfaceMapsConversion::LandmarkIds(vtkPolyData* input)
 {
   std::vector<int> ids;

@@ -33,6 +33,10 @@ public:
   static surfacemaps::SurfaceMesh ToSurfaceMesh(vtkPolyData* input);
   static vtkSmartPointer<vtkPolyData> ToPolyData(const surfacemaps::SurfaceMesh& mesh);
 
+  /// The "SpherePosition" point array (3 components, one per point); empty if
+  /// absent or of the wrong shape.
+  static std::vector<Eigen::Vector3d> SpherePositions(vtkPolyData* input);
+
   /// The "Landmarks" point array as ids per vertex (-1 none); empty if absent.
   static std::vector<int> LandmarkIds(vtkPolyData* input);
 

@@ -2,6 +2,7 @@
 
 #include "Decimation.h"
 #include "EmbeddingEnergy.h"
+#include "MapMetrics.h"
 #include "NewtonSolver.h"
 #include "Objective.h"
 #include "Predicates.h"
@@ -423,21 +424,8 @@ double embeddingDistortion(const std::vector<Eigen::Vector3d>& input,
   const std::vector<Eigen::Vector3d>& sphere,
   const Triangles& triangles)
 {
-  const double inputArea = inputAreaOf(input, triangles);
-  const double chordArea = inputAreaOf(sphere, triangles);
-  double sum = 0.0;
-  for (const auto& t : triangles)
-  {
-    std::array<double, 3> P = gramEntries(input[t[0]], input[t[1]], input[t[2]]);
-    std::array<double, 3> Q = gramEntries(sphere[t[0]], sphere[t[1]], sphere[t[2]]);
-    for (int k = 0; k < 3; ++k)
-    {
-      P[k] /= inputArea;
-      Q[k] /= chordArea;
-    }
-    sum += symmetricDirichlet(P, Q);
-  }
-  return sum;
+  // The map from the input to its chord triangles, measured like any map.
+  return measureMap(input, sphere, triangles).symmetricDirichlet;
 }
 
 Eigen::Matrix3d bestRotation(const std::vector<Eigen::Vector3d>& from,
