@@ -2,13 +2,9 @@
 // quality per mesh. Prints a Markdown table row per mesh.
 //
 //   build/bin/BenchmarkEmbedding MESH.(obj|off|ply)...
+#include "BenchmarkSupport.h"
 #include "MeshValidation.h"
-#include "ObjReader.h"
-#include "OffReader.h"
-#include "PlyReader.h"
 #include "SphereEmbedding.h"
-
-#include <sys/resource.h>
 
 #include <chrono>
 #include <cstdio>
@@ -17,33 +13,8 @@
 
 using namespace surfacemaps;
 
-namespace
-{
-PolygonMesh read(const std::string& path)
-{
-  const std::string ext = path.substr(path.find_last_of('.') + 1);
-  if (ext == "obj")
-  {
-    return readObj(path);
-  }
-  if (ext == "off")
-  {
-    return readOff(path);
-  }
-  if (ext == "ply")
-  {
-    return readPly(path);
-  }
-  throw std::runtime_error(path + ": the benchmark reads .obj, .off and .ply");
-}
-
-double peakMegabytes()
-{
-  rusage usage{};
-  getrusage(RUSAGE_SELF, &usage);
-  return usage.ru_maxrss / 1024.0;
-}
-} // namespace
+using benchmark::peakMegabytes;
+using benchmark::read;
 
 int main(int argc, char* argv[])
 {

@@ -4,43 +4,65 @@
 
 #include <algorithm>
 #include <cmath>
-#include <map>
 #include <stdexcept>
 #include <utility>
 
 namespace surfacemaps
 {
 
+std::vector<std::array<int, 3>> triangleNeighbours(const std::vector<std::array<int, 3>>& triangles)
+{
+  const std::size_t nt = triangles.size();
+  // Directed edges sorted by (from, to), each with its triangle.
+  std::vector<std::pair<std::pair<int, int>, int>> edges;
+  edges.reserve(3 * nt);
+  for (std::size_t t = 0; t < nt; ++t)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      edges.push_back(
+        { { triangles[t][(k + 1) % 3], triangles[t][(k + 2) % 3] }, static_cast<int>(t) });
+    }
+  }
+  std::sort(edges.begin(), edges.end());
+  std::vector<std::array<int, 3>> neighbours(nt, { -1, -1, -1 });
+  for (std::size_t t = 0; t < nt; ++t)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      const std::pair<int, int> opposite{ triangles[t][(k + 2) % 3], triangles[t][(k + 1) % 3] };
+      const auto it = std::lower_bound(
+        edges.begin(), edges.end(), std::pair<std::pair<int, int>, int>{ opposite, -1 });
+      if (it == edges.end() || it->first != opposite)
+      {
+        throw std::invalid_argument("the triangulation is not closed");
+      }
+      neighbours[t][k] = it->second;
+    }
+  }
+  return neighbours;
+}
+
 SphereLocator::SphereLocator(const std::vector<Eigen::Vector3d>& points,
   const std::vector<std::array<int, 3>>& triangles)
   : Points(points)
   , Triangles(triangles)
 {
-  const std::size_t nt = triangles.size();
-  this->Neighbours.assign(nt, { -1, -1, -1 });
   this->VertexTriangle.assign(points.size(), -1);
-  std::map<std::pair<int, int>, std::pair<int, int>> edges; // directed edge -> (triangle, corner)
-  for (std::size_t t = 0; t < nt; ++t)
+  for (std::size_t t = 0; t < triangles.size(); ++t)
   {
     for (int k = 0; k < 3; ++k)
     {
-      const int a = triangles[t][(k + 1) % 3], b = triangles[t][(k + 2) % 3];
-      edges[{ a, b }] = { static_cast<int>(t), k };
       this->VertexTriangle[triangles[t][k]] = static_cast<int>(t);
     }
   }
-  for (std::size_t t = 0; t < nt; ++t)
+  try
   {
-    for (int k = 0; k < 3; ++k)
-    {
-      const int a = triangles[t][(k + 1) % 3], b = triangles[t][(k + 2) % 3];
-      const auto it = edges.find({ b, a });
-      if (it == edges.end())
-      {
-        throw std::invalid_argument("SphereLocator needs a closed triangulation");
-      }
-      this->Neighbours[t][k] = it->second.first;
-    }
+    this->Neighbours = triangleNeighbours(triangles);
+  }
+  catch (const std::invalid_argument&)
+  {
+    throw std::invalid_argument("SphereLocator needs a closed triangulation");
   }
   // About two vertices per cube-map cell.
   this->Resolution = std::max(1, static_cast<int>(std::sqrt(points.size() / 12.0)));
@@ -96,24 +118,36 @@ SphereLocation SphereLocator::locate(const Eigen::Vector3d& p) const
 
 SphereLocation SphereLocator::locateFrom(const Eigen::Vector3d& p, int start) const
 {
-  // Visibility walk: leave the triangle across an edge that has p on its
-  // outer side (exact orientation), choosing among several such edges in
-  // rotating order so that the walk cannot cycle.
+  return walkOnSphere(
+    p, start, this->Triangles, this->Neighbours, this->Points.data(), &this->Visited);
+}
+
+SphereLocation walkOnSphere(const Eigen::Vector3d& p,
+  int start,
+  const std::vector<std::array<int, 3>>& triangles,
+  const std::vector<std::array<int, 3>>& neighbours,
+  const Eigen::Vector3d* points,
+  long long* visited)
+{
+  // Leave the triangle across an edge that has p on its outer side (exact
+  // orientation), choosing among several such edges in rotating order so
+  // that the walk cannot cycle.
   int t = start;
   int rotate = 0;
-  const long long limit = 4 * static_cast<long long>(this->Triangles.size()) + 16;
+  const long long limit = 4 * static_cast<long long>(triangles.size()) + 16;
   for (long long step = 0; step < limit; ++step)
   {
-    ++this->Visited;
-    const auto& tri = this->Triangles[t];
+    if (visited)
+    {
+      ++*visited;
+    }
+    const auto& tri = triangles[t];
     int exit = -1;
     for (int m = 0; m < 3 && exit < 0; ++m)
     {
       const int k = (m + rotate) % 3;
-      const Eigen::Vector3d& a = this->Points[tri[(k + 1) % 3]];
-      const Eigen::Vector3d& b = this->Points[tri[(k + 2) % 3]];
       // p is on the inner side of edge ab when (a, b, p) is positively oriented.
-      if (orient3dOrigin(a, b, p) < 0)
+      if (orient3dOrigin(points[tri[(k + 1) % 3]], points[tri[(k + 2) % 3]], p) < 0)
       {
         exit = k;
       }
@@ -122,17 +156,16 @@ SphereLocation SphereLocator::locateFrom(const Eigen::Vector3d& p, int start) co
     {
       SphereLocation location;
       location.triangle = t;
-      const auto w =
-        barycentric(p, this->Points[tri[0]], this->Points[tri[1]], this->Points[tri[2]]);
+      const auto w = SphereLocator::barycentric(p, points[tri[0]], points[tri[1]], points[tri[2]]);
       location.alpha = w[0];
       location.beta = w[1];
       location.gamma = w[2];
       return location;
     }
-    t = this->Neighbours[t][exit];
+    t = neighbours[t][exit];
     rotate = (rotate + 1) % 3;
   }
-  throw std::runtime_error("SphereLocator: the walk did not end (is the embedding bijective?)");
+  throw std::runtime_error("walk on the sphere did not end (is the embedding bijective?)");
 }
 
 std::array<double, 3> SphereLocator::barycentric(const Eigen::Vector3d& p,

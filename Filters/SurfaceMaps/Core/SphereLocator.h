@@ -20,6 +20,25 @@ struct SphereLocation
   double alpha = 0.0, beta = 0.0, gamma = 0.0;
 };
 
+/// Neighbour of each triangle across the edge opposite corner k (edge
+/// (k+1, k+2)) in a closed, consistently oriented triangulation. Throws
+/// std::invalid_argument when an edge has no opposite.
+std::vector<std::array<int, 3>> triangleNeighbours(
+  const std::vector<std::array<int, 3>>& triangles);
+
+/// The visibility walk behind SphereLocator, on any bijective spherical
+/// triangulation given by triangles, their neighbours and the corner points
+/// (`points[corner index]`): starts at triangle `start`, crosses edges that
+/// have p on their outer side (exact predicates). `visited`, if given, is
+/// increased by the number of triangles visited. Throws std::runtime_error if
+/// the walk does not end (the triangulation is not bijective).
+SphereLocation walkOnSphere(const Eigen::Vector3d& p,
+  int start,
+  const std::vector<std::array<int, 3>>& triangles,
+  const std::vector<std::array<int, 3>>& neighbours,
+  const Eigen::Vector3d* points,
+  long long* visited = nullptr);
+
 /// Locates points in a bijective embedding (every triangle positively
 /// oriented, degree 1): a visibility walk across triangle edges decided by
 /// exact orientation predicates, started from the triangle of the nearest

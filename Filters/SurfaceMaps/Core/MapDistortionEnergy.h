@@ -1,0 +1,59 @@
+// SurfaceMaps engine: distortion of the map between two inputs through T.
+#pragma once
+
+#include "LiftedPoint.h"
+#include "SymmetricDirichlet.h"
+
+#include <array>
+#include <vector>
+
+namespace surfacemaps
+{
+
+/// Symmetric Dirichlet distortion of the linear map from the lifted triangle
+/// (pa, pb, pc) on input i to (qa, qb, qc) on input j (DESIGN.md section 1.3,
+/// both inputs at unit area): 1/4 (area_Q |J|_F^2 + area_P |J^-1|_F^2).
+template<typename T>
+T mapDistortionEnergy(const std::array<Eigen::Matrix<T, 3, 1>, 3>& P,
+  const std::array<Eigen::Matrix<T, 3, 1>, 3>& Q)
+{
+  return symmetricDirichlet(gramEntries(P[0], P[1], P[2]), gramEntries(Q[0], Q[1], Q[2]));
+}
+
+/// Element functor (see ElementTerm): one element per triangle of T, six
+/// points: its corners on the embedding starting at offsetP (input i), then on
+/// the one starting at offsetQ (input j).
+struct MapDistortionEnergy
+{
+  const std::vector<std::array<int, 3>>* triangles = nullptr;
+  const std::vector<const Lift*>* lifts = nullptr;
+  int offsetP = 0;
+  int offsetQ = 0;
+
+  int numberOfElements() const { return static_cast<int>(this->triangles->size()); }
+  std::array<int, 6> points(int e) const
+  {
+    const auto& t = (*this->triangles)[e];
+    return { t[0] + this->offsetP,
+      t[1] + this->offsetP,
+      t[2] + this->offsetP,
+      t[0] + this->offsetQ,
+      t[1] + this->offsetQ,
+      t[2] + this->offsetQ };
+  }
+  template<typename T>
+  T operator()(int e, const std::array<Eigen::Matrix<T, 3, 1>, 6>& p) const
+  {
+    const std::array<int, 6> idx = this->points(e);
+    const auto& L = *this->lifts;
+    std::array<Eigen::Matrix<T, 3, 1>, 3> P, Q;
+    for (int k = 0; k < 3; ++k)
+    {
+      P[k] = (*L[idx[k]])(p[k]);
+      Q[k] = (*L[idx[k + 3]])(p[k + 3]);
+    }
+    return mapDistortionEnergy<T>(P, Q);
+  }
+};
+
+} // namespace surfacemaps

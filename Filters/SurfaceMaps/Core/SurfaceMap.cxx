@@ -1,0 +1,674 @@
+#include "SurfaceMap.h"
+
+#include "CommonTriangulation.h"
+#include "NewtonSolver.h"
+#include "Predicates.h"
+#include "Remeshing.h"
+#include "Sizing.h"
+#include "SphereEmbedding.h"
+
+#include <chrono>
+#include <cmath>
+#include <map>
+#include <sstream>
+#include <stdexcept>
+
+namespace surfacemaps
+{
+
+std::vector<std::array<int, 2>> mapPairs(PairMode mode, int n)
+{
+  std::vector<std::array<int, 2>> pairs;
+  switch (mode)
+  {
+    case PairMode::Star:
+      for (int i = 1; i < n; ++i)
+      {
+        pairs.push_back({ 0, i });
+      }
+      break;
+    case PairMode::Sequence:
+    case PairMode::Cycle:
+      for (int i = 0; i + 1 < n; ++i)
+      {
+        pairs.push_back({ i, i + 1 });
+      }
+      if (mode == PairMode::Cycle && n > 2)
+      {
+        pairs.push_back({ n - 1, 0 });
+      }
+      break;
+    case PairMode::All:
+      for (int i = 0; i < n; ++i)
+      {
+        for (int j = i + 1; j < n; ++j)
+        {
+          pairs.push_back({ i, j });
+        }
+      }
+      break;
+  }
+  return pairs;
+}
+
+namespace
+{
+using Clock = std::chrono::steady_clock;
+
+double secondsSince(Clock::time_point start)
+{
+  return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+std::string inputName(int i)
+{
+  return "input " + std::to_string(i);
+}
+
+/// Centres an input, scales it to unit area and builds what the energy needs.
+MapSurface prepareSurface(const MapInput& input, int index)
+{
+  MapSurface s;
+  s.triangles = input.mesh.triangles();
+  const std::size_t nv = input.mesh.points.size();
+  if (input.spherePositions.size() != nv)
+  {
+    throw std::invalid_argument(inputName(index) + ": " + std::to_string(nv) + " vertices but " +
+      std::to_string(input.spherePositions.size()) + " sphere positions");
+  }
+  if (!input.landmarks.empty() && input.landmarks.size() != nv)
+  {
+    throw std::invalid_argument(inputName(index) + ": landmark array has " +
+      std::to_string(input.landmarks.size()) + " entries, expected " + std::to_string(nv));
+  }
+  if (!input.sizing.empty() && input.sizing.size() != nv)
+  {
+    throw std::invalid_argument(inputName(index) + ": sizing array has " +
+      std::to_string(input.sizing.size()) + " entries, expected " + std::to_string(nv));
+  }
+  double area = 0.0;
+  Eigen::Vector3d centre = Eigen::Vector3d::Zero();
+  for (const auto& t : s.triangles)
+  {
+    const Eigen::Vector3d& a = input.mesh.points[t[0]];
+    const Eigen::Vector3d& b = input.mesh.points[t[1]];
+    const Eigen::Vector3d& c = input.mesh.points[t[2]];
+    const double A = 0.5 * (b - a).cross(c - a).norm();
+    area += A;
+    centre += A * (a + b + c) / 3.0;
+  }
+  if (!(area > 0.0))
+  {
+    throw std::invalid_argument(inputName(index) + " has zero area");
+  }
+  s.centre = centre / area;
+  s.scale = 1.0 / std::sqrt(area);
+  s.points.resize(nv);
+  for (std::size_t v = 0; v < nv; ++v)
+  {
+    s.points[v] = (input.mesh.points[v] - s.centre) * s.scale;
+  }
+  s.sphere = input.spherePositions;
+  for (Eigen::Vector3d& p : s.sphere)
+  {
+    p.normalize();
+  }
+  s.landmarks = input.landmarks;
+  if (!input.sizing.empty())
+  {
+    s.sizing = input.sizing;
+    for (double& l : s.sizing)
+    {
+      l *= s.scale;
+    }
+  }
+  return s;
+}
+
+/// Approximation samples: every vertex, or an evenly strided subset of large
+/// inputs; weights = barycentric vertex areas normalised to sum 1.
+void buildSamples(MapSurface& s, const SurfaceMapOptions& options)
+{
+  const std::size_t nv = s.points.size();
+  std::vector<double> vertexArea(nv, 0.0);
+  for (const auto& t : s.triangles)
+  {
+    const double A =
+      0.5 * (s.points[t[1]] - s.points[t[0]]).cross(s.points[t[2]] - s.points[t[0]]).norm();
+    for (int k = 0; k < 3; ++k)
+    {
+      vertexArea[t[k]] += A / 3.0;
+    }
+  }
+  const std::size_t limit = static_cast<std::size_t>(std::max(1, options.approximationSamples));
+  const std::size_t stride = (nv + limit - 1) / limit;
+  double weightSum = 0.0;
+  for (std::size_t v = 0; v < nv; v += stride)
+  {
+    s.samples.positions.push_back(s.points[v]);
+    s.samples.spherePoints.push_back(s.sphere[v]);
+    s.samples.weights.push_back(vertexArea[v]);
+    weightSum += vertexArea[v];
+  }
+  for (double& w : s.samples.weights)
+  {
+    w /= weightSum;
+  }
+}
+
+void buildLifts(MapSurface& s)
+{
+  s.lifts.resize(s.triangles.size());
+  for (std::size_t t = 0; t < s.triangles.size(); ++t)
+  {
+    const auto& tri = s.triangles[t];
+    s.lifts[t] = Lift(s.points[tri[0]],
+      s.points[tri[1]],
+      s.points[tri[2]],
+      s.sphere[tri[0]],
+      s.sphere[tri[1]],
+      s.sphere[tri[2]]);
+  }
+  s.locator = std::make_unique<SphereLocator>(s.sphere, s.triangles);
+}
+
+/// Landmark id -> vertex of each input; every id must be on every input.
+std::vector<std::map<int, int>> landmarkVertices(const std::vector<MapInput>& inputs)
+{
+  std::vector<std::map<int, int>> ids(inputs.size());
+  for (std::size_t i = 0; i < inputs.size(); ++i)
+  {
+    const auto& l = inputs[i].landmarks;
+    for (std::size_t v = 0; v < l.size(); ++v)
+    {
+      if (l[v] < 0)
+      {
+        continue;
+      }
+      if (!ids[i].emplace(l[v], static_cast<int>(v)).second)
+      {
+        throw std::invalid_argument(inputName(static_cast<int>(i)) + ": landmark " +
+          std::to_string(l[v]) + " is on two vertices (" + std::to_string(ids[i][l[v]]) + " and " +
+          std::to_string(v) + ")");
+      }
+    }
+  }
+  for (std::size_t i = 1; i < inputs.size(); ++i)
+  {
+    for (std::size_t j : { std::size_t(0), i })
+    {
+      const std::size_t other = j == 0 ? i : 0;
+      for (const auto& [id, v] : ids[j])
+      {
+        if (!ids[other].count(id))
+        {
+          throw std::invalid_argument("landmark " + std::to_string(id) + " is on " +
+            inputName(static_cast<int>(j)) + " (vertex " + std::to_string(v) + ") but not on " +
+            inputName(static_cast<int>(other)));
+        }
+      }
+    }
+  }
+  return ids;
+}
+
+/// Rotates each embedding onto input 0's through the landmarks (Kabsch),
+/// keeping the original where the rotated one does not certify.
+void alignEmbeddings(std::vector<MapSurface>& surfaces,
+  const std::vector<std::map<int, int>>& ids,
+  const Logger& log)
+{
+  for (std::size_t i = 1; i < surfaces.size(); ++i)
+  {
+    if (ids[0].empty())
+    {
+      return;
+    }
+    std::vector<Eigen::Vector3d> from, to;
+    for (const auto& [id, v] : ids[0])
+    {
+      to.push_back(surfaces[0].sphere[v]);
+      from.push_back(surfaces[i].sphere[ids[i].at(id)]);
+    }
+    const Eigen::Matrix3d R = bestRotation(from, to);
+    std::vector<Eigen::Vector3d> rotated = surfaces[i].sphere;
+    for (Eigen::Vector3d& p : rotated)
+    {
+      p = (R * p).normalized();
+    }
+    if (certifyBijective(rotated, surfaces[i].triangles).bijective)
+    {
+      surfaces[i].sphere = std::move(rotated);
+    }
+    else
+    {
+      log(Logger::Warning,
+        inputName(static_cast<int>(i)) +
+          ": the embedding rotated onto input 0's landmarks does "
+          "not certify; using it unrotated");
+    }
+  }
+}
+
+void setSizing(std::vector<MapSurface>& surfaces,
+  const std::vector<MapInput>& inputs,
+  double eps,
+  const SurfaceMapOptions& options)
+{
+  for (std::size_t i = 0; i < surfaces.size(); ++i)
+  {
+    if (!inputs[i].sizing.empty())
+    {
+      continue; // the user's sizing, fixed
+    }
+    SizingOptions sizing;
+    sizing.targetError = eps;
+    sizing.minEdgeLength = options.minEdgeLength;
+    sizing.maxEdgeLength = options.maxEdgeLength;
+    surfaces[i].sizing = curvatureSizing(surfaces[i].points, surfaces[i].triangles, sizing);
+  }
+}
+
+class Schedule
+{
+public:
+  Schedule(CommonTriangulation& T,
+    const SurfaceMapOptions& options,
+    std::vector<std::map<int, Eigen::Vector3d>> targets,
+    int totalIterations)
+    : T(T)
+    , Options(options)
+    , Targets(std::move(targets))
+    , TotalIterations(std::max(1, totalIterations))
+  {
+  }
+
+  /// Largest sphere distance of a landmark vertex from its target.
+  double landmarkError() const
+  {
+    double error = 0.0;
+    for (auto v : this->T.mesh().vertices())
+    {
+      const int id = this->T.landmark(v);
+      for (int i = 0; id >= 0 && i < this->T.numberOfInputs(); ++i)
+      {
+        const auto it = this->Targets[i].find(id);
+        if (it != this->Targets[i].end())
+        {
+          error = std::max(error, (this->T.g(v, i) - it->second).norm());
+        }
+      }
+    }
+    return error;
+  }
+
+  MapPhaseReport run(const std::string& name,
+    int maxIterations,
+    bool lockLandmarks,
+    bool untilLandmarks)
+  {
+    const auto start = Clock::now();
+    MapPhaseReport report;
+    report.name = name;
+    LinearSolver solver;
+    for (int it = 0; it < maxIterations; ++it)
+    {
+      if (this->T.weights.mesh > 0.0)
+      {
+        this->T.updateTargetLengths();
+      }
+      const RemeshingResult edits = remesh(this->T);
+      report.splits += edits.splits;
+      report.collapses += edits.collapses;
+      report.flips += edits.flips;
+      report.remeshSeconds += edits.seconds;
+
+      CommonTriangulation::Snapshot snapshot;
+      SpherePoints points;
+      this->T.snapshot(snapshot, points, lockLandmarks);
+      Objective objective;
+      this->T.buildObjective(snapshot, this->Targets, objective);
+      NewtonOptions newton;
+      newton.maxPointStep = snapshot.vertices >= this->Options.largeMeshVertices
+        ? this->Options.maxPointStepLarge
+        : this->Options.maxPointStep;
+      newton.acceptTrial = [&](const SpherePoints& trial)
+      { return this->T.update(snapshot, trial); };
+      newton.log = this->Options.log;
+      const NewtonStepResult step = newtonStep(objective, points, solver, newton);
+      if (!this->T.update(snapshot, points))
+      {
+        throw std::logic_error("the accepted Newton step left an invalid embedding");
+      }
+      this->T.writeBack(snapshot, points);
+
+      report.iterations = it + 1;
+      report.energy = step.energyAfter;
+      report.derivativeSeconds += step.derivativeSeconds;
+      report.solveSeconds += step.solveSeconds;
+      report.lineSearchSeconds += step.lineSearchSeconds;
+      report.vertices = snapshot.vertices;
+      ++this->Done;
+
+      std::ostringstream message;
+      message << name << " iteration " << it + 1 << ": " << snapshot.vertices << " vertices, E "
+              << step.energyAfter << ", decrement " << step.decrement << ", edits " << edits.splits
+              << "/" << edits.collapses << "/" << edits.flips;
+      this->Options.log(Logger::Detail, message.str());
+      if (this->Options.progress)
+      {
+        SurfaceMapProgress progress;
+        progress.phase = name;
+        progress.iteration = it + 1;
+        progress.fraction = std::min(1.0, static_cast<double>(this->Done) / this->TotalIterations);
+        progress.vertices = snapshot.vertices;
+        progress.energy = step.energyAfter;
+        if (!this->Options.progress(progress))
+        {
+          throw SurfaceMapAborted();
+        }
+      }
+      if (untilLandmarks)
+      {
+        report.landmarkError = this->landmarkError();
+        if (report.landmarkError < this->Options.landmarkTolerance)
+        {
+          report.converged = true;
+          break;
+        }
+      }
+      const int edited = edits.splits + edits.collapses + edits.flips;
+      if (!untilLandmarks && edited == 0 && step.decrement < this->Options.decrementTolerance)
+      {
+        report.converged = true;
+        break;
+      }
+    }
+    report.seconds = secondsSince(start);
+    std::ostringstream message;
+    message << name << " phase: " << report.iterations << " iterations"
+            << (report.converged ? " (converged)" : " (iteration cap)") << ", " << report.vertices
+            << " vertices, " << report.seconds << " s";
+    this->Options.log(Logger::Info, message.str());
+    return report;
+  }
+
+  /// Puts every landmark vertex exactly on its input vertex on every sphere
+  /// where its star stays positively oriented (exact); returns how many
+  /// (vertex, sphere) pairs could not be snapped.
+  int snapLandmarks()
+  {
+    int missed = 0;
+    SurfaceMesh& mesh = this->T.mesh();
+    for (auto v : mesh.vertices())
+    {
+      const int id = this->T.landmark(v);
+      if (id < 0)
+      {
+        continue;
+      }
+      MapVertex data = this->T.vertex(v);
+      for (int i = 0; i < this->T.numberOfInputs(); ++i)
+      {
+        const Eigen::Vector3d target = this->Targets[i].at(id);
+        bool positive = true;
+        for (auto h : mesh.voh_range(v))
+        {
+          const auto a = mesh.to_vertex_handle(h);
+          const auto b = mesh.to_vertex_handle(mesh.next_halfedge_handle(h));
+          positive = positive && orient3dOrigin(target, this->T.g(a, i), this->T.g(b, i)) > 0;
+        }
+        if (positive)
+        {
+          data.g[i] = target;
+        }
+        else
+        {
+          ++missed;
+        }
+      }
+      this->T.relocate(data);
+      this->T.setVertex(v, data);
+    }
+    return missed;
+  }
+
+private:
+  CommonTriangulation& T;
+  const SurfaceMapOptions& Options;
+  std::vector<std::map<int, Eigen::Vector3d>> Targets;
+  int TotalIterations;
+  int Done = 0;
+};
+
+/// Where sphere point p of input i lies on the input, exactly at a vertex when
+/// p is that vertex's sphere point.
+SurfacePoint surfacePoint(const MapSurface& s, const Eigen::Vector3d& p, int start)
+{
+  const SphereLocation loc = start >= 0 ? s.locator->locateFrom(p, start) : s.locator->locate(p);
+  SurfacePoint point;
+  point.triangle = loc.triangle;
+  point.barycentric = Eigen::Vector3d(loc.alpha, loc.beta, loc.gamma);
+  const auto& tri = s.triangles[loc.triangle];
+  for (int k = 0; k < 3; ++k)
+  {
+    if (s.sphere[tri[k]] == p)
+    {
+      point.barycentric = Eigen::Vector3d::Unit(k);
+    }
+  }
+  return point;
+}
+
+Eigen::Vector3d evaluatePoint(const PolygonMesh& mesh, const MapSurface& s, const SurfacePoint& p)
+{
+  const auto& tri = s.triangles[p.triangle];
+  return p.barycentric[0] * mesh.points[tri[0]] + p.barycentric[1] * mesh.points[tri[1]] +
+    p.barycentric[2] * mesh.points[tri[2]];
+}
+
+} // namespace
+
+SurfaceMapResult computeSurfaceMap(const std::vector<MapInput>& inputs,
+  const SurfaceMapOptions& options)
+{
+  const auto start = Clock::now();
+  const int n = static_cast<int>(inputs.size());
+  if (n < 1)
+  {
+    throw std::invalid_argument("a surface map needs at least one input");
+  }
+  std::vector<MapSurface> surfaces;
+  for (int i = 0; i < n; ++i)
+  {
+    surfaces.push_back(prepareSurface(inputs[i], i));
+  }
+  const std::vector<std::map<int, int>> ids = landmarkVertices(inputs);
+  alignEmbeddings(surfaces, ids, options.log);
+  for (int i = 0; i < n; ++i)
+  {
+    MapSurface& s = surfaces[i];
+    buildSamples(s, options);
+    buildLifts(s);
+  }
+  std::vector<std::map<int, Eigen::Vector3d>> targets(n);
+  for (int i = 0; i < n; ++i)
+  {
+    for (const auto& [id, v] : ids[i])
+    {
+      targets[i][id] = surfaces[i].sphere[v];
+    }
+  }
+  const bool hasLandmarks = !ids[0].empty();
+  const auto pairs = mapPairs(options.pairs, n);
+
+  CommonTriangulation T(surfaces, pairs);
+  const int total = (hasLandmarks ? options.landmarkIterations : 0) +
+    (options.coarse.enabled ? options.coarse.maxIterations : 0) +
+    (options.fine.enabled ? options.fine.maxIterations : 0);
+  Schedule schedule(T, options, targets, total);
+  SurfaceMapResult result;
+
+  if (hasLandmarks && options.landmarkIterations > 0)
+  {
+    T.weights = MapEnergyWeights();
+    T.weights.barrier = options.landmarkBarrierWeight / n;
+    T.weights.landmark = options.landmarkWeight / n;
+    MapPhaseReport report = schedule.run("landmarks", options.landmarkIterations, false, true);
+    if (!report.converged)
+    {
+      options.log(Logger::Warning,
+        "landmark phase stopped at its cap with landmark error " +
+          std::to_string(report.landmarkError) + " (tolerance " +
+          std::to_string(options.landmarkTolerance) + "); going on");
+    }
+    result.phases.push_back(report);
+  }
+  if (hasLandmarks && options.keepLandmarks)
+  {
+    const int missed = schedule.snapLandmarks();
+    if (missed > 0)
+    {
+      options.log(Logger::Warning,
+        std::to_string(missed) +
+          " landmark positions could not be snapped exactly (the "
+          "embedding would fold); they stay where the landmark phase put them");
+    }
+  }
+  T.setTrackSamples(true);
+
+  const double pairCount = std::max<std::size_t>(1, pairs.size());
+  auto runPhase = [&](const char* name, const MapPhaseOptions& phase, bool bound)
+  {
+    if (!phase.enabled || phase.maxIterations <= 0)
+    {
+      return;
+    }
+    setSizing(surfaces, inputs, phase.targetError, options);
+    T.weights = MapEnergyWeights();
+    T.weights.barrier = phase.barrierWeight / n;
+    T.weights.mesh = options.meshWeight / n;
+    T.weights.map = pairs.empty() ? 0.0 : options.mapWeight / pairCount;
+    if (bound && options.approximationBound > 0.0)
+    {
+      T.weights.bound = options.approximationBound;
+      T.weights.approximation = options.approximationWeight / n;
+    }
+    else
+    {
+      T.weights.approximation =
+        options.approximationWeight / n / (phase.targetError * phase.targetError);
+    }
+    result.phases.push_back(
+      schedule.run(name, phase.maxIterations, hasLandmarks && options.keepLandmarks, false));
+  };
+  runPhase("coarse", options.coarse, false);
+  runPhase("fine", options.fine, true);
+
+  // Outputs.
+  SurfaceMesh& mesh = T.mesh();
+  mesh.garbage_collection();
+  const int nv = static_cast<int>(mesh.n_vertices());
+  for (auto f : mesh.faces())
+  {
+    auto it = mesh.cfv_iter(f);
+    const int a = it->idx();
+    const int b = (++it)->idx();
+    const int c = (++it)->idx();
+    result.triangles.push_back({ a, b, c });
+  }
+  result.spherePositions.assign(n, std::vector<Eigen::Vector3d>(nv));
+  result.lifted.assign(n, std::vector<Eigen::Vector3d>(nv));
+  result.sourcePoints.assign(n, std::vector<SurfacePoint>(nv));
+  result.landmarks.assign(nv, -1);
+  for (int i = 0; i < n; ++i)
+  {
+    for (auto v : mesh.vertices())
+    {
+      result.spherePositions[i][v.idx()] = T.g(v, i);
+    }
+    result.certificates.push_back(certifyBijective(result.spherePositions[i], result.triangles));
+    if (!result.certificates.back().bijective)
+    {
+      throw std::runtime_error("the common triangulation's embedding on sphere " +
+        std::to_string(i) + " is not bijective: " + result.certificates.back().reason);
+    }
+    for (auto v : mesh.vertices())
+    {
+      const SurfacePoint p = surfacePoint(surfaces[i], T.g(v, i), T.liftTriangle(v, i));
+      result.sourcePoints[i][v.idx()] = p;
+      result.lifted[i][v.idx()] = evaluatePoint(inputs[i].mesh, surfaces[i], p);
+    }
+  }
+  for (auto v : mesh.vertices())
+  {
+    result.landmarks[v.idx()] = T.landmark(v);
+    const int id = T.landmark(v);
+    if (id >= 0 && options.keepLandmarks)
+    {
+      for (int i = 0; i < n; ++i)
+      {
+        result.landmarkError = std::max(result.landmarkError,
+          (result.lifted[i][v.idx()] - inputs[i].mesh.points[ids[i].at(id)]).norm());
+      }
+    }
+  }
+
+  // The exact map on input 0's vertices: f_0, then T's embedding 0 inverted
+  // (barycentric in T), T's embedding j, f_j inverted.
+  const SphereLocator onT(result.spherePositions[0], result.triangles);
+  const MapSurface& first = surfaces[0];
+  result.mappedFirst.assign(n, {});
+  result.mappedFirstSource.assign(n, {});
+  for (int j = 0; j < n; ++j)
+  {
+    result.mappedFirst[j].resize(first.points.size());
+    result.mappedFirstSource[j].resize(first.points.size());
+  }
+  for (std::size_t w = 0; w < first.points.size(); ++w)
+  {
+    const SphereLocation loc = onT.locate(first.sphere[w]);
+    const auto& tri = result.triangles[loc.triangle];
+    for (int j = 0; j < n; ++j)
+    {
+      SurfacePoint p;
+      if (j == 0)
+      {
+        p = surfacePoint(first, first.sphere[w], -1);
+      }
+      else
+      {
+        const auto& g = result.spherePositions[j];
+        const Eigen::Vector3d q =
+          (loc.alpha * g[tri[0]] + loc.beta * g[tri[1]] + loc.gamma * g[tri[2]]).normalized();
+        p = surfacePoint(surfaces[j], q, result.sourcePoints[j][tri[0]].triangle);
+      }
+      result.mappedFirstSource[j][w] = p;
+      result.mappedFirst[j][w] = evaluatePoint(inputs[j].mesh, surfaces[j], p);
+    }
+  }
+
+  // Final energy by term.
+  {
+    CommonTriangulation::Snapshot snapshot;
+    SpherePoints points;
+    T.snapshot(snapshot, points, false);
+    Objective objective;
+    T.buildObjective(snapshot, {}, objective);
+    const std::vector<double> values = objective.termValues(points);
+    for (std::size_t k = 0; k < values.size(); ++k)
+    {
+      const std::string name = objective.term(k).name();
+      double* slot = name == "barrier" ? &result.barrierEnergy
+        : name == "mesh"               ? &result.meshEnergy
+        : name == "approximation"      ? &result.approximationEnergy
+                                       : &result.mapEnergy;
+      *slot += values[k];
+    }
+    result.energy = objective.value(points);
+  }
+  result.seconds = secondsSince(start);
+  return result;
+}
+
+} // namespace surfacemaps

@@ -1,0 +1,185 @@
+// SurfaceMaps engine: bijective maps between N genus-0 surfaces through an
+// adaptive common triangulation (DESIGN.md sections 1.2-1.8).
+#pragma once
+
+#include "Log.h"
+#include "PolygonMesh.h"
+#include "SphericalTriangulation.h"
+
+#include <Eigen/Core>
+
+#include <array>
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace surfacemaps
+{
+
+/// One input surface with its fixed sphere embedding.
+struct MapInput
+{
+  /// Closed genus-0 triangle mesh (validated), in the input's own units.
+  PolygonMesh mesh;
+  /// Certified bijective sphere embedding f_i, one unit vector per vertex.
+  std::vector<Eigen::Vector3d> spherePositions;
+  /// Landmark id per vertex, -1 for none (empty: no landmarks). The same id
+  /// on two inputs means the two vertices correspond.
+  std::vector<int> landmarks;
+  /// Target edge length per vertex in the input's own units (empty: from
+  /// curvature, DESIGN.md section 1.7).
+  std::vector<double> sizing;
+};
+
+/// Which pairs of inputs the map-distortion term measures.
+enum class PairMode
+{
+  Star,     ///< (0, i) for every i > 0 (default)
+  Sequence, ///< (i, i + 1)
+  Cycle,    ///< (i, i + 1) and (N - 1, 0)
+  All,      ///< every pair i < j
+};
+
+/// The pairs (i, j) of a mode for n inputs.
+std::vector<std::array<int, 2>> mapPairs(PairMode mode, int n);
+
+/// Parameters of one phase of the schedule.
+struct MapPhaseOptions
+{
+  /// Run this phase at all.
+  bool enabled = true;
+  /// Iteration cap (one iteration = splits, collapses, flips, one Newton step).
+  int maxIterations = 50;
+  /// Approximation tolerance eps in unit-area units: weight 1/eps^2 of the
+  /// approximation term, and the curvature sizing's error.
+  double targetError = 1e-3;
+  /// Weight of the bijectivity barrier.
+  double barrierWeight = 1e-6;
+};
+
+struct SurfaceMapProgress
+{
+  /// "landmarks", "coarse", "fine", "output".
+  std::string phase;
+  int iteration = 0;
+  /// Fraction of the whole schedule's iterations done (0..1).
+  double fraction = 0.0;
+  int vertices = 0;
+  double energy = 0.0;
+};
+
+struct SurfaceMapOptions
+{
+  PairMode pairs = PairMode::Star;
+  /// Landmark phase: barrier (weight landmarkBarrierWeight) + landmarks
+  /// (landmarkWeight), ends when every landmark is within landmarkTolerance
+  /// on its sphere or at the iteration cap. Skipped without landmarks.
+  int landmarkIterations = 100;
+  double landmarkWeight = 1e6;
+  double landmarkBarrierWeight = 1.0;
+  double landmarkTolerance = 1e-4;
+  /// After the landmark phase: lock the landmark vertices (snapped exactly
+  /// onto their input vertices) or release them to the optimisation.
+  bool keepLandmarks = true;
+  /// Coarse and fine phases (DESIGN.md section 1.6).
+  MapPhaseOptions coarse{ true, 50, 1e-2, 1e-3 };
+  MapPhaseOptions fine{ true, 50, 1e-3, 1e-6 };
+  /// Term weights (DESIGN.md section 1.3).
+  double meshWeight = 1.0;
+  double mapWeight = 1.0;
+  double approximationWeight = 1.0;
+  /// Hard approximation bound in unit-area units (0: off): in the fine phase
+  /// the approximation term becomes a barrier that is infinite at this
+  /// distance from an input vertex to its base point.
+  double approximationBound = 0.0;
+  /// Input vertices per input the approximation term uses at most (a fixed,
+  /// evenly spread subsample of larger inputs).
+  int approximationSamples = 50000;
+  /// Curvature sizing clamp, unit-area units.
+  double minEdgeLength = 1e-3;
+  double maxEdgeLength = 100.0;
+  /// A phase has converged when no edit lowers the energy and the Newton
+  /// decrement is below this.
+  double decrementTolerance = 1e-4;
+  /// Largest tangent step of one point per Newton step, and the smaller one
+  /// used once T has largeMeshVertices vertices (tan 75 and tan 10 degrees).
+  double maxPointStep = 3.7320508075688772;
+  double maxPointStepLarge = 0.17632698070846498;
+  int largeMeshVertices = 4000;
+  /// Called once per iteration; return false to abort.
+  std::function<bool(const SurfaceMapProgress&)> progress;
+  Logger log;
+};
+
+/// What one phase did.
+struct MapPhaseReport
+{
+  std::string name;
+  int iterations = 0;
+  /// No edit lowered the energy and the decrement was below tolerance
+  /// (otherwise the phase stopped at its cap, which is normal).
+  bool converged = false;
+  double energy = 0.0;
+  int splits = 0, collapses = 0, flips = 0;
+  int vertices = 0;
+  /// Landmark phase: largest distance of a landmark to its target on a sphere.
+  double landmarkError = 0.0;
+  double seconds = 0.0;
+  double remeshSeconds = 0.0;
+  double derivativeSeconds = 0.0;
+  double solveSeconds = 0.0;
+  double lineSearchSeconds = 0.0;
+};
+
+/// A point of input i given by a triangle of input i and barycentric
+/// coordinates (alpha, beta, gamma) of its corners.
+struct SurfacePoint
+{
+  int triangle = -1;
+  Eigen::Vector3d barycentric = Eigen::Vector3d::Zero();
+};
+
+struct SurfaceMapResult
+{
+  /// The common triangulation T (same connectivity on every input).
+  std::vector<std::array<int, 3>> triangles;
+  /// Per input i: T's sphere embedding g_i, T lifted onto input i (original
+  /// coordinates), and where each lifted vertex lies on input i.
+  std::vector<std::vector<Eigen::Vector3d>> spherePositions;
+  std::vector<std::vector<Eigen::Vector3d>> lifted;
+  std::vector<std::vector<SurfacePoint>> sourcePoints;
+  /// Landmark id per T vertex (-1 none).
+  std::vector<int> landmarks;
+  /// Per input: certificate of T's embedding g_i (all must be bijective).
+  std::vector<BijectivityCertificate> certificates;
+  /// Per input j: the exact map applied to input 0's vertices (input 0 on
+  /// input j, original coordinates of j) and where those points lie on j.
+  std::vector<std::vector<Eigen::Vector3d>> mappedFirst;
+  std::vector<std::vector<SurfacePoint>> mappedFirstSource;
+  /// Final energy and its terms: barrier, mesh quality, approximation,
+  /// map distortion (weighted as in the last phase, unweighted values).
+  double energy = 0.0;
+  double barrierEnergy = 0.0, meshEnergy = 0.0, approximationEnergy = 0.0, mapEnergy = 0.0;
+  std::vector<MapPhaseReport> phases;
+  /// Largest distance of a kept landmark from its input vertex (original
+  /// units of each input, maximum over inputs): 0 when snapped exactly.
+  double landmarkError = 0.0;
+  double seconds = 0.0;
+};
+
+/// Thrown when the progress callback aborts the computation.
+struct SurfaceMapAborted
+{
+};
+
+/// Computes a bijective map between the inputs through an adaptive common
+/// triangulation: landmark phase, coarse and fine phases of splits,
+/// collapses, flips and projected Newton steps on the N embeddings of T.
+/// Inputs are centred and scaled to unit area internally; results are in
+/// the inputs' own coordinates. Throws std::invalid_argument on inconsistent
+/// input (sizes, landmark ids) and std::runtime_error when the result
+/// cannot be certified bijective.
+SurfaceMapResult computeSurfaceMap(const std::vector<MapInput>& inputs,
+  const SurfaceMapOptions& options = SurfaceMapOptions());
+
+} // namespace surfacemaps

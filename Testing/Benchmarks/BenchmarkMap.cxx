@@ -1,0 +1,197 @@
+// Benchmark of the surface map (not a test): wall time per stage, peak
+// memory, T size and the DESIGN.md section 6 metrics of the approximating
+// map (T_0 -> T_j) and of the exact map (input 0 -> input 0 on input j).
+//
+//   build/bin/BenchmarkMap A B [C...] [--landmarks FA FB ...]
+//     [--landmark-iterations N] [--coarse N] [--fine N] [--target-error E] [-v]
+#include "BenchmarkSupport.h"
+#include "LandmarkReader.h"
+#include "MapMetrics.h"
+#include "MeshValidation.h"
+#include "SphereEmbedding.h"
+#include "SurfaceMap.h"
+
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <iostream>
+#include <string>
+#include <vector>
+
+using namespace surfacemaps;
+
+namespace
+{
+double minMeanMinAngle(const std::vector<Eigen::Vector3d>& p,
+  const std::vector<std::array<int, 3>>& triangles,
+  double* mean)
+{
+  double smallest = 180.0, sum = 0.0;
+  for (const auto& t : triangles)
+  {
+    double m = 180.0;
+    for (int k = 0; k < 3; ++k)
+    {
+      const Eigen::Vector3d a = p[t[(k + 1) % 3]] - p[t[k]], b = p[t[(k + 2) % 3]] - p[t[k]];
+      m = std::min(m, std::atan2(a.cross(b).norm(), a.dot(b)) * 180.0 / M_PI);
+    }
+    smallest = std::min(smallest, m);
+    sum += m;
+  }
+  *mean = sum / triangles.size();
+  return smallest;
+}
+} // namespace
+
+int main(int argc, char* argv[])
+{
+  std::vector<std::string> meshes, landmarkFiles;
+  SurfaceMapOptions options;
+  bool verbose = false;
+  for (int a = 1; a < argc; ++a)
+  {
+    const std::string arg = argv[a];
+    auto value = [&]() -> const char*
+    {
+      if (a + 1 >= argc)
+      {
+        std::fprintf(stderr, "%s needs a value\n", arg.c_str());
+        std::exit(2);
+      }
+      return argv[++a];
+    };
+    if (arg == "--landmarks")
+    {
+      while (a + 1 < argc && argv[a + 1][0] != '-')
+      {
+        landmarkFiles.push_back(argv[++a]);
+      }
+    }
+    else if (arg == "--landmark-iterations")
+    {
+      options.landmarkIterations = std::atoi(value());
+    }
+    else if (arg == "--coarse")
+    {
+      options.coarse.maxIterations = std::atoi(value());
+    }
+    else if (arg == "--fine")
+    {
+      options.fine.maxIterations = std::atoi(value());
+    }
+    else if (arg == "--target-error")
+    {
+      options.fine.targetError = std::atof(value());
+    }
+    else if (arg == "-v")
+    {
+      verbose = true;
+    }
+    else
+    {
+      meshes.push_back(arg);
+    }
+  }
+  if (meshes.empty() || (!landmarkFiles.empty() && landmarkFiles.size() != meshes.size()))
+  {
+    std::fprintf(stderr,
+      "usage: BenchmarkMap A B [C...] [--landmarks FA FB ...] "
+      "[--landmark-iterations N] [--coarse N] [--fine N] [--target-error E] "
+      "[-v]\n");
+    return 2;
+  }
+  if (verbose)
+  {
+    options.log.sink = [](Logger::Level, const std::string& m) { std::cerr << m << "\n"; };
+  }
+  const auto start = std::chrono::steady_clock::now();
+  std::vector<MapInput> inputs(meshes.size());
+  double embeddingSeconds = 0.0;
+  for (std::size_t i = 0; i < meshes.size(); ++i)
+  {
+    inputs[i].mesh = benchmark::read(meshes[i]);
+    const MeshValidationResult validation = validateMesh(inputs[i].mesh);
+    if (!validation.valid())
+    {
+      std::fprintf(stderr, "%s: %s\n", meshes[i].c_str(), validation.defects[0].c_str());
+      return 2;
+    }
+    if (!landmarkFiles.empty())
+    {
+      inputs[i].landmarks = landmarkIdsFromIndices(
+        readLandmarks(landmarkFiles[i]), inputs[i].mesh.points.size(), landmarkFiles[i]);
+    }
+    const SphereEmbeddingResult embedding = embedOnSphere(inputs[i].mesh);
+    inputs[i].spherePositions = embedding.positions;
+    embeddingSeconds += embedding.seconds;
+  }
+  const SurfaceMapResult r = computeSurfaceMap(inputs, options);
+  const double seconds =
+    std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+
+  std::printf("inputs:");
+  for (std::size_t i = 0; i < meshes.size(); ++i)
+  {
+    std::printf(" %s (%zu vertices)", meshes[i].c_str(), inputs[i].mesh.points.size());
+  }
+  std::printf("\ntotal %.2f s: embeddings %.2f s, map %.2f s; peak RSS %.0f MB; T %zu vertices\n",
+    seconds,
+    embeddingSeconds,
+    r.seconds,
+    benchmark::peakMegabytes(),
+    r.lifted[0].size());
+  std::printf(
+    "| phase | iterations | converged | vertices | splits / collapses / flips | time (s) | "
+    "remesh / derivatives / solve / line search (s) |\n|---|---|---|---|---|---|---|\n");
+  for (const MapPhaseReport& p : r.phases)
+  {
+    std::printf("| %s | %d | %s | %d | %d / %d / %d | %.2f | %.2f / %.2f / %.2f / %.2f |\n",
+      p.name.c_str(),
+      p.iterations,
+      p.converged ? "yes" : "no",
+      p.vertices,
+      p.splits,
+      p.collapses,
+      p.flips,
+      p.seconds,
+      p.remeshSeconds,
+      p.derivativeSeconds,
+      p.solveSeconds,
+      p.lineSearchSeconds);
+  }
+  bool certified = true;
+  for (const auto& c : r.certificates)
+  {
+    certified = certified && c.bijective;
+  }
+  std::printf("certified: %s; landmark error %.3g\n", certified ? "yes" : "NO", r.landmarkError);
+  std::printf("| map | SD | a1.5 | a2 | max | min angle T_0 / T_j | mean min angle |\n"
+              "|---|---|---|---|---|---|---|\n");
+  for (std::size_t j = 1; j < meshes.size(); ++j)
+  {
+    const MapMetrics approx = measureMap(r.lifted[0], r.lifted[j], r.triangles);
+    const MapMetrics exact =
+      measureMap(inputs[0].mesh.points, r.mappedFirst[j], inputs[0].mesh.triangles());
+    double mean0 = 0.0, meanj = 0.0;
+    const double min0 = minMeanMinAngle(r.lifted[0], r.triangles, &mean0);
+    const double minj = minMeanMinAngle(r.lifted[j], r.triangles, &meanj);
+    std::printf("| T_0 -> T_%zu | %.4f | %.3f | %.3f | %.3g | %.1f / %.1f | %.1f / %.1f |\n",
+      j,
+      approx.symmetricDirichlet,
+      approx.areaFractionBelow(1.5),
+      approx.areaFractionBelow(2.0),
+      approx.maxDistortion,
+      min0,
+      minj,
+      mean0,
+      meanj);
+    std::printf("| input 0 -> %zu (exact) | %.4f | %.3f | %.3f | %.3g | | |\n",
+      j,
+      exact.symmetricDirichlet,
+      exact.areaFractionBelow(1.5),
+      exact.areaFractionBelow(2.0),
+      exact.maxDistortion);
+  }
+  return certified ? 0 : 3;
+}
