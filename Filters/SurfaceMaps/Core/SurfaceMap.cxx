@@ -469,6 +469,41 @@ Eigen::Vector3d evaluatePoint(const PolygonMesh& mesh, const MapSurface& s, cons
 
 } // namespace
 
+std::vector<MapSurface> prepareMapSurfaces(const std::vector<MapInput>& inputs,
+  const SurfaceMapOptions& options)
+{
+  std::vector<MapSurface> surfaces;
+  surfaces.reserve(inputs.size());
+  for (std::size_t i = 0; i < inputs.size(); ++i)
+  {
+    surfaces.push_back(prepareSurface(inputs[i], static_cast<int>(i)));
+  }
+  alignEmbeddings(surfaces, landmarkVertices(inputs), options.log);
+  for (MapSurface& s : surfaces)
+  {
+    buildSamples(s, options);
+    buildLifts(s);
+  }
+  return surfaces;
+}
+
+std::vector<std::map<int, Eigen::Vector3d>> landmarkTargets(const std::vector<MapSurface>& surfaces)
+{
+  std::vector<std::map<int, Eigen::Vector3d>> targets(surfaces.size());
+  for (std::size_t i = 0; i < surfaces.size(); ++i)
+  {
+    const std::vector<int>& ids = surfaces[i].landmarks;
+    for (std::size_t v = 0; v < ids.size(); ++v)
+    {
+      if (ids[v] >= 0)
+      {
+        targets[i][ids[v]] = surfaces[i].sphere[v];
+      }
+    }
+  }
+  return targets;
+}
+
 SurfaceMapResult computeSurfaceMap(const std::vector<MapInput>& inputs,
   const SurfaceMapOptions& options)
 {
@@ -478,27 +513,9 @@ SurfaceMapResult computeSurfaceMap(const std::vector<MapInput>& inputs,
   {
     throw std::invalid_argument("a surface map needs at least one input");
   }
-  std::vector<MapSurface> surfaces;
-  for (int i = 0; i < n; ++i)
-  {
-    surfaces.push_back(prepareSurface(inputs[i], i));
-  }
+  std::vector<MapSurface> surfaces = prepareMapSurfaces(inputs, options);
   const std::vector<std::map<int, int>> ids = landmarkVertices(inputs);
-  alignEmbeddings(surfaces, ids, options.log);
-  for (int i = 0; i < n; ++i)
-  {
-    MapSurface& s = surfaces[i];
-    buildSamples(s, options);
-    buildLifts(s);
-  }
-  std::vector<std::map<int, Eigen::Vector3d>> targets(n);
-  for (int i = 0; i < n; ++i)
-  {
-    for (const auto& [id, v] : ids[i])
-    {
-      targets[i][id] = surfaces[i].sphere[v];
-    }
-  }
+  const std::vector<std::map<int, Eigen::Vector3d>> targets = landmarkTargets(surfaces);
   const bool hasLandmarks = !ids[0].empty();
   const auto pairs = mapPairs(options.pairs, n);
 

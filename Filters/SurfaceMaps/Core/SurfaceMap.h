@@ -2,6 +2,7 @@
 // adaptive common triangulation (DESIGN.md sections 1.2-1.8).
 #pragma once
 
+#include "CommonTriangulation.h"
 #include "Log.h"
 #include "PolygonMesh.h"
 #include "SphericalTriangulation.h"
@@ -10,6 +11,7 @@
 
 #include <array>
 #include <functional>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -181,5 +183,16 @@ struct SurfaceMapAborted
 /// cannot be certified bijective.
 SurfaceMapResult computeSurfaceMap(const std::vector<MapInput>& inputs,
   const SurfaceMapOptions& options = SurfaceMapOptions());
+
+/// The inputs as the energy sees them (centred, unit area, embeddings of
+/// inputs 1.. rotated onto input 0's through the landmarks, lifts, samples).
+/// The surfaces refer to their own members: keep the returned vector as it is
+/// (no insertion) while a CommonTriangulation uses it. Exposed for tests.
+std::vector<MapSurface> prepareMapSurfaces(const std::vector<MapInput>& inputs,
+  const SurfaceMapOptions& options = SurfaceMapOptions());
+
+/// Landmark id -> the landmark's point on each input's (aligned) sphere.
+std::vector<std::map<int, Eigen::Vector3d>> landmarkTargets(
+  const std::vector<MapSurface>& surfaces);
 
 } // namespace surfacemaps

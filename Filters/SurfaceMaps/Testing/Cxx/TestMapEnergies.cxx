@@ -1,0 +1,138 @@
+// The surface map's energy terms: derivatives against finite differences.
+#include "CommonTriangulation.h"
+#include "FiniteDifferences.h"
+#include "MapDistortionEnergy.h"
+#include "MapTestInputs.h"
+#include "MeshQualityEnergy.h"
+#include "SurfaceMap.h"
+
+#include <gtest/gtest.h>
+
+#include <random>
+
+using namespace surfacemaps;
+using namespace surfacemaps::testing;
+
+namespace
+{
+struct EnergyCase
+{
+  std::vector<MapSurface> surfaces;
+  std::unique_ptr<CommonTriangulation> T;
+  CommonTriangulation::Snapshot snapshot;
+  SpherePoints points;
+
+  explicit EnergyCase(const MapEnergyWeights& weights)
+  {
+    std::vector<MapInput> inputs{ icosphereInput(1, 0.0, { 1.0, 1.0, 1.0 }),
+      icosphereInput(2, 0.3, { 1.4, 1.0, 0.8 }, 0.3) };
+    for (MapInput& input : inputs)
+    {
+      setLandmarks(input, { { 0, 0, 1 }, { 1, 0, 0 } });
+    }
+    this->surfaces = prepareMapSurfaces(inputs);
+    for (MapSurface& s : this->surfaces)
+    {
+      s.sizing.assign(s.points.size(), 0.3);
+    }
+    this->T = std::make_unique<CommonTriangulation>(this->surfaces, mapPairs(PairMode::Star, 2));
+    this->T->weights = weights;
+    this->T->setTrackSamples(true);
+    this->T->updateTargetLengths();
+    this->T->snapshot(this->snapshot, this->points, false);
+    // Off the input vertices, so that lifts are inside triangles.
+    std::mt19937 random(3);
+    std::uniform_real_distribution<double> uniform(-0.02, 0.02);
+    Eigen::VectorXd step(this->points.numberOfVariables());
+    for (Eigen::Index k = 0; k < step.size(); ++k)
+    {
+      step[k] = uniform(random);
+    }
+    this->points.retract(step, 1.0);
+    this->points.recentreBases();
+    EXPECT_TRUE(this->T->update(this->snapshot, this->points));
+  }
+
+  void expectDerivativesMatch()
+  {
+    Objective objective;
+    this->T->buildObjective(this->snapshot, landmarkTargets(this->surfaces), objective);
+    Eigen::VectorXd g;
+    Eigen::SparseMatrix<double> H;
+    const double e = objective.hessian(this->points, -1.0, g, H);
+    ASSERT_TRUE(std::isfinite(e));
+    EXPECT_DOUBLE_EQ(e, objective.value(this->points));
+    auto f = [&](const Eigen::VectorXd& x)
+    {
+      SpherePoints moved = this->points;
+      moved.retract(x, 1.0);
+      return objective.value(moved);
+    };
+    const Eigen::VectorXd x0 = Eigen::VectorXd::Zero(this->points.numberOfVariables());
+    EXPECT_LT(relativeError(g, finiteDifferenceGradient(f, x0)), 1e-6);
+    const Eigen::MatrixXd full = Eigen::MatrixXd(H).selfadjointView<Eigen::Upper>();
+    EXPECT_LT(relativeError(full, finiteDifferenceHessian(f, x0)), 1e-4);
+  }
+};
+} // namespace
+
+TEST(MapEnergies, AllTermsMatchFiniteDifferences)
+{
+  MapEnergyWeights w;
+  w.barrier = 0.01;
+  w.mesh = 1.0;
+  w.approximation = 10.0;
+  w.landmark = 5.0;
+  w.map = 1.0;
+  EnergyCase c(w);
+  c.expectDerivativesMatch();
+}
+
+TEST(MapEnergies, HardApproximationBoundMatchesFiniteDifferences)
+{
+  MapEnergyWeights w;
+  w.barrier = 0.01;
+  w.approximation = 1.0;
+  w.bound = 0.5;
+  EnergyCase c(w);
+  c.expectDerivativesMatch();
+}
+
+TEST(MapEnergies, TermsVanishOrAreMinimalWhereTheyShould)
+{
+  // Map distortion of a triangle onto a congruent one is its area (SD 1 per
+  // unit area); mesh quality of an equilateral triangle of the target size too.
+  const Eigen::Vector3d a(0, 0, 0), b(1, 0, 0), c(0.5, std::sqrt(3.0) / 2, 0);
+  const double area = std::sqrt(3.0) / 4;
+  EXPECT_NEAR(mapDistortionEnergy<double>({ a, b, c }, { b, c, a }), area, 1e-12);
+  EXPECT_NEAR(meshQualityEnergy<double>(a, b, c, 1.0), area, 1e-12);
+  EXPECT_GT(meshQualityEnergy<double>(a, b, c, 0.5), area);
+  EXPECT_GT(meshQualityEnergy<double>(a, b, c, 2.0), area);
+  // An input vertex at its base point costs nothing; the bound is a barrier.
+  const std::array<Eigen::Vector3d, 3> g{
+    Eigen::Vector3d(1, 0, 0), Eigen::Vector3d(0, 1, 0), Eigen::Vector3d(0, 0, 1)
+  };
+  const Eigen::Vector3d q = Eigen::Vector3d(1, 1, 1).normalized();
+  const Eigen::Vector3d centroid = (a + b + c) / 3.0;
+  EXPECT_NEAR(squaredBaseDistance<double>(q, centroid, g, { a, b, c }), 0.0, 1e-24);
+  const double d2 =
+    squaredBaseDistance<double>(q, centroid + Eigen::Vector3d(0, 0, 0.1), g, { a, b, c });
+  EXPECT_NEAR(d2, 0.01, 1e-12);
+  EXPECT_NEAR(approximationEnergy<double>(d2, 2.0, 0.0), 0.02, 1e-12);
+  EXPECT_TRUE(std::isinf(approximationEnergy<double>(d2, 2.0, 0.1)));
+  EXPECT_NEAR(approximationEnergy<double>(d2, 2.0, 0.2), 2.0 * 1e-3 / (8e-3 - 1e-3), 1e-12);
+}
+
+TEST(MapEnergies, LiftIsTheBarycentricInverseOfTheEmbedding)
+{
+  const Eigen::Vector3d A(0, 0, 0), B(2, 0, 0), C(0, 1, 1);
+  const Eigen::Vector3d a = Eigen::Vector3d(1, 0.1, 0.2).normalized();
+  const Eigen::Vector3d b = Eigen::Vector3d(0.1, 1, 0.1).normalized();
+  const Eigen::Vector3d c = Eigen::Vector3d(0.2, 0.1, 1).normalized();
+  const Lift lift(A, B, C, a, b, c);
+  EXPECT_LT((lift(a) - A).norm(), 1e-14);
+  EXPECT_LT((lift(b) - B).norm(), 1e-14);
+  EXPECT_LT((lift(c) - C).norm(), 1e-14);
+  const Eigen::Vector3d p = (0.2 * a + 0.3 * b + 0.5 * c).normalized();
+  EXPECT_LT((lift(p) - (0.2 * A + 0.3 * B + 0.5 * C)).norm(), 1e-14);
+}

@@ -1,0 +1,190 @@
+// Edge splits, collapses and flips of the common triangulation: each changes
+// the total energy by exactly its local gain and keeps every invariant.
+#include "MapTestInputs.h"
+#include "Predicates.h"
+#include "Remeshing.h"
+#include "SurfaceMap.h"
+
+#include <gtest/gtest.h>
+
+#include <limits>
+
+using namespace surfacemaps;
+using namespace surfacemaps::testing;
+
+namespace
+{
+constexpr double Always = -std::numeric_limits<double>::infinity();
+
+class RemeshingTest : public ::testing::Test
+{
+protected:
+  void SetUp() override
+  {
+    std::vector<MapInput> inputs{ icosphereInput(2, 0.0, { 1.0, 1.0, 1.0 }),
+      icosphereInput(2, 0.4, { 1.5, 1.0, 0.7 }, 0.4) };
+    setLandmarks(inputs[0], { { 0, 0, 1 } });
+    setLandmarks(inputs[1], { { 0, 0, 1 } });
+    this->surfaces = prepareMapSurfaces(inputs);
+    for (MapSurface& s : this->surfaces)
+    {
+      s.sizing.assign(s.points.size(), 0.25);
+    }
+    this->T = std::make_unique<CommonTriangulation>(this->surfaces, mapPairs(PairMode::Star, 2));
+    MapEnergyWeights& w = this->T->weights;
+    w.barrier = 1e-3;
+    w.mesh = 1.0;
+    w.approximation = 100.0;
+    w.map = 1.0;
+    this->T->setTrackSamples(true);
+    this->T->updateTargetLengths();
+  }
+
+  /// Closed 2-manifold of genus 0, certified on every sphere, every sample in
+  /// exactly one face that contains it, landmarks kept.
+  void expectInvariants()
+  {
+    SurfaceMesh& mesh = this->T->mesh();
+    mesh.garbage_collection();
+    long long boundary = 0;
+    for (auto e : mesh.edges())
+    {
+      boundary += mesh.is_boundary(e) ? 1 : 0;
+    }
+    EXPECT_EQ(boundary, 0);
+    EXPECT_EQ(static_cast<long long>(mesh.n_vertices()) - static_cast<long long>(mesh.n_edges()) +
+        static_cast<long long>(mesh.n_faces()),
+      2);
+    std::vector<std::array<int, 3>> triangles;
+    for (auto f : mesh.faces())
+    {
+      auto it = mesh.cfv_iter(f);
+      const int a = it->idx();
+      const int b = (++it)->idx();
+      const int c = (++it)->idx();
+      triangles.push_back({ a, b, c });
+    }
+    int landmarks = 0;
+    for (auto v : mesh.vertices())
+    {
+      landmarks += this->T->landmark(v) >= 0 ? 1 : 0;
+    }
+    EXPECT_EQ(landmarks, 1);
+    for (int i = 0; i < 2; ++i)
+    {
+      std::vector<Eigen::Vector3d> g(mesh.n_vertices());
+      for (auto v : mesh.vertices())
+      {
+        g[v.idx()] = this->T->g(v, i);
+      }
+      const BijectivityCertificate c = certifyBijective(g, triangles);
+      EXPECT_TRUE(c.bijective) << c.reason;
+      std::vector<int> count(this->surfaces[i].samples.spherePoints.size(), 0);
+      for (auto f : mesh.faces())
+      {
+        for (int s : this->T->faceSamples(f, i))
+        {
+          ++count[s];
+          const Eigen::Vector3d& q = this->surfaces[i].samples.spherePoints[s];
+          const auto& t = triangles[f.idx()];
+          EXPECT_GE(orient3dOrigin(g[t[0]], g[t[1]], q), 0);
+          EXPECT_GE(orient3dOrigin(g[t[1]], g[t[2]], q), 0);
+          EXPECT_GE(orient3dOrigin(g[t[2]], g[t[0]], q), 0);
+        }
+      }
+      for (int c : count)
+      {
+        EXPECT_EQ(c, 1);
+      }
+    }
+  }
+
+  /// Applies `apply` to the first `count` edges (by index, from `first`) whose
+  /// gain is finite and checks total energy change == gain.
+  template<typename Gain, typename Apply>
+  int checkEdits(Gain gain, Apply apply, int count)
+  {
+    int done = 0;
+    for (int k = 0; done < count && k < static_cast<int>(this->T->mesh().n_edges()); k += 7)
+    {
+      const auto e = this->T->mesh().edge_handle(k);
+      const double expected = gain(e);
+      if (!std::isfinite(expected))
+      {
+        continue;
+      }
+      const double before = this->T->totalEnergy();
+      EXPECT_TRUE(apply(this->T->mesh().edge_handle(k)));
+      const double after = this->T->totalEnergy();
+      EXPECT_NEAR(before - after, expected, 1e-9 * std::abs(before)) << "edge " << k;
+      this->expectInvariants();
+      ++done;
+    }
+    return done;
+  }
+
+  std::vector<MapSurface> surfaces;
+  std::unique_ptr<CommonTriangulation> T;
+};
+} // namespace
+
+TEST_F(RemeshingTest, InitialStateSatisfiesTheInvariants)
+{
+  this->expectInvariants();
+}
+
+TEST_F(RemeshingTest, SplitChangesTheEnergyByItsLocalGain)
+{
+  const int done = this->checkEdits([&](OpenMesh::EdgeHandle e) { return splitGain(*this->T, e); },
+    [&](OpenMesh::EdgeHandle e) { return applySplit(*this->T, e, Always); },
+    6);
+  EXPECT_EQ(done, 6);
+}
+
+TEST_F(RemeshingTest, CollapseChangesTheEnergyByItsLocalGain)
+{
+  const int done = this->checkEdits([&](OpenMesh::EdgeHandle e)
+    { return collapseGain(*this->T, this->T->mesh().halfedge_handle(e, 0)); },
+    [&](OpenMesh::EdgeHandle e)
+    { return applyCollapse(*this->T, this->T->mesh().halfedge_handle(e, 0), Always); },
+    6);
+  EXPECT_EQ(done, 6);
+}
+
+TEST_F(RemeshingTest, FlipChangesTheEnergyByItsLocalGain)
+{
+  const int done = this->checkEdits([&](OpenMesh::EdgeHandle e) { return flipGain(*this->T, e); },
+    [&](OpenMesh::EdgeHandle e) { return applyFlip(*this->T, e, Always); },
+    6);
+  EXPECT_EQ(done, 6);
+}
+
+TEST_F(RemeshingTest, NoEditTouchesALandmarkEdgeOrJoinsTwoLandmarks)
+{
+  SurfaceMesh& mesh = this->T->mesh();
+  for (auto h : mesh.halfedges())
+  {
+    if (this->T->landmark(mesh.from_vertex_handle(h)) >= 0 ||
+      this->T->landmark(mesh.to_vertex_handle(h)) >= 0)
+    {
+      EXPECT_FALSE(std::isfinite(collapseGain(*this->T, h)));
+    }
+  }
+  // Make two landmarks opposite an edge: a flip must not join them.
+  const auto e = mesh.edge_handle(0);
+  const auto h = mesh.halfedge_handle(e, 0);
+  const auto x = mesh.to_vertex_handle(mesh.next_halfedge_handle(h));
+  const auto y = mesh.to_vertex_handle(mesh.next_halfedge_handle(mesh.opposite_halfedge_handle(h)));
+  this->T->setLandmark(x, 7);
+  this->T->setLandmark(y, 8);
+  EXPECT_FALSE(std::isfinite(flipGain(*this->T, e)));
+}
+
+TEST_F(RemeshingTest, RoundLowersTheEnergyAndKeepsInvariants)
+{
+  const double before = this->T->totalEnergy();
+  const RemeshingResult r = remesh(*this->T);
+  EXPECT_GT(r.splits + r.collapses + r.flips, 0);
+  EXPECT_LT(this->T->totalEnergy(), before);
+  this->expectInvariants();
+}

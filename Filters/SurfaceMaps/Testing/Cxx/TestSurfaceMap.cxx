@@ -1,0 +1,172 @@
+// The surface map schedule on small inputs with short schedules.
+#include "MapMetrics.h"
+#include "MapTestInputs.h"
+#include "SurfaceMap.h"
+
+#include <gtest/gtest.h>
+
+using namespace surfacemaps;
+using namespace surfacemaps::testing;
+
+namespace
+{
+SurfaceMapOptions shortSchedule(int coarse, int fine)
+{
+  SurfaceMapOptions options;
+  options.landmarkIterations = 20;
+  options.coarse.maxIterations = coarse;
+  options.fine.maxIterations = fine;
+  options.fine.targetError = 5e-3;
+  return options;
+}
+
+std::vector<MapInput> landmarkPair()
+{
+  std::vector<MapInput> inputs{ icosphereInput(3, 0.0, { 1.0, 1.0, 1.0 }, 0.3),
+    icosphereInput(3, 0.5, { 1.4, 1.0, 0.8 }) };
+  setLandmarks(inputs[0], { { 0, 0, 1 }, { 1, 0, 0 }, { 0, 1, 0.2 } });
+  setLandmarks(inputs[1], { { 0.1, 0, 1 }, { 1, 0.2, 0 }, { -0.1, 1, 0.3 } });
+  return inputs;
+}
+
+void expectCertified(const SurfaceMapResult& r)
+{
+  for (const BijectivityCertificate& c : r.certificates)
+  {
+    EXPECT_TRUE(c.bijective) << c.reason;
+  }
+}
+} // namespace
+
+TEST(SurfaceMap, PairModes)
+{
+  using P = std::vector<std::array<int, 2>>;
+  EXPECT_EQ(mapPairs(PairMode::Star, 4), (P{ { 0, 1 }, { 0, 2 }, { 0, 3 } }));
+  EXPECT_EQ(mapPairs(PairMode::Sequence, 3), (P{ { 0, 1 }, { 1, 2 } }));
+  EXPECT_EQ(mapPairs(PairMode::Cycle, 3), (P{ { 0, 1 }, { 1, 2 }, { 2, 0 } }));
+  EXPECT_EQ(mapPairs(PairMode::All, 3), (P{ { 0, 1 }, { 0, 2 }, { 1, 2 } }));
+  EXPECT_TRUE(mapPairs(PairMode::Star, 1).empty());
+}
+
+TEST(SurfaceMap, LandmarkPhaseCoarsensAndReachesTheLandmarks)
+{
+  SurfaceMapOptions options = shortSchedule(0, 0);
+  options.coarse.enabled = false;
+  options.fine.enabled = false;
+  const std::vector<MapInput> inputs = landmarkPair();
+  const SurfaceMapResult r = computeSurfaceMap(inputs, options);
+  expectCertified(r);
+  ASSERT_EQ(r.phases.size(), 1u);
+  EXPECT_EQ(r.phases[0].name, "landmarks");
+  EXPECT_TRUE(r.phases[0].converged);
+  EXPECT_LT(r.phases[0].landmarkError, options.landmarkTolerance);
+  EXPECT_LT(r.lifted[0].size(), inputs[0].mesh.points.size() / 10);
+}
+
+TEST(SurfaceMap, KeptLandmarksHoldExactly)
+{
+  const std::vector<MapInput> inputs = landmarkPair();
+  const SurfaceMapResult r = computeSurfaceMap(inputs, shortSchedule(3, 3));
+  expectCertified(r);
+  EXPECT_EQ(r.landmarkError, 0.0);
+  int found = 0;
+  for (std::size_t v = 0; v < r.landmarks.size(); ++v)
+  {
+    if (r.landmarks[v] < 0)
+    {
+      continue;
+    }
+    ++found;
+    for (int i = 0; i < 2; ++i)
+    {
+      const auto& ids = inputs[i].landmarks;
+      const int w =
+        static_cast<int>(std::find(ids.begin(), ids.end(), r.landmarks[v]) - ids.begin());
+      EXPECT_EQ(r.lifted[i][v], inputs[i].mesh.points[w]);
+    }
+  }
+  EXPECT_EQ(found, 3);
+}
+
+TEST(SurfaceMap, SmallerTargetErrorGivesAFinerTriangulation)
+{
+  const std::vector<MapInput> inputs{ icosphereInput(3, 0.0, { 1.0, 1.0, 1.0 }, 0.5),
+    icosphereInput(3, 0.2, { 1.3, 1.0, 0.8 }, 0.2) };
+  SurfaceMapOptions options = shortSchedule(3, 6);
+  options.fine.targetError = 1e-2;
+  const SurfaceMapResult coarse = computeSurfaceMap(inputs, options);
+  options.fine.targetError = 2e-3;
+  const SurfaceMapResult fine = computeSurfaceMap(inputs, options);
+  expectCertified(coarse);
+  expectCertified(fine);
+  EXPECT_GT(fine.lifted[0].size(), 1.3 * coarse.lifted[0].size());
+}
+
+TEST(SurfaceMap, SingleInputIsABijectiveRemeshing)
+{
+  const std::vector<MapInput> inputs{ icosphereInput(3, 0.0, { 1.0, 0.8, 0.6 }, 0.4) };
+  const SurfaceMapResult r = computeSurfaceMap(inputs, shortSchedule(3, 5));
+  expectCertified(r);
+  ASSERT_EQ(r.lifted.size(), 1u);
+  EXPECT_GT(r.lifted[0].size(), 20u);
+  EXPECT_EQ(r.mappedFirst[0], inputs[0].mesh.points); // the identity, exactly
+  // Every lifted vertex lies on its source triangle of the input.
+  for (std::size_t v = 0; v < r.lifted[0].size(); ++v)
+  {
+    const SurfacePoint& p = r.sourcePoints[0][v];
+    EXPECT_NEAR(p.barycentric.sum(), 1.0, 1e-12);
+    EXPECT_GE(p.barycentric.minCoeff(), -1e-9);
+  }
+}
+
+TEST(SurfaceMap, ThreeInputsShareOneCertifiedTriangulation)
+{
+  const std::vector<MapInput> inputs{ icosphereInput(2, 0.0, { 1.0, 1.0, 1.0 }, 0.3),
+    icosphereInput(3, 0.3, { 1.4, 1.0, 0.8 }),
+    icosphereInput(2, -0.2, { 0.8, 1.2, 1.0 }, 0.2) };
+  SurfaceMapOptions options = shortSchedule(3, 4);
+  options.pairs = PairMode::All;
+  const SurfaceMapResult r = computeSurfaceMap(inputs, options);
+  ASSERT_EQ(r.certificates.size(), 3u);
+  expectCertified(r);
+  for (int i = 0; i < 3; ++i)
+  {
+    EXPECT_EQ(r.lifted[i].size(), r.lifted[0].size());
+    EXPECT_EQ(r.mappedFirst[i].size(), inputs[0].mesh.points.size());
+    const MapMetrics m = measureMap(r.lifted[0], r.lifted[i], r.triangles);
+    EXPECT_EQ(m.degenerateTriangles, 0);
+    EXPECT_LT(m.symmetricDirichlet, 2.0);
+  }
+}
+
+TEST(SurfaceMap, ProgressIsMonotoneAndCanAbort)
+{
+  const std::vector<MapInput> inputs = landmarkPair();
+  SurfaceMapOptions options = shortSchedule(3, 3);
+  std::vector<double> fractions;
+  options.progress = [&](const SurfaceMapProgress& p)
+  {
+    fractions.push_back(p.fraction);
+    return true;
+  };
+  computeSurfaceMap(inputs, options);
+  ASSERT_GE(fractions.size(), 6u);
+  EXPECT_TRUE(std::is_sorted(fractions.begin(), fractions.end()));
+  EXPECT_LE(fractions.back(), 1.0);
+
+  int calls = 0;
+  options.progress = [&](const SurfaceMapProgress&) { return ++calls < 2; };
+  EXPECT_THROW(computeSurfaceMap(inputs, options), SurfaceMapAborted);
+  EXPECT_EQ(calls, 2);
+}
+
+TEST(SurfaceMap, InconsistentInputIsRejected)
+{
+  std::vector<MapInput> inputs = landmarkPair();
+  inputs[1].landmarks[0] = 9; // landmark 9 only on input 1
+  EXPECT_THROW(computeSurfaceMap(inputs), std::invalid_argument);
+  inputs = landmarkPair();
+  inputs[1].spherePositions.pop_back();
+  EXPECT_THROW(computeSurfaceMap(inputs), std::invalid_argument);
+  EXPECT_THROW(computeSurfaceMap({}), std::invalid_argument);
+}
