@@ -99,9 +99,9 @@ struct ApproximationEnergy
   {
     const std::array<int, 3> idx = this->points(e);
     const auto& L = *this->lifts;
-    const std::array<Eigen::Matrix<T, 3, 1>, 3> lifted{
-      (*L[idx[0]])(p[0]), (*L[idx[1]])(p[1]), (*L[idx[2]])(p[2])
-    };
+    // For derivatives T has six variables: the lifts' own form is T's.
+    const std::array<Eigen::Matrix<T, 3, 1>, 3> lifted =
+      liftTriangle<T>({ L[idx[0]], L[idx[1]], L[idx[2]] }, p, 0);
     const T d2 = squaredBaseDistance<T>(
       this->samples->spherePoints[e], this->samples->positions[e], p, lifted);
     return approximationEnergy<T>(d2, this->scale * this->samples->weights[e], this->bound);

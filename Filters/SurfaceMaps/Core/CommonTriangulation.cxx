@@ -1,6 +1,7 @@
 #include "CommonTriangulation.h"
 
 #include "BarrierEnergy.h"
+#include "BijectivityBarrier.h"
 #include "LandmarkEnergy.h"
 #include "MapDistortionEnergy.h"
 #include "MeshQualityEnergy.h"
@@ -56,6 +57,7 @@ CommonTriangulation::CommonTriangulation(std::vector<MapSurface>& surfaces,
   }
   this->Mesh.add_property(this->Landmark);
   this->Mesh.add_property(this->Length);
+  this->Mesh.add_property(this->Energy);
 
   const MapSurface& first = surfaces[0];
   for (const Eigen::Vector3d& p : first.points)
@@ -114,6 +116,7 @@ MapVertex CommonTriangulation::vertex(OpenMesh::VertexHandle v) const
 
 void CommonTriangulation::setVertex(OpenMesh::VertexHandle v, const MapVertex& data)
 {
+  // The faces around v change energy; remeshing rewrites them after an edit.
   for (int i = 0; i < this->numberOfInputs(); ++i)
   {
     this->Mesh.property(this->G[i], v) = data.g[i];
@@ -288,10 +291,15 @@ double CommonTriangulation::localEnergy(const std::vector<MapVertex>& vertices,
   const std::vector<double>& lengths,
   const std::vector<std::vector<int>>& samples,
   bool validate,
-  LocalAssignment* assignment) const
+  LocalAssignment* assignment,
+  std::vector<double>* perTriangle) const
 {
   const int n = this->numberOfInputs();
   double energy = 0.0;
+  if (perTriangle)
+  {
+    perTriangle->assign(triangles.size(), 0.0);
+  }
   for (std::size_t t = 0; t < triangles.size(); ++t)
   {
     const MapVertex& a = vertices[triangles[t][0]];
@@ -308,7 +316,12 @@ double CommonTriangulation::localEnergy(const std::vector<MapVertex>& vertices,
         }
       }
     }
-    energy += this->triangleEnergy(a, b, c, lengths[t]);
+    const double e = this->triangleEnergy(a, b, c, lengths[t]);
+    energy += e;
+    if (perTriangle)
+    {
+      (*perTriangle)[t] += e;
+    }
   }
   if (assignment)
   {
@@ -341,12 +354,51 @@ double CommonTriangulation::localEnergy(const std::vector<MapVertex>& vertices,
         if (this->weights.approximation > 0.0)
         {
           const auto& tri = triangles[found];
-          energy += this->sampleEnergy(i, s, vertices[tri[0]], vertices[tri[1]], vertices[tri[2]]);
+          const double e =
+            this->sampleEnergy(i, s, vertices[tri[0]], vertices[tri[1]], vertices[tri[2]]);
+          energy += e;
+          if (perTriangle)
+          {
+            (*perTriangle)[found] += e;
+          }
         }
       }
     }
   }
   return std::isfinite(energy) ? energy : Infinity;
+}
+
+void CommonTriangulation::updateFaceEnergies()
+{
+  std::vector<OpenMesh::FaceHandle> faces;
+  faces.reserve(this->Mesh.n_faces());
+  for (auto f : this->Mesh.faces())
+  {
+    faces.push_back(f);
+  }
+  const int n = this->numberOfInputs();
+#pragma omp parallel for schedule(dynamic, 256)
+  for (long long k = 0; k < static_cast<long long>(faces.size()); ++k)
+  {
+    const OpenMesh::FaceHandle f = faces[k];
+    auto it = this->Mesh.cfv_iter(f);
+    const MapVertex a = this->vertex(*it);
+    const MapVertex b = this->vertex(*++it);
+    const MapVertex c = this->vertex(*++it);
+    double energy = this->triangleEnergy(a, b, c, this->targetLength(f));
+    if (this->TrackSamples && this->weights.approximation > 0.0)
+    {
+      for (int i = 0; i < n; ++i)
+      {
+        for (int s : this->faceSamples(f, i))
+        {
+          energy += this->sampleEnergy(i, s, a, b, c);
+        }
+      }
+    }
+    this->Mesh.property(this->Energy, f) = energy;
+  }
+  this->FaceEnergiesValid = true;
 }
 
 void CommonTriangulation::snapshot(Snapshot& s, SpherePoints& points, bool lockLandmarks)
@@ -472,6 +524,7 @@ bool CommonTriangulation::update(Snapshot& s, const SpherePoints& points) const
 
 void CommonTriangulation::writeBack(const Snapshot& s, const SpherePoints& points)
 {
+  this->FaceEnergiesValid = false;
   const int n = this->numberOfInputs();
   const int nv = s.vertices;
   for (int i = 0; i < n; ++i)
@@ -514,11 +567,20 @@ void CommonTriangulation::buildObjective(const Snapshot& s,
   {
     if (w.barrier > 0.0)
     {
-      BarrierEnergy barrier;
-      barrier.triangles = s.triangles;
-      barrier.offset = i * nv;
-      objective.addTerm(
-        std::make_shared<ElementTerm<3, BarrierEnergy>>("barrier", std::move(barrier)), w.barrier);
+      if (w.exactBarrierHessian)
+      {
+        BarrierEnergy barrier;
+        barrier.triangles = s.triangles;
+        barrier.offset = i * nv;
+        objective.addTerm(
+          std::make_shared<ElementTerm<3, BarrierEnergy>>("barrier", std::move(barrier)),
+          w.barrier);
+      }
+      else
+      {
+        objective.addTerm(
+          std::make_shared<BijectivityBarrierTerm>(&s.triangles, i * nv), w.barrier);
+      }
     }
     if (w.mesh > 0.0)
     {

@@ -52,6 +52,10 @@ struct MapEnergyWeights
   double map = 0.0;
   /// Hard approximation bound (unit-area units), 0: soft term.
   double bound = 0.0;
+  /// Project the barrier's exact Hessian (eigenvalue clamp) instead of using
+  /// its cheap Gauss-Newton form; worth it where the barrier dominates (the
+  /// landmark phase), not where its weight is tiny.
+  bool exactBarrierHessian = false;
 };
 
 /// A vertex of T as the local energy sees it: per input its sphere point, its
@@ -156,7 +160,21 @@ public:
     const std::vector<double>& lengths,
     const std::vector<std::vector<int>>& samples,
     bool validate,
-    LocalAssignment* assignment) const;
+    LocalAssignment* assignment,
+    std::vector<double>* perTriangle = nullptr) const;
+
+  /// Energy of each face (its per-triangle terms plus its samples' terms),
+  /// cached for a remeshing round: remeshing reads the energy an edit removes
+  /// from here instead of recomputing it, and stores the new faces' energies.
+  /// Valid only while no vertex moves and the weights stay the same.
+  void updateFaceEnergies();
+  void invalidateFaceEnergies() { this->FaceEnergiesValid = false; }
+  bool faceEnergiesValid() const { return this->FaceEnergiesValid; }
+  double faceEnergy(OpenMesh::FaceHandle f) const { return this->Mesh.property(this->Energy, f); }
+  void setFaceEnergy(OpenMesh::FaceHandle f, double energy)
+  {
+    this->Mesh.property(this->Energy, f) = energy;
+  }
   static constexpr double minDet = 1e-16;
 
   /// A flat copy of T for the Newton step and for global evaluations.
@@ -203,6 +221,8 @@ private:
   std::vector<OpenMesh::VPropHandleT<int>> LiftTriangle;
   OpenMesh::VPropHandleT<int> Landmark;
   OpenMesh::FPropHandleT<double> Length;
+  OpenMesh::FPropHandleT<double> Energy;
+  bool FaceEnergiesValid = false;
   std::vector<OpenMesh::FPropHandleT<std::vector<int>>> Samples;
   bool TrackSamples = false;
   // The surfaces' triangle neighbours, for walks.

@@ -6,6 +6,8 @@
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 
+#include <array>
+
 namespace surfacemaps
 {
 
@@ -48,5 +50,43 @@ struct Lift
     return q;
   }
 };
+
+/// The lifts of three corners of an element, with derivatives. Corner c is
+/// element point `first + c`, which depends on the element's variables
+/// 2 (first + c) and +1 only, so each lift is computed with two variables
+/// (cheap) and placed at variables 2c, 2c + 1 of a six-variable result; for
+/// a plain double the lifts themselves.
+template<typename T, std::size_t NV>
+auto liftTriangle(const std::array<const Lift*, 3>& lifts,
+  const std::array<Eigen::Matrix<T, 3, 1>, NV>& p,
+  int first)
+{
+  if constexpr (IsDual<T>::value)
+  {
+    using D2 = Dual<2, T::HasHessian>;
+    using D6 = Dual<6, T::HasHessian>;
+    std::array<Eigen::Matrix<D6, 3, 1>, 3> lifted;
+    for (int c = 0; c < 3; ++c)
+    {
+      Eigen::Matrix<D2, 3, 1> q;
+      for (int r = 0; r < 3; ++r)
+      {
+        q[r] = restrict<2>(p[first + c][r], 2 * (first + c));
+      }
+      const Eigen::Matrix<D2, 3, 1> L = (*lifts[c])(q);
+      for (int r = 0; r < 3; ++r)
+      {
+        lifted[c][r] = embed<6>(L[r], 2 * c);
+      }
+    }
+    return lifted;
+  }
+  else
+  {
+    return std::array<Eigen::Matrix<T, 3, 1>, 3>{
+      (*lifts[0])(p[first]), (*lifts[1])(p[first + 1]), (*lifts[2])(p[first + 2])
+    };
+  }
+}
 
 } // namespace surfacemaps

@@ -5,6 +5,8 @@
 #include "SymmetricDirichlet.h"
 
 #include <array>
+#include <cmath>
+#include <limits>
 #include <vector>
 
 namespace surfacemaps
@@ -41,18 +43,41 @@ struct MapDistortionEnergy
       t[1] + this->offsetQ,
       t[2] + this->offsetQ };
   }
+  /// Derivatives: the six Gram entries (three per side) with six variables
+  /// each, the distortion as a function of those six, composed at the end
+  /// (far cheaper than carrying twelve variables through every operation).
   template<typename T>
   T operator()(int e, const std::array<Eigen::Matrix<T, 3, 1>, 6>& p) const
   {
     const std::array<int, 6> idx = this->points(e);
     const auto& L = *this->lifts;
-    std::array<Eigen::Matrix<T, 3, 1>, 3> P, Q;
-    for (int k = 0; k < 3; ++k)
+    const auto P = liftTriangle<T>({ L[idx[0]], L[idx[1]], L[idx[2]] }, p, 0);
+    const auto Q = liftTriangle<T>({ L[idx[3]], L[idx[4]], L[idx[5]] }, p, 3);
+    const auto gP = gramEntries(P[0], P[1], P[2]);
+    const auto gQ = gramEntries(Q[0], Q[1], Q[2]);
+    if constexpr (IsDual<T>::value)
     {
-      P[k] = (*L[idx[k]])(p[k]);
-      Q[k] = (*L[idx[k + 3]])(p[k + 3]);
+      using D6 = Dual<6, T::HasHessian>;
+      std::array<D6, 3> vP, vQ;
+      std::array<T, 6> u;
+      for (int k = 0; k < 3; ++k)
+      {
+        vP[k] = D6::variable(gP[k].val, k);
+        vQ[k] = D6::variable(gQ[k].val, 3 + k);
+        u[k] = embed<12>(gP[k], 0);
+        u[3 + k] = embed<12>(gQ[k], 6);
+      }
+      const D6 f = symmetricDirichlet(vP, vQ);
+      if (!std::isfinite(f.val))
+      {
+        return T(std::numeric_limits<double>::infinity());
+      }
+      return compose(f, u);
     }
-    return mapDistortionEnergy<T>(P, Q);
+    else
+    {
+      return symmetricDirichlet(gP, gQ);
+    }
   }
 };
 

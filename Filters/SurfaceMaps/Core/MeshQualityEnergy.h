@@ -46,8 +46,9 @@ struct MeshQualityEnergy
   {
     const std::array<int, 3> idx = this->points(e);
     const auto& L = *this->lifts;
-    return meshQualityEnergy<T>(
-      (*L[idx[0]])(p[0]), (*L[idx[1]])(p[1]), (*L[idx[2]])(p[2]), (*this->lengths)[e]);
+    const auto lifted = liftTriangle<T>({ L[idx[0]], L[idx[1]], L[idx[2]] }, p, 0);
+    // For derivatives T has six variables: the lifts' own form is T's.
+    return meshQualityEnergy<T>(lifted[0], lifted[1], lifted[2], (*this->lengths)[e]);
   }
 };
 

@@ -134,14 +134,17 @@ double Objective::gradient(const SpherePoints& points, Eigen::VectorXd& gradient
 
 void Objective::buildPattern(const SpherePoints& points)
 {
+  // Every unlocked point owns two consecutive variables, so the Hessian is
+  // made of 2x2 blocks: collect the upper-triangle blocks (block row <= block
+  // column) as 64-bit keys column * blocks + row, sorted column-major (four
+  // times fewer keys than single entries), then lay out the entries.
   const int nvars = points.numberOfVariables();
-  // Upper-triangle entries (row <= col) as 64-bit keys col * nvars + row, so
-  // sorting orders them column-major.
+  const std::int64_t nb = nvars / 2;
   std::vector<std::int64_t> keys;
   std::vector<int> idx;
-  for (int v = 0; v < nvars; ++v)
+  for (std::int64_t b = 0; b < nb; ++b)
   {
-    keys.push_back(static_cast<std::int64_t>(v) * nvars + v); // keep the diagonal
+    keys.push_back(b * nb + b); // keep the diagonal
   }
   for (Entry& entry : this->Terms)
   {
@@ -157,20 +160,9 @@ void Objective::buildPattern(const SpherePoints& points)
         for (int b = 0; b < nv && va >= 0; ++b)
         {
           const int vb = points.variable(idx[b]);
-          if (vb < 0)
+          if (vb >= va)
           {
-            continue;
-          }
-          for (int i = 0; i < 2; ++i)
-          {
-            for (int j = 0; j < 2; ++j)
-            {
-              const int row = va + i, col = vb + j;
-              if (row <= col)
-              {
-                keys.push_back(static_cast<std::int64_t>(col) * nvars + row);
-              }
-            }
+            keys.push_back(static_cast<std::int64_t>(vb / 2) * nb + va / 2);
           }
         }
       }
@@ -179,28 +171,52 @@ void Objective::buildPattern(const SpherePoints& points)
   std::sort(keys.begin(), keys.end());
   keys.erase(std::unique(keys.begin(), keys.end()), keys.end());
 
+  // Block column B holds blocks rows r_0 < ... < r_k = B (the diagonal last):
+  // variable column 2B has rows 2 r_j, 2 r_j + 1 (j < k) and 2B; column
+  // 2B + 1 has the same plus 2B + 1.
+  std::vector<int> blockStart(nb + 1, 0); // first key of each block column
+  for (std::int64_t k = 0; k < static_cast<std::int64_t>(keys.size()); ++k)
+  {
+    ++blockStart[keys[k] / nb + 1];
+  }
+  for (std::int64_t b = 0; b < nb; ++b)
+  {
+    blockStart[b + 1] += blockStart[b];
+  }
+  const std::int64_t nnz = 4 * static_cast<std::int64_t>(keys.size()) - nb;
   this->Pattern.resize(nvars, nvars);
-  this->Pattern.resizeNonZeros(static_cast<Eigen::Index>(keys.size()));
+  this->Pattern.resizeNonZeros(static_cast<Eigen::Index>(nnz));
   int* outer = this->Pattern.outerIndexPtr();
   int* inner = this->Pattern.innerIndexPtr();
-  std::fill(outer, outer + nvars + 1, 0);
-  for (std::size_t k = 0; k < keys.size(); ++k)
+  outer[0] = 0;
+  for (std::int64_t b = 0; b < nb; ++b)
   {
-    const int col = static_cast<int>(keys[k] / nvars);
-    inner[k] = static_cast<int>(keys[k] % nvars);
-    ++outer[col + 1];
+    const int blocks = blockStart[b + 1] - blockStart[b];
+    outer[2 * b + 1] = outer[2 * b] + 2 * blocks - 1;
+    outer[2 * b + 2] = outer[2 * b + 1] + 2 * blocks;
+    for (int j = 0; j < blocks; ++j)
+    {
+      const int row = static_cast<int>(keys[blockStart[b] + j] % nb);
+      for (int column = 0; column < 2; ++column)
+      {
+        const int at = outer[2 * b + column] + 2 * j;
+        inner[at] = 2 * row;
+        if (row < b || column == 1)
+        {
+          inner[at + 1] = 2 * row + 1;
+        }
+      }
+    }
   }
-  for (int c = 0; c < nvars; ++c)
-  {
-    outer[c + 1] += outer[c];
-  }
-  std::fill(this->Pattern.valuePtr(), this->Pattern.valuePtr() + keys.size(), 0.0);
+  std::fill(this->Pattern.valuePtr(), this->Pattern.valuePtr() + nnz, 0.0);
 
-  auto position = [&](int row, int col)
+  // Position of block (row, column) among its block column's blocks.
+  auto blockIndex = [&](int row, int column)
   {
-    const int* begin = inner + outer[col];
-    const int* end = inner + outer[col + 1];
-    return static_cast<int>(std::lower_bound(begin, end, row) - inner);
+    const std::int64_t* begin = keys.data() + blockStart[column];
+    const std::int64_t* end = keys.data() + blockStart[column + 1];
+    return static_cast<int>(
+      std::lower_bound(begin, end, static_cast<std::int64_t>(column) * nb + row) - begin);
   };
   for (Entry& entry : this->Terms)
   {
@@ -213,20 +229,28 @@ void Objective::buildPattern(const SpherePoints& points)
     {
       entry.Term->elementPoints(e, idx.data());
       int* scatter = entry.Scatter.data() + static_cast<std::size_t>(e) * n * n;
-      for (int a = 0; a < n; ++a)
+      for (int a = 0; a < nv; ++a)
       {
-        const int va = points.variable(idx[a / 2]);
-        for (int b = 0; b < n && va >= 0; ++b)
+        const int va = points.variable(idx[a]);
+        for (int b = 0; b < nv && va >= 0; ++b)
         {
-          const int vb = points.variable(idx[b / 2]);
-          if (vb < 0)
+          const int vb = points.variable(idx[b]);
+          if (vb < va)
           {
-            continue;
+            continue; // lower triangle (or locked: vb = -1)
           }
-          const int row = va + a % 2, col = vb + b % 2;
-          if (row <= col)
+          const int row = va / 2, column = vb / 2;
+          const int j = blockIndex(row, column);
+          for (int i = 0; i < 2; ++i)
           {
-            scatter[a + b * n] = position(row, col);
+            for (int k = 0; k < 2; ++k)
+            {
+              if (row == column && i > k)
+              {
+                continue; // below the diagonal inside the diagonal block
+              }
+              scatter[(2 * a + i) + (2 * b + k) * n] = outer[2 * column + k] + 2 * j + i;
+            }
           }
         }
       }

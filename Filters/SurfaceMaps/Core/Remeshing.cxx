@@ -31,6 +31,11 @@ struct LocalEdit
   std::vector<std::array<int, 3>> after;
   std::vector<double> afterLengths;
   LocalAssignment assignment;
+  /// Energy of each face the edit removes (from the cache, if valid), and of
+  /// each triangle it creates.
+  double cachedBefore = 0.0;
+  bool beforeCached = true;
+  std::vector<double> afterEnergies;
 };
 
 int localIndex(const CommonTriangulation& T, LocalEdit& edit, VertexHandle v)
@@ -56,6 +61,8 @@ void addFace(const CommonTriangulation& T, LocalEdit& edit, FaceHandle f)
   }
   edit.before.push_back(tri);
   edit.beforeLengths.push_back(T.targetLength(f));
+  edit.cachedBefore += T.faceEnergy(f);
+  edit.beforeCached = edit.beforeCached && T.faceEnergiesValid();
   if (T.tracksSamples())
   {
     edit.samples.resize(T.numberOfInputs());
@@ -71,8 +78,9 @@ void addFace(const CommonTriangulation& T, LocalEdit& edit, FaceHandle f)
 /// sample assignment.
 double evaluate(const CommonTriangulation& T, LocalEdit& edit)
 {
-  const double before =
-    T.localEnergy(edit.vertices, edit.before, edit.beforeLengths, edit.samples, false, nullptr);
+  const double before = edit.beforeCached
+    ? edit.cachedBefore
+    : T.localEnergy(edit.vertices, edit.before, edit.beforeLengths, edit.samples, false, nullptr);
   std::vector<MapVertex> afterVertices = edit.vertices;
   if (edit.movedIndex >= static_cast<int>(afterVertices.size()))
   {
@@ -92,8 +100,13 @@ double evaluate(const CommonTriangulation& T, LocalEdit& edit)
         T.targetLength(afterVertices[tri[0]], afterVertices[tri[1]], afterVertices[tri[2]]);
     }
   }
-  const double after = T.localEnergy(
-    afterVertices, edit.after, edit.afterLengths, edit.samples, true, &edit.assignment);
+  const double after = T.localEnergy(afterVertices,
+    edit.after,
+    edit.afterLengths,
+    edit.samples,
+    true,
+    &edit.assignment,
+    &edit.afterEnergies);
   if (!std::isfinite(before) || !std::isfinite(after))
   {
     return NoGain;
@@ -255,6 +268,7 @@ void writeFaces(CommonTriangulation& T, const LocalEdit& edit, const std::vector
       throw std::logic_error("remeshing: a face after an edit is not one the edit evaluated");
     }
     T.setTargetLength(f, edit.afterLengths[match]);
+    T.setFaceEnergy(f, edit.afterEnergies[match]);
     if (T.tracksSamples())
     {
       for (int i = 0; i < T.numberOfInputs(); ++i)
@@ -297,7 +311,7 @@ std::vector<FaceHandle> facesAround(const SurfaceMesh& mesh, VertexHandle v)
 /// Evaluates all candidates in parallel, then applies those that gain, best
 /// first, each re-evaluated on the mesh as it is by then.
 template<typename Handle, typename Gain, typename Apply>
-int pass(std::vector<Handle> candidates, double minGain, Gain gain, Apply apply)
+int pass(std::vector<Handle> candidates, double minGain, Gain gain, Apply apply, double& total)
 {
   std::vector<double> gains(candidates.size(), NoGain);
 #pragma omp parallel for schedule(dynamic, 64)
@@ -325,7 +339,12 @@ int pass(std::vector<Handle> candidates, double minGain, Gain gain, Apply apply)
   int applied = 0;
   for (std::size_t k : order)
   {
-    applied += apply(candidates[k]) ? 1 : 0;
+    double g = 0.0;
+    if (apply(candidates[k], &g))
+    {
+      ++applied;
+      total += g;
+    }
   }
   return applied;
 }
@@ -347,12 +366,21 @@ double flipGain(const CommonTriangulation& T, OpenMesh::EdgeHandle e)
   return gainOf(T, e, buildFlip);
 }
 
-bool applySplit(CommonTriangulation& T, OpenMesh::EdgeHandle e, double minGain)
+bool applySplit(CommonTriangulation& T, OpenMesh::EdgeHandle e, double minGain, double* applied)
 {
   LocalEdit edit;
-  if (!buildSplit(T, e, edit) || !(evaluate(T, edit) > minGain))
+  if (!buildSplit(T, e, edit))
   {
     return false;
+  }
+  const double gain = evaluate(T, edit);
+  if (!(gain > minGain))
+  {
+    return false;
+  }
+  if (applied)
+  {
+    *applied = gain;
   }
   SurfaceMesh& mesh = T.mesh();
   const Eigen::Vector3d& p = edit.moved.lifted[0];
@@ -364,12 +392,24 @@ bool applySplit(CommonTriangulation& T, OpenMesh::EdgeHandle e, double minGain)
   return true;
 }
 
-bool applyCollapse(CommonTriangulation& T, OpenMesh::HalfedgeHandle h, double minGain)
+bool applyCollapse(CommonTriangulation& T,
+  OpenMesh::HalfedgeHandle h,
+  double minGain,
+  double* applied)
 {
   LocalEdit edit;
-  if (!buildCollapse(T, h, edit) || !(evaluate(T, edit) > minGain))
+  if (!buildCollapse(T, h, edit))
   {
     return false;
+  }
+  const double gain = evaluate(T, edit);
+  if (!(gain > minGain))
+  {
+    return false;
+  }
+  if (applied)
+  {
+    *applied = gain;
   }
   SurfaceMesh& mesh = T.mesh();
   const VertexHandle kept = mesh.to_vertex_handle(h);
@@ -379,12 +419,21 @@ bool applyCollapse(CommonTriangulation& T, OpenMesh::HalfedgeHandle h, double mi
   return true;
 }
 
-bool applyFlip(CommonTriangulation& T, OpenMesh::EdgeHandle e, double minGain)
+bool applyFlip(CommonTriangulation& T, OpenMesh::EdgeHandle e, double minGain, double* applied)
 {
   LocalEdit edit;
-  if (!buildFlip(T, e, edit) || !(evaluate(T, edit) > minGain))
+  if (!buildFlip(T, e, edit))
   {
     return false;
+  }
+  const double gain = evaluate(T, edit);
+  if (!(gain > minGain))
+  {
+    return false;
+  }
+  if (applied)
+  {
+    *applied = gain;
   }
   SurfaceMesh& mesh = T.mesh();
   mesh.flip(e);
@@ -399,6 +448,7 @@ RemeshingResult remesh(CommonTriangulation& T, const RemeshingOptions& options)
   const auto start = std::chrono::steady_clock::now();
   RemeshingResult result;
   SurfaceMesh& mesh = T.mesh();
+  T.updateFaceEnergies();
   auto allEdges = [&]()
   {
     std::vector<OpenMesh::EdgeHandle> edges;
@@ -415,7 +465,8 @@ RemeshingResult remesh(CommonTriangulation& T, const RemeshingOptions& options)
       allEdges(),
       options.minGain,
       [&](OpenMesh::EdgeHandle e) { return splitGain(T, e); },
-      [&](OpenMesh::EdgeHandle e) { return applySplit(T, e, options.minGain); });
+      [&](OpenMesh::EdgeHandle e, double* g) { return applySplit(T, e, options.minGain, g); },
+      result.gain);
   }
   if (options.collapse)
   {
@@ -429,7 +480,9 @@ RemeshingResult remesh(CommonTriangulation& T, const RemeshingOptions& options)
       halfedges,
       options.minGain,
       [&](OpenMesh::HalfedgeHandle h) { return collapseGain(T, h); },
-      [&](OpenMesh::HalfedgeHandle h) { return applyCollapse(T, h, options.minGain); });
+      [&](OpenMesh::HalfedgeHandle h, double* g)
+      { return applyCollapse(T, h, options.minGain, g); },
+      result.gain);
     mesh.garbage_collection();
   }
   if (options.flip)
@@ -438,7 +491,8 @@ RemeshingResult remesh(CommonTriangulation& T, const RemeshingOptions& options)
       allEdges(),
       options.minGain,
       [&](OpenMesh::EdgeHandle e) { return flipGain(T, e); },
-      [&](OpenMesh::EdgeHandle e) { return applyFlip(T, e, options.minGain); });
+      [&](OpenMesh::EdgeHandle e, double* g) { return applyFlip(T, e, options.minGain, g); },
+      result.gain);
   }
   result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return result;

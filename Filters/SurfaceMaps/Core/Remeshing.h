@@ -21,6 +21,8 @@ struct RemeshingResult
   int splits = 0;
   int collapses = 0;
   int flips = 0;
+  /// Sum of the applied edits' gains: the energy decrease of the round.
+  double gain = 0.0;
   double seconds = 0.0;
 };
 
@@ -39,9 +41,19 @@ RemeshingResult remesh(CommonTriangulation& T,
 double splitGain(const CommonTriangulation& T, OpenMesh::EdgeHandle e);
 double collapseGain(const CommonTriangulation& T, OpenMesh::HalfedgeHandle h);
 double flipGain(const CommonTriangulation& T, OpenMesh::EdgeHandle e);
-/// Apply the edit if its gain exceeds minGain; true if applied.
-bool applySplit(CommonTriangulation& T, OpenMesh::EdgeHandle e, double minGain);
-bool applyCollapse(CommonTriangulation& T, OpenMesh::HalfedgeHandle h, double minGain);
-bool applyFlip(CommonTriangulation& T, OpenMesh::EdgeHandle e, double minGain);
+/// Apply the edit if its gain exceeds minGain; true if applied, and then the
+/// gain in `applied` if given.
+bool applySplit(CommonTriangulation& T,
+  OpenMesh::EdgeHandle e,
+  double minGain,
+  double* applied = nullptr);
+bool applyCollapse(CommonTriangulation& T,
+  OpenMesh::HalfedgeHandle h,
+  double minGain,
+  double* applied = nullptr);
+bool applyFlip(CommonTriangulation& T,
+  OpenMesh::EdgeHandle e,
+  double minGain,
+  double* applied = nullptr);
 
 } // namespace surfacemaps

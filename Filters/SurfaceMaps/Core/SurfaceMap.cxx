@@ -352,7 +352,9 @@ public:
 
       std::ostringstream message;
       message << name << " iteration " << it + 1 << ": " << snapshot.vertices << " vertices, E "
-              << step.energyAfter << ", decrement " << step.decrement << ", edits " << edits.splits
+              << step.energyAfter << ", decrement " << step.decrement << ", step " << step.step
+              << " (" << step.lineSearchTrials << " trials" << (step.gradientFallback ? ", gradient" : "")
+              << "), edits " << edits.splits
               << "/" << edits.collapses << "/" << edits.flips;
       this->Options.log(Logger::Detail, message.str());
       if (this->Options.progress)
@@ -430,6 +432,7 @@ public:
       this->T.relocate(data);
       this->T.setVertex(v, data);
     }
+    this->T.invalidateFaceEnergies();
     return missed;
   }
 
@@ -531,6 +534,7 @@ SurfaceMapResult computeSurfaceMap(const std::vector<MapInput>& inputs,
     T.weights = MapEnergyWeights();
     T.weights.barrier = options.landmarkBarrierWeight / n;
     T.weights.landmark = options.landmarkWeight / n;
+    T.weights.exactBarrierHessian = true;
     MapPhaseReport report = schedule.run("landmarks", options.landmarkIterations, false, true);
     if (!report.converged)
     {
