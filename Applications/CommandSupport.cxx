@@ -88,8 +88,9 @@ void ProgressBar::callback(vtkObject*, unsigned long, void* self, void*)
   const int width = 30;
   const int filled = static_cast<int>(progress * width + 0.5);
   const char* text = bar->Algorithm->GetProgressText();
+  // \033[K clears what a longer earlier text left on the line.
   std::cerr << "\r[" << std::string(filled, '#') << std::string(width - filled, ' ') << "] "
-            << static_cast<int>(100 * progress + 0.5) << "% " << (text ? text : "") << "   "
+            << static_cast<int>(100 * progress + 0.5) << "% " << (text ? text : "") << "\033[K"
             << std::flush;
   bar->Shown = true;
 }

@@ -34,6 +34,10 @@ extern const char* const EmbedHelp;
 int runEvaluate(const std::vector<std::string>& args);
 extern const char* const EvaluateHelp;
 
+/// `surfacemap map A B [C ...] --output-dir DIR [options]`
+int runMap(const std::vector<std::string>& args);
+extern const char* const MapHelp;
+
 /// Prints "surfacemap: error: <message>" on stderr.
 void printError(const std::string& message);
 

@@ -44,6 +44,10 @@ const Command Commands[] = {
     "distortion and approximation error of a map between two meshes",
     &surfacemap::runEvaluate,
     &surfacemap::EvaluateHelp },
+  { "map",
+    "bijective map between surfaces through a common triangulation",
+    &surfacemap::runMap,
+    &surfacemap::MapHelp },
 };
 
 void printUsage(std::ostream& os)

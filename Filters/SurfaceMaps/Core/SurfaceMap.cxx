@@ -602,6 +602,10 @@ SurfaceMapResult computeSurfaceMap(const std::vector<MapInput>& inputs,
   result.lifted.assign(n, std::vector<Eigen::Vector3d>(nv));
   result.sourcePoints.assign(n, std::vector<SurfacePoint>(nv));
   result.landmarks.assign(nv, -1);
+  for (const MapSurface& s : surfaces)
+  {
+    result.inputSpherePositions.push_back(s.sphere);
+  }
   for (int i = 0; i < n; ++i)
   {
     for (auto v : mesh.vertices())

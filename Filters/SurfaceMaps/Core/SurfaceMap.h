@@ -150,6 +150,9 @@ struct SurfaceMapResult
   std::vector<std::vector<Eigen::Vector3d>> spherePositions;
   std::vector<std::vector<Eigen::Vector3d>> lifted;
   std::vector<std::vector<SurfacePoint>> sourcePoints;
+  /// Per input: the embedding f_i as used (inputs 1.. rotated onto input 0
+  /// through the landmarks), in the frame of spherePositions.
+  std::vector<std::vector<Eigen::Vector3d>> inputSpherePositions;
   /// Landmark id per T vertex (-1 none).
   std::vector<int> landmarks;
   /// Per input: certificate of T's embedding g_i (all must be bijective).

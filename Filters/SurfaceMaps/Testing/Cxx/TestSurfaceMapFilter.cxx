@@ -1,0 +1,649 @@
+#include "vtkSphereEmbeddingFilter.h"
+#include "vtkSurfaceMapEvaluation.h"
+#include "vtkSurfaceMapFilter.h"
+#include "vtkSurfaceMapsConversion.h"
+#include "vtkSurfaceMeshReader.h"
+
+#include "Primitives.h"
+#include "SphericalTriangulation.h"
+
+#include "vtkAlgorithmOutput.h"
+#include "vtkCallbackCommand.h"
+#include "vtkCellArray.h"
+#include "vtkCellData.h"
+#include "vtkCommand.h"
+#include "vtkDataArray.h"
+#include "vtkDoubleArray.h"
+#include "vtkFieldData.h"
+#include "vtkIntArray.h"
+#include "vtkNew.h"
+#include "vtkPointData.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+#include "vtkStringArray.h"
+#include "vtkTrivialProducer.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace
+{
+const std::string Data = SURFACEMAPS_DATA_DIR;
+
+vtkSmartPointer<vtkPolyData> read(const std::string& file)
+{
+  vtkNew<vtkSurfaceMeshReader> reader;
+  reader->SetFileName((Data + "/" + file).c_str());
+  reader->Update();
+  vtkSmartPointer<vtkPolyData> output = reader->GetOutput();
+  return output;
+}
+
+// An icosphere scaled to an ellipsoid with semi-axes a, b, c, with a smooth
+// radial bump of the given height around +z.
+vtkSmartPointer<vtkPolyData> ellipsoid(int level, double a, double b, double c, double bump = 0.0)
+{
+  surfacemaps::PolygonMesh mesh = surfacemaps::makeIcosphere(level);
+  for (Eigen::Vector3d& p : mesh.points)
+  {
+    const double r = 1.0 + bump * std::exp(-4.0 * (1.0 - p.z()));
+    p = Eigen::Vector3d(a * p.x(), b * p.y(), c * p.z()) * r;
+  }
+  return vtkSurfaceMapsConversion::ToPolyData(mesh);
+}
+
+// Landmarks 0..3 at the vertices with largest x, smallest x, largest y and
+// largest z: corresponding points on similar shapes.
+void addExtremeLandmarks(vtkPolyData* mesh)
+{
+  vtkNew<vtkIntArray> ids;
+  ids->SetName("Landmarks");
+  ids->SetNumberOfValues(mesh->GetNumberOfPoints());
+  ids->Fill(-1);
+  const int axes[4] = { 0, 0, 1, 2 };
+  const double signs[4] = { 1, -1, 1, 1 };
+  for (int k = 0; k < 4; ++k)
+  {
+    vtkIdType best = 0;
+    for (vtkIdType v = 0; v < mesh->GetNumberOfPoints(); ++v)
+    {
+      if (signs[k] * mesh->GetPoint(v)[axes[k]] > signs[k] * mesh->GetPoint(best)[axes[k]])
+      {
+        best = v;
+      }
+    }
+    ids->SetValue(best, k);
+  }
+  mesh->GetPointData()->AddArray(ids);
+}
+
+// Short schedules: small meshes, a few iterations per phase.
+void useShortSchedule(vtkSurfaceMapFilter* filter)
+{
+  filter->SetLandmarkIterations(10);
+  filter->SetCoarseIterations(3);
+  filter->SetFineIterations(3);
+}
+
+struct Events
+{
+  std::vector<std::string> Errors;
+  std::vector<double> Progress;
+  std::vector<std::string> Texts;
+  double AbortAbove = 2.0;
+};
+
+void watch(vtkSurfaceMapFilter* filter, Events& events)
+{
+  vtkNew<vtkCallbackCommand> onError;
+  onError->SetClientData(&events);
+  onError->SetCallback([](vtkObject*, unsigned long, void* client, void* text)
+    { static_cast<Events*>(client)->Errors.emplace_back(static_cast<const char*>(text)); });
+  filter->AddObserver(vtkCommand::ErrorEvent, onError);
+  vtkNew<vtkCallbackCommand> onProgress;
+  onProgress->SetClientData(&events);
+  onProgress->SetCallback(
+    [](vtkObject* object, unsigned long, void* client, void*)
+    {
+      auto* e = static_cast<Events*>(client);
+      auto* f = static_cast<vtkSurfaceMapFilter*>(object);
+      e->Progress.push_back(f->GetProgress());
+      e->Texts.emplace_back(f->GetProgressText() ? f->GetProgressText() : "");
+      if (f->GetProgress() > e->AbortAbove)
+      {
+        f->AbortExecuteOn();
+      }
+    });
+  filter->AddObserver(vtkCommand::ProgressEvent, onProgress);
+}
+
+bool computedTheMap(const Events& events)
+{
+  return std::any_of(events.Texts.begin(),
+    events.Texts.end(),
+    [](const std::string& t) { return t.find(" phase, iteration ") != std::string::npos; });
+}
+
+double fieldValue(vtkPolyData* data, const char* name, vtkIdType k = 0)
+{
+  vtkDataArray* a = data->GetFieldData()->GetArray(name);
+  return a && k < a->GetNumberOfTuples() ? a->GetTuple1(k) : std::nan("");
+}
+
+std::vector<vtkIdType> connectivity(vtkPolyData* data)
+{
+  std::vector<vtkIdType> ids;
+  vtkDataArray* c = data->GetPolys()->GetConnectivityArray();
+  for (vtkIdType k = 0; k < c->GetNumberOfTuples(); ++k)
+  {
+    ids.push_back(static_cast<vtkIdType>(c->GetTuple1(k)));
+  }
+  return ids;
+}
+
+std::vector<std::array<int, 3>> triangles(vtkPolyData* data)
+{
+  const std::vector<vtkIdType> ids = connectivity(data);
+  std::vector<std::array<int, 3>> result;
+  for (std::size_t k = 0; k + 2 < ids.size(); k += 3)
+  {
+    result.push_back(
+      { static_cast<int>(ids[k]), static_cast<int>(ids[k + 1]), static_cast<int>(ids[k + 2]) });
+  }
+  return result;
+}
+
+// Every output point equals the barycentric combination its SourceCellId and
+// SourceBarycentric name on `source`.
+void expectOnSource(vtkPolyData* output, vtkPolyData* source)
+{
+  vtkDataArray* cells = output->GetPointData()->GetArray("SourceCellId");
+  vtkDataArray* weights = output->GetPointData()->GetArray("SourceBarycentric");
+  ASSERT_NE(cells, nullptr);
+  ASSERT_NE(weights, nullptr);
+  ASSERT_EQ(weights->GetNumberOfComponents(), 3);
+  const double tolerance = 1e-9 * source->GetLength();
+  for (vtkIdType v = 0; v < output->GetNumberOfPoints(); ++v)
+  {
+    const vtkIdType cell = static_cast<vtkIdType>(cells->GetTuple1(v));
+    ASSERT_GE(cell, 0);
+    ASSERT_LT(cell, source->GetNumberOfPolys());
+    vtkIdType n;
+    const vtkIdType* corners;
+    source->GetPolys()->GetCellAtId(cell, n, corners);
+    ASSERT_EQ(n, 3);
+    const double* w = weights->GetTuple3(v);
+    EXPECT_NEAR(w[0] + w[1] + w[2], 1.0, 1e-9);
+    double expected[3] = { 0, 0, 0 };
+    for (int k = 0; k < 3; ++k)
+    {
+      EXPECT_GE(w[k], -1e-9);
+      const double* c = source->GetPoint(corners[k]);
+      for (int d = 0; d < 3; ++d)
+      {
+        expected[d] += w[k] * c[d];
+      }
+    }
+    const double* p = output->GetPoint(v);
+    ASSERT_NEAR(p[0], expected[0], tolerance) << "point " << v;
+    ASSERT_NEAR(p[1], expected[1], tolerance) << "point " << v;
+    ASSERT_NEAR(p[2], expected[2], tolerance) << "point " << v;
+  }
+}
+
+// The area-weighted mean of "Distortion" is the map's symmetric Dirichlet
+// energy as vtkSurfaceMapEvaluation measures it.
+void expectDistortionMatchesEvaluation(vtkPolyData* first, vtkPolyData* other)
+{
+  vtkNew<vtkSurfaceMapEvaluation> evaluation;
+  evaluation->SetInputDataObject(0, first);
+  evaluation->SetInputDataObject(1, other);
+  evaluation->Update();
+  vtkDataArray* areaP = evaluation->GetOutput()->GetCellData()->GetArray("AreaSource");
+  vtkDataArray* areaQ = evaluation->GetOutput()->GetCellData()->GetArray("AreaTarget");
+  vtkDataArray* distortion = other->GetCellData()->GetArray("Distortion");
+  ASSERT_NE(distortion, nullptr);
+  ASSERT_EQ(distortion->GetNumberOfTuples(), other->GetNumberOfPolys());
+  double sum = 0.0;
+  for (vtkIdType t = 0; t < distortion->GetNumberOfTuples(); ++t)
+  {
+    EXPECT_GE(distortion->GetTuple1(t), 1.0 - 1e-9);
+    sum += distortion->GetTuple1(t) * 0.5 * (areaP->GetTuple1(t) + areaQ->GetTuple1(t));
+  }
+  EXPECT_NEAR(sum, evaluation->GetSummaryValue("SymmetricDirichlet"), 1e-9 * sum);
+}
+
+} // namespace
+
+TEST(SurfaceMapFilter, OutputPortsFollowTheConnections)
+{
+  vtkNew<vtkSurfaceMapFilter> filter;
+  EXPECT_EQ(filter->GetNumberOfOutputPorts(), 1);
+  vtkNew<vtkTrivialProducer> a, b, c;
+  a->SetOutput(ellipsoid(1, 1, 1, 1));
+  b->SetOutput(ellipsoid(1, 1, 2, 1));
+  c->SetOutput(ellipsoid(1, 2, 1, 1));
+
+  filter->AddInputConnection(a->GetOutputPort());
+  EXPECT_EQ(filter->GetNumberOfOutputPorts(), 1);
+  filter->AddInputConnection(0, b->GetOutputPort());
+  EXPECT_EQ(filter->GetNumberOfOutputPorts(), 2);
+  EXPECT_NE(filter->GetOutputPort(1), nullptr);
+  filter->AddInputData(ellipsoid(1, 1, 1, 2));
+  EXPECT_EQ(filter->GetNumberOfOutputPorts(), 3);
+  ASSERT_NE(filter->GetOutputPort(2), nullptr);
+  EXPECT_EQ(filter->GetOutputPort(2)->GetIndex(), 2);
+  filter->AddInputConnection(c->GetOutputPort());
+  EXPECT_EQ(filter->GetNumberOfOutputPorts(), 4);
+
+  filter->RemoveInputConnection(0, b->GetOutputPort());
+  EXPECT_EQ(filter->GetNumberOfOutputPorts(), 3);
+  filter->RemoveInputConnection(0, 0);
+  EXPECT_EQ(filter->GetNumberOfOutputPorts(), 2);
+  filter->SetInputConnection(c->GetOutputPort());
+  EXPECT_EQ(filter->GetNumberOfOutputPorts(), 1);
+  filter->RemoveAllInputConnections(0);
+  EXPECT_EQ(filter->GetNumberOfOutputPorts(), 1); // never fewer than one
+  EXPECT_EQ(filter->GetNumberOfInputConnections(0), 0);
+  filter->SetInputData(ellipsoid(1, 1, 1, 1));
+  filter->AddInputData(ellipsoid(1, 1, 1, 1));
+  EXPECT_EQ(filter->GetNumberOfOutputPorts(), 2);
+  filter->RemoveAllInputs();
+  EXPECT_EQ(filter->GetNumberOfOutputPorts(), 1);
+}
+
+TEST(SurfaceMapFilter, ThreeInputPipeline)
+{
+  vtkSmartPointer<vtkPolyData> inputs[3] = {
+    read("ellipsoid_coarse.stl"), ellipsoid(2, 1.2, 1.0, 0.7), ellipsoid(2, 1.0, 0.9, 0.6, 0.3)
+  };
+  // A point array that is a linear function of position: interpolated at the
+  // lifted points it must equal their coordinate.
+  vtkNew<vtkDoubleArray> height;
+  height->SetName("Height");
+  for (vtkIdType v = 0; v < inputs[1]->GetNumberOfPoints(); ++v)
+  {
+    height->InsertNextValue(inputs[1]->GetPoint(v)[2]);
+  }
+  inputs[1]->GetPointData()->AddArray(height);
+  for (auto& input : inputs)
+  {
+    addExtremeLandmarks(input);
+  }
+
+  vtkNew<vtkSurfaceMapFilter> filter;
+  useShortSchedule(filter);
+  Events events;
+  watch(filter, events);
+  // Downstream consumers connected to every output port before any update.
+  vtkNew<vtkTrivialProducer> producers[3];
+  vtkNew<vtkSurfaceMapEvaluation> downstream;
+  for (int i = 0; i < 3; ++i)
+  {
+    producers[i]->SetOutput(inputs[i]);
+    filter->AddInputConnection(0, producers[i]->GetOutputPort());
+  }
+  downstream->SetInputConnection(0, filter->GetOutputPort(0));
+  downstream->SetInputConnection(1, filter->GetOutputPort(2));
+  downstream->Update();
+  ASSERT_TRUE(events.Errors.empty()) << events.Errors.front();
+  EXPECT_GE(downstream->GetSummaryValue("SymmetricDirichlet"), 1.0);
+  EXPECT_EQ(downstream->GetSummaryValue("Bijective"), 1.0);
+
+  vtkPolyData* outputs[3] = { filter->GetOutput(0), filter->GetOutput(1), filter->GetOutput(2) };
+  const vtkIdType nv = outputs[0]->GetNumberOfPoints();
+  ASSERT_GT(nv, 4);
+  for (int i = 0; i < 3; ++i)
+  {
+    SCOPED_TRACE("output " + std::to_string(i));
+    vtkPolyData* out = outputs[i];
+    ASSERT_EQ(out->GetNumberOfPoints(), nv);
+    EXPECT_EQ(connectivity(out), connectivity(outputs[0]));
+    EXPECT_EQ(fieldValue(out, "InputIndex"), i);
+    EXPECT_EQ(fieldValue(out, "Bijective"), 1.0);
+    EXPECT_EQ(fieldValue(out, "CommonVertices"), nv);
+    EXPECT_EQ(fieldValue(out, "CommonTriangles"), out->GetNumberOfPolys());
+    EXPECT_GT(fieldValue(out, "Energy"), 0.0);
+    EXPECT_GE(fieldValue(out, "MapEnergy"), 1.0);
+    EXPECT_GT(fieldValue(out, "EmbeddingSeconds", 2), 0.0);
+    auto* phases = vtkStringArray::SafeDownCast(out->GetFieldData()->GetAbstractArray("PhaseName"));
+    ASSERT_NE(phases, nullptr);
+    ASSERT_EQ(phases->GetNumberOfValues(), 3);
+    EXPECT_EQ(phases->GetValue(0), "landmarks");
+    EXPECT_EQ(phases->GetValue(2), "fine");
+    EXPECT_LE(fieldValue(out, "PhaseIterations", 1), 3);
+    EXPECT_LE(fieldValue(out, "PhaseIterations", 2), 3);
+    EXPECT_GT(fieldValue(out, "PhaseSeconds", 2), 0.0);
+
+    // Embedding g_i: unit vectors, certified independently.
+    vtkDataArray* sphere = out->GetPointData()->GetArray("SpherePosition");
+    ASSERT_NE(sphere, nullptr);
+    std::vector<Eigen::Vector3d> g(nv);
+    for (vtkIdType v = 0; v < nv; ++v)
+    {
+      sphere->GetTuple(v, g[v].data());
+      EXPECT_NEAR(g[v].norm(), 1.0, 1e-12);
+    }
+    EXPECT_TRUE(surfacemaps::certifyBijective(g, triangles(out)).bijective);
+
+    expectOnSource(out, inputs[i]);
+
+    // Landmarks: four ids, each at its input's landmark vertex (kept exactly).
+    vtkDataArray* landmarks = out->GetPointData()->GetArray("Landmarks");
+    ASSERT_NE(landmarks, nullptr);
+    vtkDataArray* inputLandmarks = inputs[i]->GetPointData()->GetArray("Landmarks");
+    int found = 0;
+    for (vtkIdType v = 0; v < nv; ++v)
+    {
+      const int id = static_cast<int>(landmarks->GetTuple1(v));
+      if (id < 0)
+      {
+        continue;
+      }
+      ++found;
+      for (vtkIdType w = 0; w < inputs[i]->GetNumberOfPoints(); ++w)
+      {
+        if (static_cast<int>(inputLandmarks->GetTuple1(w)) == id)
+        {
+          const double* p = out->GetPoint(v);
+          const double* q = inputs[i]->GetPoint(w);
+          EXPECT_NEAR(
+            std::hypot(p[0] - q[0], p[1] - q[1], p[2] - q[2]), 0.0, 1e-9 * inputs[i]->GetLength())
+            << "landmark " << id;
+        }
+      }
+    }
+    EXPECT_EQ(found, 4);
+  }
+
+  // The input's own arrays, interpolated; its Landmarks are not (T has its own).
+  vtkDataArray* interpolated = outputs[1]->GetPointData()->GetArray("Height");
+  ASSERT_NE(interpolated, nullptr);
+  for (vtkIdType v = 0; v < nv; ++v)
+  {
+    ASSERT_NEAR(interpolated->GetTuple1(v), outputs[1]->GetPoint(v)[2], 1e-12);
+  }
+  EXPECT_EQ(outputs[0]->GetPointData()->GetArray("Height"), nullptr);
+
+  vtkDataArray* first = outputs[0]->GetCellData()->GetArray("Distortion");
+  ASSERT_NE(first, nullptr);
+  for (vtkIdType t = 0; t < first->GetNumberOfTuples(); ++t)
+  {
+    ASSERT_EQ(first->GetTuple1(t), 1.0);
+  }
+  expectDistortionMatchesEvaluation(outputs[0], outputs[1]);
+  expectDistortionMatchesEvaluation(outputs[0], outputs[2]);
+
+  // Progress: monotone, with a text per stage, ending at 1.
+  ASSERT_FALSE(events.Progress.empty());
+  EXPECT_TRUE(std::is_sorted(events.Progress.begin(), events.Progress.end()));
+  EXPECT_EQ(events.Progress.back(), 1.0);
+  EXPECT_TRUE(computedTheMap(events));
+  EXPECT_NE(std::find(events.Texts.begin(), events.Texts.end(), "Sphere embedding of input 1"),
+    events.Texts.end());
+}
+
+TEST(SurfaceMapFilter, MappedFirstInputReusesTheMap)
+{
+  vtkSmartPointer<vtkPolyData> a = ellipsoid(2, 1.0, 0.8, 0.6);
+  vtkSmartPointer<vtkPolyData> b = read("ellipsoid_coarse.stl");
+  vtkSmartPointer<vtkPolyData> c = ellipsoid(1, 1.0, 1.0, 0.5, 0.2);
+  vtkNew<vtkSurfaceMapFilter> filter;
+  useShortSchedule(filter);
+  Events events;
+  watch(filter, events);
+  filter->AddInputData(a);
+  filter->AddInputData(b);
+  filter->AddInputData(c);
+  filter->Update();
+  ASSERT_TRUE(events.Errors.empty()) << events.Errors.front();
+  ASSERT_TRUE(computedTheMap(events));
+  const double mapSeconds = fieldValue(filter->GetOutput(0), "MapSeconds");
+  const vtkIdType commonVertices = filter->GetOutput(0)->GetNumberOfPoints();
+
+  events.Texts.clear();
+  filter->SetOutputModeToMappedFirstInput();
+  filter->Update();
+  ASSERT_TRUE(events.Errors.empty()) << events.Errors.front();
+  EXPECT_FALSE(computedTheMap(events)); // the kept map was reused
+  vtkSmartPointer<vtkPolyData> inputs[3] = { a, b, c };
+  for (int j = 0; j < 3; ++j)
+  {
+    SCOPED_TRACE("output " + std::to_string(j));
+    vtkPolyData* out = filter->GetOutput(j);
+    ASSERT_EQ(out->GetNumberOfPoints(), a->GetNumberOfPoints());
+    EXPECT_EQ(connectivity(out), connectivity(a));
+    EXPECT_EQ(fieldValue(out, "MapSeconds"), mapSeconds);
+    EXPECT_EQ(fieldValue(out, "CommonVertices"), commonVertices);
+    expectOnSource(out, inputs[j]);
+    if (j > 0)
+    {
+      expectDistortionMatchesEvaluation(filter->GetOutput(0), out);
+    }
+  }
+  // Input 0 on itself is input 0.
+  for (vtkIdType v = 0; v < a->GetNumberOfPoints(); ++v)
+  {
+    const double* p = filter->GetOutput(0)->GetPoint(v);
+    const double* q = a->GetPoint(v);
+    ASSERT_NEAR(std::hypot(p[0] - q[0], p[1] - q[1], p[2] - q[2]), 0.0, 1e-12);
+  }
+
+  // Back to T: still no recomputation; another setting recomputes.
+  events.Texts.clear();
+  filter->SetOutputModeToCommonTriangulation();
+  filter->Update();
+  EXPECT_FALSE(computedTheMap(events));
+  EXPECT_EQ(filter->GetOutput(2)->GetNumberOfPoints(), commonVertices);
+  filter->SetFineIterations(2);
+  filter->Update();
+  EXPECT_TRUE(computedTheMap(events));
+  EXPECT_TRUE(events.Errors.empty());
+}
+
+TEST(SurfaceMapFilter, GivenSpherePositionIsUsed)
+{
+  vtkNew<vtkSphereEmbeddingFilter> embedding;
+  embedding->SetInputData(ellipsoid(2, 1.0, 0.7, 0.5));
+  embedding->Update();
+  vtkNew<vtkSurfaceMapFilter> filter;
+  useShortSchedule(filter);
+  Events events;
+  watch(filter, events);
+  filter->AddInputConnection(embedding->GetOutputPort());
+  filter->AddInputData(ellipsoid(1, 1.0, 1.0, 1.0));
+  filter->Update();
+  ASSERT_TRUE(events.Errors.empty()) << events.Errors.front();
+  EXPECT_EQ(fieldValue(filter->GetOutput(1), "EmbeddingSeconds", 0), 0.0);
+  EXPECT_GT(fieldValue(filter->GetOutput(1), "EmbeddingSeconds", 1), 0.0);
+  EXPECT_EQ(std::count(events.Texts.begin(), events.Texts.end(), "Sphere embedding of input 0"), 0);
+  EXPECT_GT(std::count(events.Texts.begin(), events.Texts.end(), "Sphere embedding of input 1"), 0);
+  // The given embedding is not interpolated onto T (T has its own).
+  EXPECT_EQ(fieldValue(filter->GetOutput(0), "Bijective"), 1.0);
+}
+
+TEST(SurfaceMapFilter, EmbeddingThatIsNotBijectiveIsAnError)
+{
+  vtkSmartPointer<vtkPolyData> mesh = ellipsoid(1, 1.0, 0.7, 0.5);
+  vtkNew<vtkDoubleArray> sphere;
+  sphere->SetName("SpherePosition");
+  sphere->SetNumberOfComponents(3);
+  for (vtkIdType v = 0; v < mesh->GetNumberOfPoints(); ++v)
+  {
+    const double* p = mesh->GetPoint(v);
+    double q[3] = { p[0], p[1], p[2] };
+    if (v == 7)
+    {
+      q[0] = -q[0]; // folds the triangles around vertex 7
+      q[1] = -q[1];
+      q[2] = -q[2];
+    }
+    sphere->InsertNextTuple(q);
+  }
+  mesh->GetPointData()->AddArray(sphere);
+  vtkNew<vtkSurfaceMapFilter> filter;
+  Events events;
+  watch(filter, events);
+  filter->AddInputData(ellipsoid(1, 1.0, 1.0, 1.0));
+  filter->AddInputData(mesh);
+  filter->Update();
+  ASSERT_EQ(events.Errors.size(), 1u);
+  EXPECT_NE(events.Errors[0].find("input 1 has a SpherePosition array that is not a bijective"),
+    std::string::npos)
+    << events.Errors[0];
+  EXPECT_EQ(
+    filter->GetErrorCode(), static_cast<unsigned long>(vtkSurfaceMapFilter::InvalidInputError));
+  EXPECT_EQ(filter->GetOutput(0)->GetNumberOfPoints(), 0);
+  EXPECT_EQ(filter->GetOutput(1)->GetNumberOfPoints(), 0);
+}
+
+TEST(SurfaceMapFilter, BadInputNamesTheInputAndLeavesEmptyOutputs)
+{
+  vtkNew<vtkSurfaceMapFilter> filter;
+  Events events;
+  watch(filter, events);
+  filter->AddInputData(read("ellipsoid_coarse.stl"));
+  filter->AddInputData(read("bad/hemisphere.obj"));
+  filter->AddInputData(ellipsoid(1, 1, 1, 1));
+  filter->Update();
+  ASSERT_EQ(events.Errors.size(), 1u);
+  const std::string& message = events.Errors[0];
+  EXPECT_NE(
+    message.find("input 1 (" + Data + "/bad/hemisphere.obj) is not closed: "), std::string::npos)
+    << message;
+  EXPECT_NE(message.find("boundary edges (first: edge "), std::string::npos) << message;
+  EXPECT_EQ(message.find("input 0"), std::string::npos) << message;
+  EXPECT_EQ(
+    filter->GetErrorCode(), static_cast<unsigned long>(vtkSurfaceMapFilter::InvalidInputError));
+  for (int i = 0; i < 3; ++i)
+  {
+    EXPECT_EQ(filter->GetOutput(i)->GetNumberOfPoints(), 0);
+    EXPECT_EQ(filter->GetOutput(i)->GetNumberOfCells(), 0);
+  }
+  EXPECT_FALSE(computedTheMap(events));
+}
+
+TEST(SurfaceMapFilter, LandmarksMustCorrespond)
+{
+  vtkSmartPointer<vtkPolyData> a = ellipsoid(1, 1, 1, 1);
+  vtkSmartPointer<vtkPolyData> b = ellipsoid(1, 1, 1, 2);
+  addExtremeLandmarks(a);
+  addExtremeLandmarks(b);
+  b->GetPointData()->GetArray("Landmarks")->SetTuple1(0, 9); // a fifth id
+  vtkNew<vtkSurfaceMapFilter> filter;
+  Events events;
+  watch(filter, events);
+  filter->AddInputData(a);
+  filter->AddInputData(b);
+  filter->Update();
+  ASSERT_EQ(events.Errors.size(), 1u);
+  EXPECT_NE(events.Errors[0].find("landmark counts do not match: input 0 has 4, input 1 has 5"),
+    std::string::npos)
+    << events.Errors[0];
+  EXPECT_EQ(
+    filter->GetErrorCode(), static_cast<unsigned long>(vtkSurfaceMapFilter::InvalidInputError));
+  EXPECT_EQ(filter->GetOutput(1)->GetNumberOfPoints(), 0);
+}
+
+TEST(SurfaceMapFilter, SizingMustBePositiveUnlessIgnored)
+{
+  vtkSmartPointer<vtkPolyData> mesh = ellipsoid(1, 1, 1, 1);
+  vtkNew<vtkDoubleArray> sizing;
+  sizing->SetName("Sizing");
+  sizing->SetNumberOfValues(mesh->GetNumberOfPoints());
+  sizing->Fill(0.1);
+  sizing->SetValue(5, -1.0);
+  mesh->GetPointData()->AddArray(sizing);
+  vtkNew<vtkSurfaceMapFilter> filter;
+  useShortSchedule(filter);
+  Events events;
+  watch(filter, events);
+  filter->AddInputData(ellipsoid(1, 1, 1, 2));
+  filter->AddInputData(mesh);
+  filter->Update();
+  ASSERT_EQ(events.Errors.size(), 1u);
+  EXPECT_NE(
+    events.Errors[0].find("input 1 has a Sizing value that is not a positive length (-1.000000 "
+                          "at point 5)"),
+    std::string::npos)
+    << events.Errors[0];
+  EXPECT_EQ(filter->GetOutput(1)->GetNumberOfPoints(), 0);
+
+  // With curvature sizing the array is not read (nor interpolated).
+  filter->SetSizingModeToCurvature();
+  filter->Update();
+  ASSERT_EQ(events.Errors.size(), 1u) << events.Errors.back();
+  ASSERT_GT(filter->GetOutput(1)->GetNumberOfPoints(), 0);
+  EXPECT_EQ(filter->GetOutput(1)->GetPointData()->GetArray("Sizing"), nullptr);
+}
+
+TEST(SurfaceMapFilter, AbortLeavesEmptyOutputs)
+{
+  vtkNew<vtkSurfaceMapFilter> filter;
+  Events events;
+  events.AbortAbove = 0.5; // inside the map's phases
+  watch(filter, events);
+  useShortSchedule(filter);
+  filter->AddInputData(ellipsoid(2, 1.0, 0.8, 0.6));
+  filter->AddInputData(read("ellipsoid_coarse.stl"));
+  filter->Update();
+  EXPECT_TRUE(events.Errors.empty());
+  EXPECT_EQ(filter->GetErrorCode(), static_cast<unsigned long>(vtkErrorCode::NoError));
+  EXPECT_EQ(filter->GetOutput(0)->GetNumberOfPoints(), 0);
+  EXPECT_EQ(filter->GetOutput(1)->GetNumberOfPoints(), 0);
+  ASSERT_FALSE(events.Progress.empty());
+  EXPECT_TRUE(std::is_sorted(events.Progress.begin(), events.Progress.end()));
+  EXPECT_LT(events.Progress.back(), 1.0);
+  EXPECT_TRUE(computedTheMap(events)); // it stopped inside the map, not before it
+
+  // The next update runs to the end (AbortExecute is reset per update).
+  events.AbortAbove = 2.0;
+  filter->Update();
+  EXPECT_TRUE(events.Errors.empty());
+  EXPECT_GT(filter->GetOutput(1)->GetNumberOfPoints(), 0);
+  // ... after which the outputs are up to date again.
+  events.Texts.clear();
+  filter->Update();
+  EXPECT_TRUE(events.Texts.empty());
+}
+
+TEST(SurfaceMapFilter, SettingsDefaultsAndPrintSelf)
+{
+  vtkNew<vtkSurfaceMapFilter> filter;
+  EXPECT_EQ(filter->GetTargetError(), 1e-3);
+  EXPECT_EQ(filter->GetCoarseError(), 1e-2);
+  EXPECT_EQ(filter->GetLandmarkIterations(), 100);
+  EXPECT_EQ(filter->GetCoarseIterations(), 50);
+  EXPECT_EQ(filter->GetFineIterations(), 50);
+  EXPECT_EQ(filter->GetFineBarrierWeight(), 1e-6);
+  EXPECT_EQ(filter->GetCoarseBarrierWeight(), 1e-3);
+  EXPECT_EQ(filter->GetLandmarkWeight(), 1e6);
+  EXPECT_TRUE(filter->GetKeepLandmarks());
+  EXPECT_EQ(filter->GetPairMode(), vtkSurfaceMapFilter::PAIRS_STAR);
+  EXPECT_EQ(filter->GetOutputMode(), vtkSurfaceMapFilter::COMMON_TRIANGULATION);
+  EXPECT_EQ(filter->GetApproximationBound(), 0.0);
+  filter->SetPairModeToCycle();
+  EXPECT_EQ(filter->GetPairMode(), vtkSurfaceMapFilter::PAIRS_CYCLE);
+  filter->SetPairMode(17);
+  EXPECT_EQ(filter->GetPairMode(), vtkSurfaceMapFilter::PAIRS_ALL);
+  filter->SetTargetError(0.0);
+  EXPECT_EQ(filter->GetTargetError(), 1e-6);
+  filter->SetFineIterations(-3);
+  EXPECT_EQ(filter->GetFineIterations(), 0);
+  std::ostringstream print;
+  filter->Print(print);
+  for (const char* name : { "TargetError: 1e-06",
+         "PairMode: 3",
+         "KeepLandmarks: 1",
+         "OutputMode: 0",
+         "SizingMode: 0",
+         "ApproximationSamples: 50000" })
+  {
+    EXPECT_NE(print.str().find(name), std::string::npos) << name;
+  }
+}

@@ -1,0 +1,95 @@
+"""`surfacemap map`: output files and report, bad input, unwritable output, usage."""
+
+import json
+import os
+
+from cli import data, run
+
+# Short schedules: the map of two 642-vertex meshes takes about a second.
+SHORT = ("--landmark-iterations", "10", "--coarse-iterations", "3", "--fine-iterations", "3")
+
+
+def read_vtp(path):
+    from vtkmodules.vtkIOXML import vtkXMLPolyDataReader
+    reader = vtkXMLPolyDataReader()
+    reader.SetFileName(str(path))
+    reader.Update()
+    return reader.GetOutput()
+
+
+def test_map_writes_common_and_mapped_meshes_and_a_report(tmp_path):
+    out = tmp_path / "new" / "dir"  # created
+    r = run("map", data("ellipsoid.obj"), data("blob.off"), "--landmarks", data("ellipsoid.pinned"),
+            data("blob.vts"), *SHORT, "--output-dir", out)
+    assert r.returncode == 0, r.stderr
+    assert "map of 2 surfaces: certified bijective" in r.stdout
+    assert sorted(os.listdir(out)) == ["common_0.vtp", "common_1.vtp", "mapped_0.vtp", "mapped_1.vtp", "report.json"]
+
+    report = json.loads((out / "report.json").read_text())
+    assert report["certificate"]["bijective"] is True
+    assert report["certificate"]["spherical_degrees"] == [1.0, 1.0]
+    assert [i["vertices"] for i in report["inputs"]] == [642, 642]
+    assert [p["name"] for p in report["phases"]] == ["landmarks", "coarse", "fine"]
+    assert [p["iterations"] <= cap for p, cap in zip(report["phases"], (10, 3, 3))] == [True] * 3
+    assert all(p["seconds"] > 0 for p in report["phases"])
+    assert report["landmark_error"] < 1e-9  # landmarks kept exactly
+    assert report["energy"]["map"] >= 1.0
+    approximating, exact = report["approximating_map"][0], report["exact_map"][0]
+    for metrics in (approximating, exact):
+        assert metrics["target"] == 1
+        assert metrics["SymmetricDirichlet"] >= 1.0
+        assert 0.0 < metrics["AreaBelow1.5"] <= metrics["AreaBelow2"] <= 1.0
+        assert metrics["MaxDistortion"] >= 1.0
+        assert 0.0 < metrics["MinAngleTarget"] <= metrics["MeanMinAngleTarget"] <= 60.0
+    assert 0.0 < approximating["HausdorffSource"] < 5.0 and 0.0 < approximating["HausdorffTarget"] < 5.0
+
+    common = [read_vtp(out / f"common_{i}.vtp") for i in range(2)]
+    mapped = [read_vtp(out / f"mapped_{i}.vtp") for i in range(2)]
+    assert common[0].GetNumberOfPoints() == report["common_triangulation"]["vertices"]
+    assert common[1].GetNumberOfPolys() == report["common_triangulation"]["triangles"]
+    assert mapped[1].GetNumberOfPoints() == 642
+    for name in ("SpherePosition", "SourceCellId", "SourceBarycentric", "Landmarks"):
+        assert common[1].GetPointData().GetArray(name) is not None, name
+    assert common[1].GetCellData().GetArray("Distortion") is not None
+    # A written output is itself a valid input.
+    assert run("check", out / "common_1.vtp").returncode == 0
+
+
+def test_bad_input_is_exit_2_and_writes_nothing(tmp_path):
+    out = tmp_path / "out"
+    r = run("map", data("ellipsoid_coarse.stl"), data("bad/torus.obj"), *SHORT, "--output-dir", out)
+    assert r.returncode == 2
+    assert "has genus 1" in r.stderr
+    assert not out.exists()
+
+
+def test_landmarks_that_do_not_correspond_are_bad_input(tmp_path):
+    r = run("map", data("ellipsoid.obj"), data("limbs.ply"), "--landmarks", data("ellipsoid.pinned"),
+            data("bad/five_landmarks.pinned"), "--output-dir", tmp_path)
+    assert r.returncode == 2
+    assert "landmark counts do not match" in r.stderr
+
+
+def test_unwritable_output_dir_is_reported_before_computing(tmp_path):
+    blocker = tmp_path / "a_file"
+    blocker.write_text("not a directory")
+    r = run("map", data("ellipsoid_coarse.stl"), data("blob.off"), *SHORT, "--output-dir", blocker / "out")
+    assert r.returncode == 2
+    assert "cannot create the output directory" in r.stderr
+    assert "map of" not in r.stdout
+
+
+def test_usage(tmp_path):
+    assert run("map").returncode == 2
+    r = run("map", data("ellipsoid.obj"), data("blob.off"))
+    assert r.returncode == 2 and "no output directory" in r.stderr
+    r = run("map", data("ellipsoid.obj"), data("blob.off"), "--pairs", "ring", "--output-dir", tmp_path)
+    assert r.returncode == 2 and "--pairs is star, sequence, cycle or all" in r.stderr
+    r = run("map", data("ellipsoid.obj"), data("blob.off"), "--landmarks", data("ellipsoid.pinned"),
+            "--output-dir", tmp_path)
+    assert r.returncode == 2 and "one file per mesh" in r.stderr
+    r = run("map", data("ellipsoid.obj"), "--fine-iterations", "2.5", "--output-dir", tmp_path)
+    assert r.returncode == 2 and "needs a whole number" in r.stderr
+    r = run("map", "--help")
+    assert r.returncode == 0 and "--release-landmarks" in r.stdout and "mapped_<i>.vtp" in r.stdout
+    assert os.listdir(tmp_path) == []
