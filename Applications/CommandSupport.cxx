@@ -16,9 +16,11 @@
 #include <unistd.h>
 
 #include <cerrno>
+#include <cmath>
 #include <cstdio>
 #include <cstring>
 #include <fstream>
+#include <iomanip>
 #include <iostream>
 #include <sstream>
 #include <stdexcept>
@@ -134,6 +136,41 @@ vtkSmartPointer<vtkPolyData> readValidMesh(const std::string& path, const std::s
     return nullptr;
   }
   return mesh;
+}
+
+std::string jsonNumber(double value)
+{
+  if (!std::isfinite(value))
+  {
+    return "null";
+  }
+  std::ostringstream s;
+  s << std::setprecision(10) << value;
+  return s.str();
+}
+
+std::string jsonString(const std::string& text)
+{
+  std::string out = "\"";
+  for (const char c : text)
+  {
+    if (c == '"' || c == '\\')
+    {
+      out += '\\';
+      out += c;
+    }
+    else if (static_cast<unsigned char>(c) < 0x20)
+    {
+      char buffer[8];
+      std::snprintf(buffer, sizeof buffer, "\\u%04x", c);
+      out += buffer;
+    }
+    else
+    {
+      out += c;
+    }
+  }
+  return out + "\"";
 }
 
 namespace

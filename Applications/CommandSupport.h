@@ -61,6 +61,14 @@ vtkSmartPointer<vtkPolyData> readValidMesh(const std::string& path, const std::s
 /// (checked before long computations whose result would be lost).
 void checkWritable(const std::string& path);
 
+/// `value` as a JSON number (10 significant digits); null if not finite,
+/// since JSON has no infinity or NaN.
+std::string jsonNumber(double value);
+
+/// `text` as a quoted JSON string (quotes, backslashes and control
+/// characters escaped).
+std::string jsonString(const std::string& text);
+
 /// Writes `content` to a temporary name beside `path`, then renames it.
 /// Throws std::runtime_error naming the file on failure.
 void writeFileAtomically(const std::string& path, const std::string& content);

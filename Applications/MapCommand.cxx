@@ -20,7 +20,6 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
-#include <iomanip>
 #include <sstream>
 #include <stdexcept>
 #include <system_error>
@@ -109,41 +108,6 @@ int parseCount(const std::string& option, const std::string& text)
   return static_cast<int>(value);
 }
 
-std::string number(double value)
-{
-  if (!std::isfinite(value))
-  {
-    return "null"; // JSON has no infinity
-  }
-  std::ostringstream s;
-  s << std::setprecision(10) << value;
-  return s.str();
-}
-
-std::string jsonString(const std::string& text)
-{
-  std::string out = "\"";
-  for (const char c : text)
-  {
-    if (c == '"' || c == '\\')
-    {
-      out += '\\';
-      out += c;
-    }
-    else if (static_cast<unsigned char>(c) < 0x20)
-    {
-      char buffer[8];
-      std::snprintf(buffer, sizeof buffer, "\\u%04x", c);
-      out += buffer;
-    }
-    else
-    {
-      out += c;
-    }
-  }
-  return out + "\"";
-}
-
 // A field-data value of a map output (tuple k), NaN if absent.
 double field(vtkPolyData* data, const char* name, vtkIdType k = 0)
 {
@@ -198,7 +162,7 @@ std::string evaluate(const char* what,
     const double value = evaluation->GetSummaryValue(name);
     if (!std::isnan(value))
     {
-      json << ", " << jsonString(name) << ": " << number(value);
+      json << ", " << jsonString(name) << ": " << jsonNumber(value);
     }
   }
   json << " }";
@@ -417,36 +381,44 @@ int runMap(const std::vector<std::string>& args)
     static_cast<long long>(field(first, "CommonTriangles")),
     seconds);
 
+  // Absolute paths, so `surfacemap evaluate DIR` finds the inputs from anywhere.
+  const auto absolute = [](const std::string& path)
+  {
+    std::error_code ec;
+    const std::filesystem::path p = std::filesystem::absolute(path, ec);
+    return ec ? path : p.lexically_normal().string();
+  };
   std::ostringstream json;
   json << "{\n  \"inputs\": [";
   for (int i = 0; i < n; ++i)
   {
-    json << (i ? ",\n" : "\n") << "    { \"file\": " << jsonString(meshes[i])
-         << ", \"landmarks\": " << (landmarks.empty() ? "null" : jsonString(landmarks[i]))
+    json << (i ? ",\n" : "\n") << "    { \"file\": " << jsonString(absolute(meshes[i]))
+         << ", \"landmarks\": " << (landmarks.empty() ? "null" : jsonString(absolute(landmarks[i])))
          << ", \"vertices\": " << inputs[i]->GetNumberOfPoints()
          << ", \"triangles\": " << inputs[i]->GetNumberOfPolys()
-         << ", \"embedding_seconds\": " << number(field(first, "EmbeddingSeconds", i)) << " }";
+         << ", \"embedding_seconds\": " << jsonNumber(field(first, "EmbeddingSeconds", i)) << " }";
   }
   json << "\n  ],\n";
-  json << "  \"common_triangulation\": { \"vertices\": " << number(field(first, "CommonVertices"))
-       << ", \"triangles\": " << number(field(first, "CommonTriangles")) << " },\n";
+  json << "  \"common_triangulation\": { \"vertices\": "
+       << jsonNumber(field(first, "CommonVertices"))
+       << ", \"triangles\": " << jsonNumber(field(first, "CommonTriangles")) << " },\n";
   json << "  \"certificate\": { \"bijective\": " << (certified ? "true" : "false")
        << ", \"spherical_degrees\": [";
   for (int i = 0; i < n; ++i)
   {
-    json << (i ? ", " : "") << number(field(map->GetOutput(i), "SphericalDegree"));
+    json << (i ? ", " : "") << jsonNumber(field(map->GetOutput(i), "SphericalDegree"));
   }
   json << "] },\n";
-  json << "  \"landmark_error\": " << number(field(first, "LandmarkError")) << ",\n";
-  json << "  \"energy\": { \"total\": " << number(field(first, "Energy"))
-       << ", \"barrier\": " << number(field(first, "BarrierEnergy"))
-       << ", \"mesh\": " << number(field(first, "MeshEnergy"))
-       << ", \"approximation\": " << number(field(first, "ApproximationEnergy"))
-       << ", \"map\": " << number(field(first, "MapEnergy")) << " },\n";
-  json << "  \"seconds\": { \"total\": " << number(seconds)
-       << ", \"map\": " << number(field(first, "MapSeconds")) << " },\n";
-  json << "  \"settings\": { \"target_error\": " << number(map->GetTargetError())
-       << ", \"coarse_error\": " << number(map->GetCoarseError())
+  json << "  \"landmark_error\": " << jsonNumber(field(first, "LandmarkError")) << ",\n";
+  json << "  \"energy\": { \"total\": " << jsonNumber(field(first, "Energy"))
+       << ", \"barrier\": " << jsonNumber(field(first, "BarrierEnergy"))
+       << ", \"mesh\": " << jsonNumber(field(first, "MeshEnergy"))
+       << ", \"approximation\": " << jsonNumber(field(first, "ApproximationEnergy"))
+       << ", \"map\": " << jsonNumber(field(first, "MapEnergy")) << " },\n";
+  json << "  \"seconds\": { \"total\": " << jsonNumber(seconds)
+       << ", \"map\": " << jsonNumber(field(first, "MapSeconds")) << " },\n";
+  json << "  \"settings\": { \"target_error\": " << jsonNumber(map->GetTargetError())
+       << ", \"coarse_error\": " << jsonNumber(map->GetCoarseError())
        << ", \"pairs\": " << jsonString(pairs)
        << ", \"keep_landmarks\": " << (map->GetKeepLandmarks() ? "true" : "false")
        << ", \"landmark_iterations\": " << map->GetLandmarkIterations()
@@ -473,7 +445,7 @@ int runMap(const std::vector<std::string>& args)
       { "line_search_seconds", "PhaseLineSearchSeconds" } };
     for (const auto& [key, name] : columns)
     {
-      json << ", " << jsonString(key) << ": " << number(field(first, name, k));
+      json << ", " << jsonString(key) << ": " << jsonNumber(field(first, name, k));
     }
     json << ", \"converged\": " << (converged ? "true" : "false") << " }";
     std::printf("  %-10s %4d iterations%s, %.2f s, %d vertices, %d splits, %d collapses, "

@@ -8,9 +8,9 @@ DATA = os.environ["SURFACEMAPS_DATA"]
 SHARED = os.environ.get("SURFACEMAPS_SHARED_DATA", "")
 
 
-def run(*args, timeout=300):
-    """Runs `surfacemap ARGS...`; returns the CompletedProcess (text output)."""
-    return subprocess.run([CLI, *map(str, args)], capture_output=True, text=True, timeout=timeout)
+def run(*args, timeout=300, cwd=None):
+    """Runs `surfacemap ARGS...` (in `cwd` if given); returns the CompletedProcess (text output)."""
+    return subprocess.run([CLI, *map(str, args)], capture_output=True, text=True, timeout=timeout, cwd=cwd)
 
 
 def data(name):

@@ -55,6 +55,19 @@ def test_map_writes_common_and_mapped_meshes_and_a_report(tmp_path):
     assert run("check", out / "common_1.vtp").returncode == 0
 
 
+def test_report_records_absolute_input_paths(tmp_path):
+    # Relative names, run from Data/: `surfacemap evaluate DIR` must find the inputs from anywhere.
+    out = tmp_path / "out"
+    r = run("map", "ellipsoid.obj", "blob.off", "--landmarks", "ellipsoid.pinned", "blob.vts", *SHORT,
+            "--output-dir", out, cwd=data(""))
+    assert r.returncode == 0, r.stderr
+    report = json.loads((out / "report.json").read_text())
+    recorded = [p for i in report["inputs"] for p in (i["file"], i["landmarks"])]
+    expected = [data(name) for name in ("ellipsoid.obj", "ellipsoid.pinned", "blob.off", "blob.vts")]
+    assert all(os.path.isabs(p) for p in recorded), recorded
+    assert [os.path.realpath(p) for p in recorded] == [os.path.realpath(p) for p in expected]
+
+
 def test_bad_input_is_exit_2_and_writes_nothing(tmp_path):
     out = tmp_path / "out"
     r = run("map", data("ellipsoid_coarse.stl"), data("bad/torus.obj"), *SHORT, "--output-dir", out)

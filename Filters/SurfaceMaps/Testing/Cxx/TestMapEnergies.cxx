@@ -8,6 +8,8 @@
 
 #include <gtest/gtest.h>
 
+#include <Eigen/Eigenvalues>
+
 #include <random>
 
 using namespace surfacemaps;
@@ -135,4 +137,61 @@ TEST(MapEnergies, LiftIsTheBarycentricInverseOfTheEmbedding)
   EXPECT_LT((lift(c) - C).norm(), 1e-14);
   const Eigen::Vector3d p = (0.2 * a + 0.3 * b + 0.5 * c).normalized();
   EXPECT_LT((lift(p) - (0.2 * A + 0.3 * B + 0.5 * C)).norm(), 1e-14);
+}
+
+namespace
+{
+// Values, gradients and Hessians of one term, exact (projectionEps < 0) and
+// in the form the Newton step uses (projectionEps = 0).
+struct TermDerivatives
+{
+  std::vector<double> values, gradients, hessians;
+};
+
+TermDerivatives derivativesOf(const ObjectiveTerm& term, const SpherePoints& points, double eps)
+{
+  const std::size_t ne = term.numberOfElements();
+  const std::size_t n = 2 * term.pointsPerElement();
+  TermDerivatives d;
+  d.values.resize(ne);
+  d.gradients.resize(ne * n);
+  d.hessians.resize(ne * n * n);
+  term.evaluateDerivatives(points, eps, d.values.data(), d.gradients.data(), d.hessians.data());
+  return d;
+}
+
+void expectGaussNewtonForm(const ObjectiveTerm& term, const SpherePoints& points)
+{
+  const TermDerivatives exact = derivativesOf(term, points, -1.0);
+  const TermDerivatives gn = derivativesOf(term, points, 0.0);
+  const int n = 2 * term.pointsPerElement();
+  for (int e = 0; e < term.numberOfElements(); ++e)
+  {
+    EXPECT_NEAR(gn.values[e], exact.values[e], 1e-12 * std::max(1.0, std::abs(exact.values[e])));
+    for (int k = 0; k < n; ++k)
+    {
+      EXPECT_NEAR(gn.gradients[e * n + k],
+        exact.gradients[e * n + k],
+        1e-9 * std::max(1.0, std::abs(exact.gradients[e * n + k])));
+    }
+    const Eigen::Map<const Eigen::MatrixXd> H(gn.hessians.data() + e * n * n, n, n);
+    EXPECT_LT((H - H.transpose()).cwiseAbs().maxCoeff(), 1e-12 * std::max(1.0, H.norm()));
+    const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eig(H);
+    EXPECT_GE(eig.eigenvalues().minCoeff(), -1e-10 * std::max(1.0, H.norm()));
+  }
+}
+} // namespace
+
+TEST(MapEnergies, BarrierGaussNewtonHessianIsPositiveAndMatchesTheGradient)
+{
+  MapEnergyWeights w;
+  w.barrier = 0.01;
+  EnergyCase c(w);
+  Objective objective;
+  c.T->buildObjective(c.snapshot, {}, objective);
+  ASSERT_EQ(objective.numberOfTerms(), 2u); // one barrier per embedding
+  for (std::size_t t = 0; t < objective.numberOfTerms(); ++t)
+  {
+    expectGaussNewtonForm(objective.term(t), c.points);
+  }
 }
