@@ -184,6 +184,10 @@ void Objective::buildPattern(const SpherePoints& points)
     blockStart[b + 1] += blockStart[b];
   }
   const std::int64_t nnz = 4 * static_cast<std::int64_t>(keys.size()) - nb;
+  // Keep the previous pattern to tell whether it changed (a solver can then
+  // keep its symbolic analysis).
+  Eigen::SparseMatrix<double> previous;
+  previous.swap(this->Pattern);
   this->Pattern.resize(nvars, nvars);
   this->Pattern.resizeNonZeros(static_cast<Eigen::Index>(nnz));
   int* outer = this->Pattern.outerIndexPtr();
@@ -209,6 +213,9 @@ void Objective::buildPattern(const SpherePoints& points)
     }
   }
   std::fill(this->Pattern.valuePtr(), this->Pattern.valuePtr() + nnz, 0.0);
+  this->PatternUnchanged = previous.rows() == nvars && previous.nonZeros() == nnz &&
+    std::equal(outer, outer + nvars + 1, previous.outerIndexPtr()) &&
+    std::equal(inner, inner + nnz, previous.innerIndexPtr());
 
   // Position of block (row, column) among its block column's blocks.
   auto blockIndex = [&](int row, int column)
@@ -273,7 +280,7 @@ double Objective::hessian(const SpherePoints& points,
   }
   if (patternChanged)
   {
-    *patternChanged = rebuild;
+    *patternChanged = rebuild && !this->PatternUnchanged;
   }
   for (Entry& entry : this->Terms)
   {

@@ -179,7 +179,8 @@ public:
   double gradient(const SpherePoints& points, Eigen::VectorXd& gradient);
   /// Energy, gradient and projected Hessian (upper triangle, column-major
   /// compressed; projectionEps < 0: not projected). `patternChanged` tells whether the sparsity
-  /// pattern differs from the previous call (so a solver must re-analyse it).
+  /// pattern differs from the previous call (so a solver must re-analyse it); clear() and
+  /// structureChanged() keep the previous pattern for that comparison.
   double hessian(const SpherePoints& points,
     double projectionEps,
     Eigen::VectorXd& gradient,
@@ -202,6 +203,8 @@ private:
 
   std::vector<Entry> Terms;
   bool PatternValid = false;
+  // The last rebuild produced the same pattern as before it.
+  bool PatternUnchanged = false;
   int PatternVariables = -1;
   Eigen::SparseMatrix<double> Pattern;
 };

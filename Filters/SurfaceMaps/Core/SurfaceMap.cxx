@@ -311,6 +311,9 @@ public:
     MapPhaseReport report;
     report.name = name;
     LinearSolver solver;
+    // Kept across iterations: an unchanged Hessian pattern (no edit that
+    // changed T) lets the solver keep its symbolic analysis.
+    Objective objective;
     for (int it = 0; it < maxIterations; ++it)
     {
       if (this->T.weights.mesh > 0.0)
@@ -326,7 +329,6 @@ public:
       CommonTriangulation::Snapshot snapshot;
       SpherePoints points;
       this->T.snapshot(snapshot, points, lockLandmarks);
-      Objective objective;
       this->T.buildObjective(snapshot, this->Targets, objective);
       NewtonOptions newton;
       newton.maxPointStep = snapshot.vertices >= this->Options.largeMeshVertices

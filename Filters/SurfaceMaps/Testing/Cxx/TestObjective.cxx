@@ -161,6 +161,42 @@ TEST(Objective, ProjectedHessianIsPositiveDefinite)
     << "test setup: the raw Hessian should be indefinite";
 }
 
+TEST(Objective, ReportsWhetherTheHessianPatternChanged)
+{
+  const PolygonMesh ico = makeIcosphere(1);
+  SpherePoints points = perturbedSphere(ico, 0.1, 3);
+  auto term = [&](std::vector<std::array<int, 3>> triangles)
+  {
+    return std::make_shared<ElementTerm<3, EqualDetEnergy>>(
+      "area", EqualDetEnergy{ std::move(triangles), 0.05 });
+  };
+  Objective objective;
+  objective.addTerm(term(ico.triangles()));
+  Eigen::VectorXd g;
+  Eigen::SparseMatrix<double> H;
+  bool changed = false;
+  objective.hessian(points, 1e-9, g, H, &changed);
+  EXPECT_TRUE(changed); // first pattern
+  objective.hessian(points, 1e-9, g, H, &changed);
+  EXPECT_FALSE(changed);
+  // Rebuilt from the same elements (e.g. the next iteration without edits).
+  objective.clear();
+  objective.addTerm(term(ico.triangles()));
+  objective.hessian(points, 1e-9, g, H, &changed);
+  EXPECT_FALSE(changed);
+  // Fewer elements: fewer couplings.
+  auto fewer = ico.triangles();
+  fewer.resize(fewer.size() / 2);
+  objective.clear();
+  objective.addTerm(term(fewer));
+  objective.hessian(points, 1e-9, g, H, &changed);
+  EXPECT_TRUE(changed);
+  // A locked point removes variables.
+  points.setLocked(0, true);
+  objective.hessian(points, 1e-9, g, H, &changed);
+  EXPECT_TRUE(changed);
+}
+
 TEST(Objective, InvalidElementMakesTheEnergyInfinite)
 {
   const PolygonMesh ico = makeIcosphere(1);
