@@ -30,7 +30,8 @@ extern const char* const CheckHelp;
 int runEmbed(const std::vector<std::string>& args);
 extern const char* const EmbedHelp;
 
-/// `surfacemap evaluate SOURCE TARGET [--originals A B] [--output-dir DIR]`
+/// `surfacemap evaluate SOURCE TARGET [--originals A B] [--output-dir DIR]` or
+/// `surfacemap evaluate MAPDIR [--inputs A B ...] [--output-dir DIR]`
 int runEvaluate(const std::vector<std::string>& args);
 extern const char* const EvaluateHelp;
 

@@ -33,7 +33,7 @@ const char* const MapHelp =
   "                      [--pairs star|sequence|cycle|all]\n"
   "                      [--keep-landmarks | --release-landmarks]\n"
   "                      [--landmark-iterations N] [--coarse-iterations N]\n"
-  "                      [--fine-iterations N]\n"
+  "                      [--fine-iterations N] [--relax-landmark-phase]\n"
   "\n"
   "Computes a bijective map between the meshes A, B, ... (closed, manifold,\n"
   "genus 0) through one adaptive common triangulation T (Schmidt, Pieper,\n"
@@ -69,6 +69,9 @@ const char* const MapHelp =
   "  --landmark-iterations N  iteration caps of the phases (defaults 100, 50,\n"
   "  --coarse-iterations N    50; 0 skips a phase). A phase stopping at its cap\n"
   "  --fine-iterations N      is normal and reported.\n"
+  "  --relax-landmark-phase   run the landmark phase until it converges rather\n"
+  "                           than until the landmarks are reached (helps inputs\n"
+  "                           whose parts are rotated, like fingers)\n"
   "\n"
   "Exit code 0 with a certified map, 2 for bad usage or input (also an output\n"
   "directory that cannot be written), 3 if no certified map was found, 1 for\n"
@@ -258,6 +261,10 @@ int runMap(const std::vector<std::string>& args)
         throw UsageError{ "--pairs is star, sequence, cycle or all, not '" + pairs + "'" };
       }
     }
+    else if (a == "--relax-landmark-phase")
+    {
+      map->RelaxLandmarkPhaseOn();
+    }
     else if (a == "--keep-landmarks" || a == "--release-landmarks")
     {
       map->SetKeepLandmarks(a == "--keep-landmarks");
@@ -422,6 +429,7 @@ int runMap(const std::vector<std::string>& args)
        << ", \"pairs\": " << jsonString(pairs)
        << ", \"keep_landmarks\": " << (map->GetKeepLandmarks() ? "true" : "false")
        << ", \"landmark_iterations\": " << map->GetLandmarkIterations()
+       << ", \"relax_landmark_phase\": " << (map->GetRelaxLandmarkPhase() ? "true" : "false")
        << ", \"coarse_iterations\": " << map->GetCoarseIterations()
        << ", \"fine_iterations\": " << map->GetFineIterations() << " },\n";
   json << "  \"phases\": [";

@@ -41,7 +41,7 @@ const Command Commands[] = {
     &surfacemap::runEmbed,
     &surfacemap::EmbedHelp },
   { "evaluate",
-    "distortion and approximation error of a map between two meshes",
+    "distortion, approximation error and certificate of a map (two meshes or a map directory)",
     &surfacemap::runEvaluate,
     &surfacemap::EvaluateHelp },
   { "map",

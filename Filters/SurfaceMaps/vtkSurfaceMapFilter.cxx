@@ -107,6 +107,7 @@ std::vector<double> mapSettings(vtkSurfaceMapFilter* f)
     f->GetApproximationWeight(),
     f->GetLandmarkWeight(),
     f->GetLandmarkTolerance(),
+    f->GetRelaxLandmarkPhase() ? 1.0 : 0.0,
     f->GetKeepLandmarks() ? 1.0 : 0.0,
     static_cast<double>(f->GetPairMode()),
     f->GetApproximationBound(),
@@ -129,6 +130,7 @@ surfacemaps::SurfaceMapOptions mapOptions(vtkSurfaceMapFilter* f)
   options.landmarkWeight = f->GetLandmarkWeight();
   options.landmarkBarrierWeight = f->GetLandmarkBarrierWeight();
   options.landmarkTolerance = f->GetLandmarkTolerance();
+  options.relaxLandmarkPhase = f->GetRelaxLandmarkPhase();
   options.keepLandmarks = f->GetKeepLandmarks();
   options.coarse.enabled = f->GetCoarseIterations() > 0;
   options.coarse.maxIterations = f->GetCoarseIterations();
@@ -820,6 +822,7 @@ void vtkSurfaceMapFilter::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "ApproximationWeight: " << this->ApproximationWeight << "\n";
   os << indent << "LandmarkWeight: " << this->LandmarkWeight << "\n";
   os << indent << "LandmarkTolerance: " << this->LandmarkTolerance << "\n";
+  os << indent << "RelaxLandmarkPhase: " << (this->RelaxLandmarkPhase ? "on" : "off") << "\n";
   os << indent << "KeepLandmarks: " << this->KeepLandmarks << "\n";
   os << indent << "PairMode: " << this->PairMode << "\n";
   os << indent << "ApproximationBound: " << this->ApproximationBound << "\n";

@@ -228,6 +228,20 @@ public:
 
   ///@{
   /**
+   * Run the landmark phase until it has converged (no edit lowers its energy
+   * and the Newton decrement is below DecrementTolerance) instead of ending it
+   * as soon as every landmark is reached (default off). The barrier then
+   * relaxes and coarsens T on every sphere before distortion is optimised,
+   * which helps inputs that differ by large rotations of parts (a hand's
+   * fingers) and can hurt where T gets coarse against small features.
+   */
+  vtkSetMacro(RelaxLandmarkPhase, bool);
+  vtkGetMacro(RelaxLandmarkPhase, bool);
+  vtkBooleanMacro(RelaxLandmarkPhase, bool);
+  ///@}
+
+  ///@{
+  /**
    * After the landmark phase, lock the landmark vertices of T, snapped exactly
    * onto their input vertices (on), or release them to the optimisation
    * (off). Default on.
@@ -349,6 +363,7 @@ protected:
   double ApproximationWeight = 1.0;
   double LandmarkWeight = 1e6;
   double LandmarkTolerance = 1e-4;
+  bool RelaxLandmarkPhase = false;
   bool KeepLandmarks = true;
   int PairMode = PAIRS_STAR;
   double ApproximationBound = 0.0;

@@ -84,6 +84,10 @@ int main(int argc, char* argv[])
     {
       options.fine.targetError = std::atof(value());
     }
+    else if (arg == "--relax-landmark-phase")
+    {
+      options.relaxLandmarkPhase = true;
+    }
     else if (arg == "-v")
     {
       verbose = true;

@@ -80,7 +80,8 @@ def test_evaluate_map_directory(map_dir, tmp_path):
         for name, value in theirs.items():
             if name not in ("source", "target"):
                 assert mine[name] == pytest.approx(value, rel=1e-8), name
-    assert exact["HausdorffSource"] == 0.0 and exact["TwoSidedDistanceSource"] == 0.0  # input 0 itself
+    assert exact["HausdorffSource"] == pytest.approx(0.0, abs=1e-9)  # input 0 itself
+    assert exact["TwoSidedDistanceSource"] == pytest.approx(0.0, abs=1e-9)
     for metrics in (approximating, exact):
         assert metrics["SymmetricDirichlet"] > 1.0
         assert 0.0 < metrics["AreaBelow1.5"] <= metrics["AreaBelow2"] <= 1.0
@@ -88,17 +89,17 @@ def test_evaluate_map_directory(map_dir, tmp_path):
         assert metrics["TwoSidedDistanceTarget"] >= metrics["HausdorffTarget"] > 0.0
     assert approximating["TwoSidedDistanceSource"] >= approximating["HausdorffSource"] > 0.0
 
-    for kind, summary_of_kind, rows in (("approximating", approximating, t["triangles"]), ("exact", exact, 1280)):
+    for kind, figures, rows in (("approximating", approximating, t["triangles"]), ("exact", exact, 1280)):
         triangles = list(csv.DictReader(open(out / f"{kind}_1_triangles.csv")))
         assert len(triangles) == rows
-        assert max(float(row["distortion"]) for row in triangles) == pytest.approx(summary_of_kind["MaxDistortion"])
+        assert max(float(row["distortion"]) for row in triangles) == pytest.approx(figures["MaxDistortion"])
         curve = list(csv.DictReader(open(out / f"{kind}_1_distortion_curve.csv")))
         assert len(curve) == 201
         assert float(curve[50]["distortion"]) == pytest.approx(1.5)
-        assert float(curve[50]["area_fraction_below"]) == pytest.approx(summary_of_kind["AreaBelow1.5"], abs=1e-9)
+        assert float(curve[50]["area_fraction_below"]) == pytest.approx(figures["AreaBelow1.5"], abs=1e-9)
         mesh = read_vtp(out / f"{kind}_1.vtp")
         assert mesh.GetNumberOfPolys() == rows
-        assert mesh.GetCellData().GetArray("Distortion").GetRange()[1] == pytest.approx(summary_of_kind["MaxDistortion"])
+        assert mesh.GetCellData().GetArray("Distortion").GetRange()[1] == pytest.approx(figures["MaxDistortion"])
         positions = mesh.GetPointData().GetArray("SourcePosition")
         assert positions is not None and positions.GetNumberOfComponents() == 3
         assert max(positions.GetRange(k)[1] - positions.GetRange(k)[0] for k in range(3)) == pytest.approx(2.0)

@@ -42,3 +42,23 @@ def test_missing_array_is_an_error(tmp_path):
     r = render(data("ellipsoid.obj"), "-o", tmp_path / "x.png")
     assert r.returncode == 2 and "no Distortion cell array" in r.stderr
     assert not (tmp_path / "x.png").exists()
+
+
+def test_map_checkerboard_on_both_sides(tmp_path):
+    out = tmp_path / "map"
+    r = run("map", data("ellipsoid.obj"), data("blob.off"), "--landmark-iterations", "10", "--coarse-iterations",
+            "3", "--fine-iterations", "3", "--output-dir", out)
+    assert r.returncode == 0, r.stderr
+    assert run("evaluate", out).returncode == 0
+    r = render(out / "approximating_1.vtp", "--checkerboard", "SourcePosition", "-o", tmp_path / "on_b.png")
+    assert r.returncode == 0, r.stderr
+    r = render(out / "approximating_1.vtp", "--checkerboard", "SourcePosition", "--points-from",
+               out / "common_0.vtp", "-o", tmp_path / "on_a.png")
+    assert r.returncode == 0, r.stderr
+    for name in ("on_b.png", "on_a.png"):
+        assert (tmp_path / name).read_bytes()[:8] == PNG
+        assert distinct_colours(tmp_path / name) > 20, f"{name} looks empty"
+    assert (tmp_path / "on_a.png").read_bytes() != (tmp_path / "on_b.png").read_bytes()
+    r = render(out / "approximating_1.vtp", "--points-from", data("limbs.ply"), "-o", tmp_path / "x.png")
+    assert r.returncode == 2 and "limbs.ply has 2562 points" in r.stderr
+    assert not (tmp_path / "x.png").exists()

@@ -22,14 +22,24 @@ T squaredBaseDistance(const Eigen::Vector3d& q,
   const std::array<Eigen::Matrix<T, 3, 1>, 3>& g,
   const std::array<Eigen::Matrix<T, 3, 1>, 3>& L)
 {
-  // Barycentric coordinates of the ray 0 -> q in the chord triangle g
-  // (the DESIGN.md formula with q fixed and the corners moving).
-  const Eigen::Matrix<T, 3, 1> ca = g[2] - g[0], cb = g[2] - g[1];
-  const Eigen::Matrix<T, 3, 1> n = ca.cross(cb);
-  const Eigen::Matrix<T, 3, 1> ua = g[2].cross(cb), ub = ca.cross(g[2]);
-  T den = n[0] * q[0] + n[1] * q[1] + n[2] * q[2];
-  const T alpha = (ua[0] * q[0] + ua[1] * q[1] + ua[2] * q[2]) / den;
-  const T beta = (ub[0] * q[0] + ub[1] * q[1] + ub[2] * q[2]) / den;
+  // Barycentric coordinates of the ray 0 -> q in the chord triangle g: the
+  // DESIGN.md formula with q fixed and the corners moving, rewritten as
+  // alpha = det[q, b, c] / S, beta = det[q, c, a] / S, S = the sum of the
+  // three (det[q, c, c - b] = det[q, b, c], ...). Each det is q x b (linear in
+  // the corner) dotted with the other corner: few products of derivatives.
+  const Eigen::Vector3d& qq = q;
+  auto det = [&qq](const Eigen::Matrix<T, 3, 1>& b, const Eigen::Matrix<T, 3, 1>& c)
+  {
+    // q . (b x c) = (q x b) . c
+    const T w0 = qq[1] * b[2] - qq[2] * b[1];
+    const T w1 = qq[2] * b[0] - qq[0] * b[2];
+    const T w2 = qq[0] * b[1] - qq[1] * b[0];
+    return w0 * c[0] + w1 * c[1] + w2 * c[2];
+  };
+  const T da = det(g[1], g[2]), db = det(g[2], g[0]), dc = det(g[0], g[1]);
+  const T den = da + db + dc;
+  const T alpha = da / den;
+  const T beta = db / den;
   T distance2(0.0);
   for (int r = 0; r < 3; ++r)
   {

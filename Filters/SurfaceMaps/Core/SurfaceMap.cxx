@@ -355,9 +355,9 @@ public:
       std::ostringstream message;
       message << name << " iteration " << it + 1 << ": " << snapshot.vertices << " vertices, E "
               << step.energyAfter << ", decrement " << step.decrement << ", step " << step.step
-              << " (" << step.lineSearchTrials << " trials" << (step.gradientFallback ? ", gradient" : "")
-              << "), edits " << edits.splits
-              << "/" << edits.collapses << "/" << edits.flips;
+              << " (" << step.lineSearchTrials << " trials"
+              << (step.gradientFallback ? ", gradient" : "") << "), edits " << edits.splits << "/"
+              << edits.collapses << "/" << edits.flips;
       this->Options.log(Logger::Detail, message.str());
       if (this->Options.progress)
       {
@@ -375,7 +375,10 @@ public:
       if (untilLandmarks)
       {
         report.landmarkError = this->landmarkError();
-        if (report.landmarkError < this->Options.landmarkTolerance)
+        const bool settled = edits.splits + edits.collapses + edits.flips == 0 &&
+          step.decrement < this->Options.decrementTolerance;
+        if (report.landmarkError < this->Options.landmarkTolerance &&
+          (!this->Options.relaxLandmarkPhase || settled))
         {
           report.converged = true;
           break;

@@ -13,6 +13,13 @@ Rendering needs a display; on a headless machine run the script under
 From the command line::
 
     xvfb-run -a /usr/bin/python3 -m surfacemaps.render evaluated.vtp -o distortion.png
+
+For a map evaluated with ``surfacemap evaluate MAPDIR``: a checkerboard of the
+source's positions on the target, and the same pattern on the source::
+
+    ... -m surfacemaps.render MAPDIR/approximating_1.vtp --checkerboard SourcePosition -o on_b.png
+    ... -m surfacemaps.render MAPDIR/approximating_1.vtp --checkerboard SourcePosition \\
+            --points-from MAPDIR/common_0.vtp -o on_a.png
 """
 
 import argparse
@@ -123,9 +130,21 @@ def main(argv=None):
     parser.add_argument("--checkerboard", metavar="ARRAY", nargs="?", const="SpherePosition",
                         help="draw a checkerboard of this point array instead of the distortion")
     parser.add_argument("--max", type=float, default=3.0, help="distortion shown darkest (default 3)")
+    parser.add_argument("--points-from", metavar="MESH",
+                        help="draw at the points of MESH instead (same points in the same order), e.g. "
+                             "common_0.vtp for the source side of a map's checkerboard")
     args = parser.parse_args(argv)
     try:
         mesh = read_mesh(args.mesh)
+        if args.points_from:
+            other = read_mesh(args.points_from)
+            if other.GetNumberOfPoints() != mesh.GetNumberOfPoints():
+                raise ValueError(f"{args.points_from} has {other.GetNumberOfPoints()} points, "
+                                 f"{args.mesh} has {mesh.GetNumberOfPoints()}")
+            moved = type(mesh)()
+            moved.ShallowCopy(mesh)
+            moved.SetPoints(other.GetPoints())
+            mesh = moved
         if args.checkerboard:
             render_checkerboard(mesh, args.output, args.checkerboard)
         else:

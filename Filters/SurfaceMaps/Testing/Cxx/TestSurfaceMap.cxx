@@ -63,6 +63,24 @@ TEST(SurfaceMap, LandmarkPhaseCoarsensAndReachesTheLandmarks)
   EXPECT_LT(r.lifted[0].size(), inputs[0].mesh.points.size() / 10);
 }
 
+TEST(SurfaceMap, RelaxedLandmarkPhaseRunsUntilItConverges)
+{
+  SurfaceMapOptions options = shortSchedule(0, 0);
+  options.coarse.enabled = false;
+  options.fine.enabled = false;
+  const std::vector<MapInput> inputs = landmarkPair();
+  const SurfaceMapResult quick = computeSurfaceMap(inputs, options);
+  options.relaxLandmarkPhase = true;
+  options.landmarkIterations = 100;
+  const SurfaceMapResult relaxed = computeSurfaceMap(inputs, options);
+  expectCertified(relaxed);
+  ASSERT_EQ(relaxed.phases.size(), 1u);
+  EXPECT_TRUE(relaxed.phases[0].converged);
+  EXPECT_GT(relaxed.phases[0].iterations, quick.phases[0].iterations);
+  EXPECT_LT(relaxed.phases[0].landmarkError, options.landmarkTolerance);
+  EXPECT_LE(relaxed.lifted[0].size(), quick.lifted[0].size());
+}
+
 TEST(SurfaceMap, KeptLandmarksHoldExactly)
 {
   const std::vector<MapInput> inputs = landmarkPair();
