@@ -665,30 +665,38 @@ int vtkSurfaceMapFilter::RequestData(vtkInformation*,
         }
       }
       const double embeddingShare = std::min(0.4, 0.1 * static_cast<double>(missing.size()));
-      for (std::size_t k = 0; k < missing.size(); ++k)
+      if (!missing.empty())
       {
-        const int i = missing[k];
-        const std::string name = inputName(inputs[i], i);
-        const double start = embeddingShare * static_cast<double>(k) / missing.size();
-        const double share = embeddingShare / missing.size();
-        const std::string text = "Sphere embedding of " + name;
-        if (!report(start, text))
+        // All missing embeddings at once, one per thread.
+        const std::string text = missing.size() == 1
+          ? "Sphere embedding of " + inputName(inputs[missing[0]], missing[0])
+          : "Sphere embeddings of " + std::to_string(missing.size()) + " inputs";
+        if (!report(0.0, text))
         {
           throw surfacemaps::EmbeddingAborted();
         }
+        std::vector<const surfacemaps::PolygonMesh*> meshes;
+        for (int i : missing)
+        {
+          meshes.push_back(&mapInputs[i].mesh);
+        }
         surfacemaps::SphereEmbeddingOptions options;
-        options.progress = [&](double fraction) { return report(start + share * fraction, text); };
+        options.progress = [&](double fraction) { return report(embeddingShare * fraction, text); };
         options.log = vtkLogSink();
         try
         {
-          surfacemaps::SphereEmbeddingResult embedding =
-            surfacemaps::embedOnSphere(mapInputs[i].mesh, options);
-          mapInputs[i].spherePositions = std::move(embedding.positions);
-          embeddingSeconds[i] = embedding.seconds;
+          std::vector<surfacemaps::SphereEmbeddingResult> embeddings =
+            surfacemaps::embedAllOnSphere(meshes, options);
+          for (std::size_t k = 0; k < missing.size(); ++k)
+          {
+            mapInputs[missing[k]].spherePositions = std::move(embeddings[k].positions);
+            embeddingSeconds[missing[k]] = embeddings[k].seconds;
+          }
         }
-        catch (const std::runtime_error& e)
+        catch (const surfacemaps::EmbeddingFailure& e)
         {
-          throw std::runtime_error(name + ": " + e.what());
+          const int i = missing[e.index];
+          throw std::runtime_error(inputName(inputs[i], i) + ": " + e.what());
         }
       }
 

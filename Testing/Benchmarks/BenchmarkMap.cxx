@@ -126,9 +126,21 @@ int main(int argc, char* argv[])
       inputs[i].landmarks = landmarkIdsFromIndices(
         readLandmarks(landmarkFiles[i]), inputs[i].mesh.points.size(), landmarkFiles[i]);
     }
-    const SphereEmbeddingResult embedding = embedOnSphere(inputs[i].mesh);
-    inputs[i].spherePositions = embedding.positions;
-    embeddingSeconds += embedding.seconds;
+  }
+  {
+    const auto embeddingStart = std::chrono::steady_clock::now();
+    std::vector<const PolygonMesh*> meshes;
+    for (const MapInput& input : inputs)
+    {
+      meshes.push_back(&input.mesh);
+    }
+    std::vector<SphereEmbeddingResult> embeddings = embedAllOnSphere(meshes);
+    for (std::size_t i = 0; i < inputs.size(); ++i)
+    {
+      inputs[i].spherePositions = std::move(embeddings[i].positions);
+    }
+    embeddingSeconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - embeddingStart).count();
   }
   const SurfaceMapResult r = computeSurfaceMap(inputs, options);
   const double seconds =

@@ -11,8 +11,13 @@
 #include <Eigen/Eigenvalues>
 #include <Eigen/SVD>
 
+#include <omp.h>
+
+#include <atomic>
 #include <chrono>
 #include <cmath>
+#include <exception>
+#include <memory>
 #include <sstream>
 #include <stdexcept>
 
@@ -426,6 +431,95 @@ double embeddingDistortion(const std::vector<Eigen::Vector3d>& input,
 {
   // The map from the input to its chord triangles, measured like any map.
   return measureMap(input, sphere, triangles).symmetricDirichlet;
+}
+
+std::vector<SphereEmbeddingResult> embedAllOnSphere(const std::vector<const PolygonMesh*>& meshes,
+  const SphereEmbeddingOptions& options)
+{
+  const int n = static_cast<int>(meshes.size());
+  std::vector<SphereEmbeddingResult> results(n);
+  if (n == 1)
+  {
+    try
+    {
+      results[0] = embedOnSphere(*meshes[0], options);
+    }
+    catch (const std::runtime_error& e)
+    {
+      throw EmbeddingFailure(0, e.what());
+    }
+    return results;
+  }
+  std::unique_ptr<std::atomic<double>[]> fractions(new std::atomic<double>[n]);
+  for (int i = 0; i < n; ++i)
+  {
+    fractions[i] = 0.0;
+  }
+  std::atomic<bool> aborted{ false };
+  std::vector<std::exception_ptr> errors(n);
+  const int threads = std::max(1, std::min(n, omp_get_max_threads()));
+  // Nested regions inside embedOnSphere run on one thread each (OpenMP's
+  // default of one active level).
+#pragma omp parallel for schedule(dynamic, 1) num_threads(threads)
+  for (int i = 0; i < n; ++i)
+  {
+    const bool reporter = omp_get_thread_num() == 0;
+    SphereEmbeddingOptions local = options;
+    local.progress = [&, i, reporter](double fraction)
+    {
+      fractions[i] = fraction;
+      if (aborted)
+      {
+        return false;
+      }
+      if (reporter && options.progress)
+      {
+        double mean = 0.0;
+        for (int k = 0; k < n; ++k)
+        {
+          mean += fractions[k] / n;
+        }
+        if (!options.progress(mean))
+        {
+          aborted = true;
+          return false;
+        }
+      }
+      return true;
+    };
+    try
+    {
+      results[i] = embedOnSphere(*meshes[i], local);
+      fractions[i] = 1.0;
+    }
+    catch (...)
+    {
+      errors[i] = std::current_exception();
+    }
+  }
+  if (aborted)
+  {
+    throw EmbeddingAborted{};
+  }
+  for (int i = 0; i < n; ++i)
+  {
+    if (errors[i])
+    {
+      try
+      {
+        std::rethrow_exception(errors[i]);
+      }
+      catch (const EmbeddingAborted&)
+      {
+        throw;
+      }
+      catch (const std::exception& e)
+      {
+        throw EmbeddingFailure(i, e.what());
+      }
+    }
+  }
+  return results;
 }
 
 Eigen::Matrix3d bestRotation(const std::vector<Eigen::Vector3d>& from,

@@ -8,6 +8,7 @@
 #include <Eigen/Core>
 
 #include <functional>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -81,6 +82,28 @@ struct EmbeddingAborted
 /// embedding is retried with a stronger barrier, then with the barrier alone.
 /// Throws std::runtime_error if no attempt certifies.
 SphereEmbeddingResult embedOnSphere(const PolygonMesh& mesh,
+  const SphereEmbeddingOptions& options = SphereEmbeddingOptions());
+
+/// Thrown by embedAllOnSphere when the embedding of mesh `index` fails.
+struct EmbeddingFailure : std::runtime_error
+{
+  EmbeddingFailure(int i, const std::string& message)
+    : std::runtime_error(message)
+    , index(i)
+  {
+  }
+  int index;
+};
+
+/// Embeds several meshes at once, one mesh per thread (each embedding then
+/// runs on one thread): faster than one after the other with all threads,
+/// since much of an embedding is serial. Each result is deterministic but may
+/// differ in rounding from a two-thread embedOnSphere of the same mesh (sums
+/// in another order). options.progress is called from the calling thread
+/// only, with the mean fraction over the meshes; false aborts every embedding
+/// (EmbeddingAborted). Throws EmbeddingFailure for the first mesh (by index)
+/// that cannot be embedded.
+std::vector<SphereEmbeddingResult> embedAllOnSphere(const std::vector<const PolygonMesh*>& meshes,
   const SphereEmbeddingOptions& options = SphereEmbeddingOptions());
 
 /// The rotation R (det +1) minimising sum |R a_k - b_k|^2 (Kabsch), e.g. to
