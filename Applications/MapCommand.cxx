@@ -33,7 +33,7 @@ const char* const MapHelp =
   "                      [--pairs star|sequence|cycle|all]\n"
   "                      [--keep-landmarks | --release-landmarks]\n"
   "                      [--landmark-iterations N] [--coarse-iterations N]\n"
-  "                      [--fine-iterations N] [--relax-landmark-phase]\n"
+  "                      [--fine-iterations N] [--no-landmark-relaxation]\n"
   "\n"
   "Computes a bijective map between the meshes A, B, ... (closed, manifold,\n"
   "genus 0) through one adaptive common triangulation T (Schmidt, Pieper,\n"
@@ -69,9 +69,9 @@ const char* const MapHelp =
   "  --landmark-iterations N  iteration caps of the phases (defaults 100, 50,\n"
   "  --coarse-iterations N    50; 0 skips a phase). A phase stopping at its cap\n"
   "  --fine-iterations N      is normal and reported.\n"
-  "  --relax-landmark-phase   run the landmark phase until it converges rather\n"
-  "                           than until the landmarks are reached (helps inputs\n"
-  "                           whose parts are rotated, like fingers)\n"
+  "  --no-landmark-relaxation end the landmark phase as soon as the landmarks\n"
+  "                           are reached (default: relax T's embeddings around\n"
+  "                           them first, with Newton steps and flips)\n"
   "\n"
   "Exit code 0 with a certified map, 2 for bad usage or input (also an output\n"
   "directory that cannot be written), 3 if no certified map was found, 1 for\n"
@@ -261,9 +261,9 @@ int runMap(const std::vector<std::string>& args)
         throw UsageError{ "--pairs is star, sequence, cycle or all, not '" + pairs + "'" };
       }
     }
-    else if (a == "--relax-landmark-phase")
+    else if (a == "--no-landmark-relaxation")
     {
-      map->RelaxLandmarkPhaseOn();
+      map->RelaxLandmarkPhaseOff();
     }
     else if (a == "--keep-landmarks" || a == "--release-landmarks")
     {

@@ -228,12 +228,12 @@ public:
 
   ///@{
   /**
-   * Run the landmark phase until it has converged (no edit lowers its energy
-   * and the Newton decrement is below DecrementTolerance) instead of ending it
-   * as soon as every landmark is reached (default off). The barrier then
-   * relaxes and coarsens T on every sphere before distortion is optimised,
-   * which helps inputs that differ by large rotations of parts (a hand's
-   * fingers) and can hurt where T gets coarse against small features.
+   * Once every landmark is reached, go on in the landmark phase with Newton
+   * steps and flips only (no splits or collapses) until it converges or
+   * reaches LandmarkIterations (default on): the barrier relaxes T's
+   * embeddings around the moved landmarks, a smoother start for the
+   * distortion phases. Off: the phase ends as soon as the landmarks are
+   * reached.
    */
   vtkSetMacro(RelaxLandmarkPhase, bool);
   vtkGetMacro(RelaxLandmarkPhase, bool);
@@ -363,7 +363,7 @@ protected:
   double ApproximationWeight = 1.0;
   double LandmarkWeight = 1e6;
   double LandmarkTolerance = 1e-4;
-  bool RelaxLandmarkPhase = false;
+  bool RelaxLandmarkPhase = true;
   bool KeepLandmarks = true;
   int PairMode = PAIRS_STAR;
   double ApproximationBound = 0.0;

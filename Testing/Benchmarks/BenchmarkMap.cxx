@@ -84,9 +84,9 @@ int main(int argc, char* argv[])
     {
       options.fine.targetError = std::atof(value());
     }
-    else if (arg == "--relax-landmark-phase")
+    else if (arg == "--no-landmark-relaxation")
     {
-      options.relaxLandmarkPhase = true;
+      options.relaxLandmarkPhase = false;
     }
     else if (arg == "-v")
     {

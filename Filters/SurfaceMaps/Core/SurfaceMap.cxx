@@ -314,13 +314,21 @@ public:
     // Kept across iterations: an unchanged Hessian pattern (no edit that
     // changed T) lets the solver keep its symbolic analysis.
     Objective objective;
+    bool reached = false;
     for (int it = 0; it < maxIterations; ++it)
     {
       if (this->T.weights.mesh > 0.0)
       {
         this->T.updateTargetLengths();
       }
-      const RemeshingResult edits = remesh(this->T);
+      RemeshingOptions remeshing;
+      if (untilLandmarks && reached)
+      {
+        // Relaxing after the landmarks were reached: T keeps its vertices.
+        remeshing.collapse = false;
+        remeshing.split = false;
+      }
+      const RemeshingResult edits = remesh(this->T, remeshing);
       report.splits += edits.splits;
       report.collapses += edits.collapses;
       report.flips += edits.flips;
@@ -375,6 +383,7 @@ public:
       if (untilLandmarks)
       {
         report.landmarkError = this->landmarkError();
+        reached = reached || report.landmarkError < this->Options.landmarkTolerance;
         const bool settled = edits.splits + edits.collapses + edits.flips == 0 &&
           step.decrement < this->Options.decrementTolerance;
         if (report.landmarkError < this->Options.landmarkTolerance &&

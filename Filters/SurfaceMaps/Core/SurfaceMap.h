@@ -80,13 +80,13 @@ struct SurfaceMapOptions
   double landmarkWeight = 1e6;
   double landmarkBarrierWeight = 1.0;
   double landmarkTolerance = 1e-4;
-  /// Run the landmark phase until it has converged (no edit lowers its
-  /// energy and the Newton decrement is small) instead of stopping as soon
-  /// as the landmarks are reached: the barrier then relaxes (and coarsens) T
-  /// on every sphere before the distortion is optimised. Helps pairs that
-  /// differ by large rotations of parts (a hand's fingers); hurts where it
-  /// coarsens T against small features. Off by default.
-  bool relaxLandmarkPhase = false;
+  /// Once every landmark is reached, keep going in the landmark phase with
+  /// Newton steps and flips only (no splits, no collapses) until it has
+  /// converged or reaches its cap: the barrier then relaxes T's embeddings
+  /// around the moved landmarks (a smooth initial map instead of a squeezed
+  /// ring around each landmark). Otherwise the phase ends as soon as the
+  /// landmarks are reached (the reference implementation's rule).
+  bool relaxLandmarkPhase = true;
   /// After the landmark phase: lock the landmark vertices (snapped exactly
   /// onto their input vertices) or release them to the optimisation.
   bool keepLandmarks = true;
