@@ -1,5 +1,7 @@
 #include "LinearSolver.h"
 
+#include <mutex>
+
 #include <Eigen/CholmodSupport>
 
 #include <dlfcn.h>
@@ -15,34 +17,57 @@ namespace
 // CHOLMOD's supernodal factorisation calls BLAS on many small dense blocks.
 // A multithreaded OpenBLAS slows that down by an order of magnitude (its
 // threads fight the engine's OpenMP threads over 2 cores), so BLAS runs on
-// one thread for the duration of a factorisation and is restored afterwards.
-// Looked up at run time: with another BLAS there is nothing to do.
+// one thread while any factorisation runs and is restored when the last one
+// ends. The thread count is global: concurrent solvers (several embeddings at
+// once) share one count of active guards, or one of them would restore the
+// old count while another factorises, with results that change from run to
+// run. Looked up at run time: with another BLAS there is nothing to do.
 class SingleThreadedBlas
 {
 public:
   SingleThreadedBlas()
   {
-    using Get = int (*)();
-    using Set = void (*)(int);
-    auto get = reinterpret_cast<Get>(dlsym(RTLD_DEFAULT, "openblas_get_num_threads"));
-    this->SetThreads = reinterpret_cast<Set>(dlsym(RTLD_DEFAULT, "openblas_set_num_threads"));
-    if (get && this->SetThreads)
+    std::lock_guard<std::mutex> lock(mutex());
+    State& s = state();
+    if (s.active++ == 0)
     {
-      this->Previous = get();
-      this->SetThreads(1);
+      using Get = int (*)();
+      auto get = reinterpret_cast<Get>(dlsym(RTLD_DEFAULT, "openblas_get_num_threads"));
+      s.set = reinterpret_cast<void (*)(int)>(dlsym(RTLD_DEFAULT, "openblas_set_num_threads"));
+      s.previous = get && s.set ? get() : 0;
+      if (s.previous > 0)
+      {
+        s.set(1);
+      }
     }
   }
   ~SingleThreadedBlas()
   {
-    if (this->Previous > 0)
+    std::lock_guard<std::mutex> lock(mutex());
+    State& s = state();
+    if (--s.active == 0 && s.previous > 0)
     {
-      this->SetThreads(this->Previous);
+      s.set(s.previous);
     }
   }
 
 private:
-  void (*SetThreads)(int) = nullptr;
-  int Previous = 0;
+  struct State
+  {
+    int active = 0;
+    int previous = 0;
+    void (*set)(int) = nullptr;
+  };
+  static State& state()
+  {
+    static State s;
+    return s;
+  }
+  static std::mutex& mutex()
+  {
+    static std::mutex m;
+    return m;
+  }
 };
 } // namespace
 
@@ -87,7 +112,15 @@ LinearSolveResult LinearSolver::solve(const Eigen::SparseMatrix<double>& H,
   auto& cholesky = this->Impl->Cholesky;
   if (patternChanged || !this->Impl->Analysed)
   {
-    cholesky.analyzePattern(H);
+    {
+      // METIS (nested dissection orderings) keeps its random state in
+      // globals and reseeds per call: concurrent analyses (several
+      // embeddings at once) would draw from each other's sequence and give
+      // orderings, hence rounding, that change from run to run.
+      static std::mutex orderingMutex;
+      std::lock_guard<std::mutex> lock(orderingMutex);
+      cholesky.analyzePattern(H);
+    }
     this->Impl->Analysed = true;
     result.analysed = true;
   }

@@ -10,6 +10,7 @@
 #include "SphereEmbedding.h"
 
 #include <gtest/gtest.h>
+
 #include <omp.h>
 
 #include <random>
@@ -163,6 +164,52 @@ TEST(SphereEmbedding, DeterministicForAFixedThreadCount)
     ASSERT_EQ(a.positions[i], b.positions[i]) << "vertex " << i;
   }
   EXPECT_EQ(a.newtonIterations, b.newtonIterations);
+}
+
+TEST(SphereEmbedding, ConcurrentEmbeddingsAreDeterministic)
+{
+  // Several embeddings at once share global state (BLAS thread count, METIS'
+  // random numbers): run twice, each mesh's result must not change, and must
+  // equal its embedding alone on one thread.
+  const std::vector<PolygonMesh> meshes = {
+    readOff(Data + "/blob.off"), readObj(Data + "/ellipsoid.obj"), readPly(Data + "/limbs.ply")
+  };
+  const std::vector<const PolygonMesh*> pointers = { &meshes[0], &meshes[1], &meshes[2] };
+  const std::vector<SphereEmbeddingResult> first = embedAllOnSphere(pointers);
+  const std::vector<SphereEmbeddingResult> second = embedAllOnSphere(pointers);
+  const int threads = omp_get_max_threads();
+  omp_set_num_threads(1);
+  const SphereEmbeddingResult alone = embedOnSphere(meshes[2]);
+  omp_set_num_threads(threads);
+  ASSERT_EQ(first.size(), 3u);
+  for (std::size_t m = 0; m < 3; ++m)
+  {
+    EXPECT_TRUE(first[m].certificate.bijective);
+    ASSERT_EQ(first[m].positions.size(), meshes[m].points.size());
+    for (std::size_t i = 0; i < first[m].positions.size(); ++i)
+    {
+      ASSERT_EQ(first[m].positions[i], second[m].positions[i]) << "mesh " << m << " vertex " << i;
+    }
+  }
+  for (std::size_t i = 0; i < alone.positions.size(); ++i)
+  {
+    ASSERT_EQ(first[2].positions[i], alone.positions[i]) << "vertex " << i;
+  }
+}
+
+TEST(SphereEmbedding, FailureNamesTheMesh)
+{
+  PolygonMesh torus = makeTorus(12, 8);
+  const PolygonMesh ok = makeOctahedron();
+  try
+  {
+    embedAllOnSphere({ &ok, &torus });
+    FAIL() << "a torus has no sphere embedding";
+  }
+  catch (const EmbeddingFailure& e)
+  {
+    EXPECT_EQ(e.index, 1);
+  }
 }
 
 TEST(SphereEmbedding, ProgressIsMonotoneAndAbortStops)
