@@ -5,8 +5,11 @@
 #include "vtkAlgorithm.h"
 #include "vtkCallbackCommand.h"
 #include "vtkCommand.h"
+#include "vtkDataArray.h"
+#include "vtkFieldData.h"
 #include "vtkNew.h"
 #include "vtkPolyData.h"
+#include "vtkSurfaceMapEvaluation.h"
 #include "vtkSurfaceMeshReader.h"
 #include "vtkSurfaceMeshValidator.h"
 #include "vtkTable.h"
@@ -22,6 +25,7 @@
 #include <fstream>
 #include <iomanip>
 #include <iostream>
+#include <limits>
 #include <sstream>
 #include <stdexcept>
 
@@ -236,6 +240,39 @@ void writePolyDataAtomically(vtkPolyData* data, const std::string& path)
     std::remove(temporary.c_str());
     throw std::runtime_error("cannot write '" + path + "': " + reason);
   }
+}
+
+vtkSmartPointer<vtkPolyData> measureMap(vtkPolyData* source,
+  vtkPolyData* target,
+  vtkPolyData* sourceOriginal,
+  vtkPolyData* targetOriginal)
+{
+  vtkNew<vtkSurfaceMapEvaluation> evaluation;
+  ErrorCapture errors(evaluation);
+  evaluation->SetInputDataObject(0, source);
+  evaluation->SetInputDataObject(1, target);
+  if (sourceOriginal)
+  {
+    evaluation->SetInputDataObject(2, sourceOriginal);
+  }
+  if (targetOriginal)
+  {
+    evaluation->SetInputDataObject(3, targetOriginal);
+  }
+  evaluation->Update();
+  if (!errors.messages().empty())
+  {
+    throw std::invalid_argument(errors.messages().front());
+  }
+  vtkSmartPointer<vtkPolyData> result = evaluation->GetOutput();
+  return result;
+}
+
+double summaryValue(vtkPolyData* result, const char* name)
+{
+  vtkDataArray* a = result->GetFieldData()->GetArray(name);
+  return a && a->GetNumberOfTuples() > 0 ? a->GetTuple1(0)
+                                         : std::numeric_limits<double>::quiet_NaN();
 }
 
 } // namespace surfacemap

@@ -49,6 +49,18 @@ private:
   bool Shown = false;
 };
 
+/// Measures the map source -> target (equal connectivity) with
+/// vtkSurfaceMapEvaluation; originals (for the Hausdorff figures) may be null.
+/// Returns the evaluated source with the per-triangle arrays and the summary
+/// field data; throws std::invalid_argument with the evaluation's message.
+vtkSmartPointer<vtkPolyData> measureMap(vtkPolyData* source,
+  vtkPolyData* target,
+  vtkPolyData* sourceOriginal,
+  vtkPolyData* targetOriginal);
+
+/// A summary figure of measureMap's result, NaN if absent.
+double summaryValue(vtkPolyData* result, const char* name);
+
 /// Reads a mesh with vtkSurfaceMeshReader; on failure prints the reason and
 /// returns null.
 vtkSmartPointer<vtkPolyData> readMesh(const std::string& path, const std::string& landmarks = "");

@@ -108,42 +108,6 @@ const char* const TriangleArrays[] = { "SingularValueMax",
   "AreaTarget" };
 const char* const TriangleColumns = "triangle,s1,s2,distortion,area_source,area_target\n";
 
-// Measures source -> target (equal connectivity); originals may be null.
-// Throws std::invalid_argument with the evaluation's message.
-vtkSmartPointer<vtkPolyData> measure(vtkPolyData* source,
-  vtkPolyData* target,
-  vtkPolyData* sourceOriginal,
-  vtkPolyData* targetOriginal)
-{
-  vtkNew<vtkSurfaceMapEvaluation> evaluation;
-  ErrorCapture errors(evaluation);
-  evaluation->SetInputDataObject(0, source);
-  evaluation->SetInputDataObject(1, target);
-  if (sourceOriginal)
-  {
-    evaluation->SetInputDataObject(2, sourceOriginal);
-  }
-  if (targetOriginal)
-  {
-    evaluation->SetInputDataObject(3, targetOriginal);
-  }
-  evaluation->Update();
-  if (!errors.messages().empty())
-  {
-    throw std::invalid_argument(errors.messages().front());
-  }
-  vtkSmartPointer<vtkPolyData> result = evaluation->GetOutput();
-  return result;
-}
-
-// A summary figure of an evaluation result, NaN if absent.
-double summaryValue(vtkPolyData* result, const char* name)
-{
-  vtkDataArray* a = result->GetFieldData()->GetArray(name);
-  return a && a->GetNumberOfTuples() > 0 ? a->GetTuple1(0)
-                                         : std::numeric_limits<double>::quiet_NaN();
-}
-
 // The summary figures present, as JSON object members, each on its own line.
 std::string summaryMembers(vtkPolyData* result, const std::string& indent)
 {
@@ -414,8 +378,8 @@ int evaluateMapDirectory(const std::string& directory,
       vtkSmartPointer<vtkPolyData> approximating, exact;
       try
       {
-        approximating = measure(common[0], common[j], inputs[0], inputs[j]);
-        exact = measure(inputs[0], mapped[j], inputs[0], inputs[j]);
+        approximating = measureMap(common[0], common[j], inputs[0], inputs[j]);
+        exact = measureMap(inputs[0], mapped[j], inputs[0], inputs[j]);
       }
       catch (const std::invalid_argument& e)
       {

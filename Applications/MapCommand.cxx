@@ -140,29 +140,22 @@ std::string evaluate(const char* what,
   vtkPolyData* sourceOriginal,
   vtkPolyData* targetOriginal)
 {
-  vtkNew<vtkSurfaceMapEvaluation> evaluation;
-  ErrorCapture errors(evaluation);
-  evaluation->SetInputDataObject(0, source);
-  evaluation->SetInputDataObject(1, targetMesh);
-  if (sourceOriginal)
+  vtkSmartPointer<vtkPolyData> evaluated;
+  try
   {
-    evaluation->SetInputDataObject(2, sourceOriginal);
+    evaluated = measureMap(source, targetMesh, sourceOriginal, targetOriginal);
   }
-  if (targetOriginal)
+  catch (const std::invalid_argument& e)
   {
-    evaluation->SetInputDataObject(3, targetOriginal);
+    throw std::logic_error(
+      "evaluating the " + std::string(what) + " 0 -> " + std::to_string(target) + ": " + e.what());
   }
-  evaluation->Update();
-  if (!errors.messages().empty())
-  {
-    throw std::logic_error("evaluating the " + std::string(what) + " 0 -> " +
-      std::to_string(target) + ": " + errors.messages().front());
-  }
+  auto figure = [&evaluated](const char* name) { return summaryValue(evaluated, name); };
   std::ostringstream json;
   json << "{ \"source\": 0, \"target\": " << target;
   for (const char* name : MetricNames)
   {
-    const double value = evaluation->GetSummaryValue(name);
+    const double value = figure(name);
     if (!std::isnan(value))
     {
       json << ", " << jsonString(name) << ": " << jsonNumber(value);
@@ -172,21 +165,19 @@ std::string evaluate(const char* what,
   std::printf("  %s 0 -> %d: SD %.4f, a1.5 %.3f, a2 %.3f, max %.3g",
     what,
     target,
-    evaluation->GetSummaryValue("SymmetricDirichlet"),
-    evaluation->GetSummaryValue("AreaBelow1.5"),
-    evaluation->GetSummaryValue("AreaBelow2"),
-    evaluation->GetSummaryValue("MaxDistortion"));
+    figure("SymmetricDirichlet"),
+    figure("AreaBelow1.5"),
+    figure("AreaBelow2"),
+    figure("MaxDistortion"));
   if (sourceOriginal)
   {
-    std::printf(", H %.3f%% / %.3f%%",
-      evaluation->GetSummaryValue("HausdorffSource"),
-      evaluation->GetSummaryValue("HausdorffTarget"));
+    std::printf(", H %.3f%% / %.3f%%", figure("HausdorffSource"), figure("HausdorffTarget"));
   }
   else if (targetOriginal)
   {
-    std::printf(", H %.3f%% on input %d", evaluation->GetSummaryValue("HausdorffTarget"), target);
+    std::printf(", H %.3f%% on input %d", figure("HausdorffTarget"), target);
   }
-  std::printf(", min angle %.1f\n", evaluation->GetSummaryValue("MinAngleTarget"));
+  std::printf(", min angle %.1f\n", figure("MinAngleTarget"));
   return json.str();
 }
 

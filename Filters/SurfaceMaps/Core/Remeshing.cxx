@@ -298,6 +298,32 @@ double gainOf(const CommonTriangulation& T, Handle handle, Build build)
   return evaluate(T, edit);
 }
 
+/// Builds and evaluates an edit; true (and the gain in `applied`) when it
+/// is possible and gains more than minGain.
+template<typename Build, typename Handle>
+bool worthApplying(const CommonTriangulation& T,
+  Handle handle,
+  Build build,
+  double minGain,
+  double* applied,
+  LocalEdit& edit)
+{
+  if (!build(T, handle, edit))
+  {
+    return false;
+  }
+  const double gain = evaluate(T, edit);
+  if (!(gain > minGain))
+  {
+    return false;
+  }
+  if (applied)
+  {
+    *applied = gain;
+  }
+  return true;
+}
+
 std::vector<FaceHandle> facesAround(const SurfaceMesh& mesh, VertexHandle v)
 {
   std::vector<FaceHandle> faces;
@@ -369,18 +395,9 @@ double flipGain(const CommonTriangulation& T, OpenMesh::EdgeHandle e)
 bool applySplit(CommonTriangulation& T, OpenMesh::EdgeHandle e, double minGain, double* applied)
 {
   LocalEdit edit;
-  if (!buildSplit(T, e, edit))
+  if (!worthApplying(T, e, buildSplit, minGain, applied, edit))
   {
     return false;
-  }
-  const double gain = evaluate(T, edit);
-  if (!(gain > minGain))
-  {
-    return false;
-  }
-  if (applied)
-  {
-    *applied = gain;
   }
   SurfaceMesh& mesh = T.mesh();
   const Eigen::Vector3d& p = edit.moved.lifted[0];
@@ -398,18 +415,9 @@ bool applyCollapse(CommonTriangulation& T,
   double* applied)
 {
   LocalEdit edit;
-  if (!buildCollapse(T, h, edit))
+  if (!worthApplying(T, h, buildCollapse, minGain, applied, edit))
   {
     return false;
-  }
-  const double gain = evaluate(T, edit);
-  if (!(gain > minGain))
-  {
-    return false;
-  }
-  if (applied)
-  {
-    *applied = gain;
   }
   SurfaceMesh& mesh = T.mesh();
   const VertexHandle kept = mesh.to_vertex_handle(h);
@@ -422,18 +430,9 @@ bool applyCollapse(CommonTriangulation& T,
 bool applyFlip(CommonTriangulation& T, OpenMesh::EdgeHandle e, double minGain, double* applied)
 {
   LocalEdit edit;
-  if (!buildFlip(T, e, edit))
+  if (!worthApplying(T, e, buildFlip, minGain, applied, edit))
   {
     return false;
-  }
-  const double gain = evaluate(T, edit);
-  if (!(gain > minGain))
-  {
-    return false;
-  }
-  if (applied)
-  {
-    *applied = gain;
   }
   SurfaceMesh& mesh = T.mesh();
   mesh.flip(e);
