@@ -268,6 +268,26 @@ vtkSmartPointer<vtkPolyData> measureMap(vtkPolyData* source,
   return result;
 }
 
+const std::vector<const char*>& evaluationSummaryNames()
+{
+  static const std::vector<const char*> names = { "SymmetricDirichlet",
+    "AreaBelow1.5",
+    "AreaBelow2",
+    "MaxDistortion",
+    "DegenerateTriangles",
+    "MinAngleSource",
+    "MeanMinAngleSource",
+    "MinAngleTarget",
+    "MeanMinAngleTarget",
+    "HausdorffSource",
+    "HausdorffTarget",
+    "TwoSidedDistanceSource",
+    "TwoSidedDistanceTarget",
+    "Bijective",
+    "NonPositiveTriangles" };
+  return names;
+}
+
 double summaryValue(vtkPolyData* result, const char* name)
 {
   vtkDataArray* a = result->GetFieldData()->GetArray(name);

@@ -58,6 +58,9 @@ vtkSmartPointer<vtkPolyData> measureMap(vtkPolyData* source,
   vtkPolyData* sourceOriginal,
   vtkPolyData* targetOriginal);
 
+/// The names of measureMap's summary figures, in the order they are printed.
+const std::vector<const char*>& evaluationSummaryNames();
+
 /// A summary figure of measureMap's result, NaN if absent.
 double summaryValue(vtkPolyData* result, const char* name);
 

@@ -83,23 +83,6 @@ const char* const EvaluateHelp =
 namespace
 {
 
-// The evaluation's summary figures, in the order they are printed.
-const char* const SummaryNames[] = { "SymmetricDirichlet",
-  "AreaBelow1.5",
-  "AreaBelow2",
-  "MaxDistortion",
-  "DegenerateTriangles",
-  "MinAngleSource",
-  "MeanMinAngleSource",
-  "MinAngleTarget",
-  "MeanMinAngleTarget",
-  "HausdorffSource",
-  "HausdorffTarget",
-  "TwoSidedDistanceSource",
-  "TwoSidedDistanceTarget",
-  "Bijective",
-  "NonPositiveTriangles" };
-
 // The evaluation's per-triangle arrays and their CSV columns.
 const char* const TriangleArrays[] = { "SingularValueMax",
   "SingularValueMin",
@@ -113,7 +96,7 @@ std::string summaryMembers(vtkPolyData* result, const std::string& indent)
 {
   std::ostringstream json;
   const char* separator = "";
-  for (const char* name : SummaryNames)
+  for (const char* name : evaluationSummaryNames())
   {
     if (result->GetFieldData()->GetArray(name))
     {
@@ -169,7 +152,7 @@ vtkSmartPointer<vtkPolyData> targetWithFigures(vtkPolyData* target,
   {
     view->GetCellData()->AddArray(result->GetCellData()->GetArray(name));
   }
-  for (const char* name : SummaryNames)
+  for (const char* name : evaluationSummaryNames())
   {
     if (vtkDataArray* a = result->GetFieldData()->GetArray(name))
     {
@@ -540,7 +523,7 @@ int runEvaluate(const std::vector<std::string>& args)
     meshes[0].c_str(),
     meshes[1].c_str(),
     static_cast<long long>(result->GetNumberOfCells()));
-  for (const char* name : SummaryNames)
+  for (const char* name : evaluationSummaryNames())
   {
     if (result->GetFieldData()->GetArray(name))
     {
