@@ -127,8 +127,9 @@ MapSurface prepareSurface(const MapInput& input, int index)
 
 /// Approximation samples: every vertex, or an evenly strided subset of large
 /// inputs; weights = barycentric vertex areas normalised to sum 1.
-void buildSamples(MapSurface& s, const SurfaceMapOptions& options)
+void buildSamples(MapSurface& s, int samples)
 {
+  s.samples = ApproximationSamples();
   const std::size_t nv = s.points.size();
   std::vector<double> vertexArea(nv, 0.0);
   for (const auto& t : s.triangles)
@@ -140,7 +141,7 @@ void buildSamples(MapSurface& s, const SurfaceMapOptions& options)
       vertexArea[t[k]] += A / 3.0;
     }
   }
-  const std::size_t limit = static_cast<std::size_t>(std::max(1, options.approximationSamples));
+  const std::size_t limit = static_cast<std::size_t>(std::max(1, samples));
   const std::size_t stride = (nv + limit - 1) / limit;
   double weightSum = 0.0;
   for (std::size_t v = 0; v < nv; v += stride)
@@ -317,10 +318,12 @@ public:
     bool reached = false;
     for (int it = 0; it < maxIterations; ++it)
     {
+      auto clock = Clock::now();
       if (this->T.weights.mesh > 0.0)
       {
         this->T.updateTargetLengths();
       }
+      report.bookkeepingSeconds += secondsSince(clock);
       RemeshingOptions remeshing;
       if (untilLandmarks && reached)
       {
@@ -334,10 +337,12 @@ public:
       report.flips += edits.flips;
       report.remeshSeconds += edits.seconds;
 
+      clock = Clock::now();
       CommonTriangulation::Snapshot snapshot;
       SpherePoints points;
       this->T.snapshot(snapshot, points, lockLandmarks);
       this->T.buildObjective(snapshot, this->Targets, objective);
+      report.bookkeepingSeconds += secondsSince(clock);
       NewtonOptions newton;
       newton.maxPointStep = snapshot.vertices >= this->Options.largeMeshVertices
         ? this->Options.maxPointStepLarge
@@ -346,11 +351,13 @@ public:
       { return this->T.update(snapshot, trial); };
       newton.log = this->Options.log;
       const NewtonStepResult step = newtonStep(objective, points, solver, newton);
+      clock = Clock::now();
       if (!this->T.update(snapshot, points))
       {
         throw std::logic_error("the accepted Newton step left an invalid embedding");
       }
       this->T.writeBack(snapshot, points);
+      report.bookkeepingSeconds += secondsSince(clock);
 
       report.iterations = it + 1;
       report.energy = step.energyAfter;
@@ -498,7 +505,7 @@ std::vector<MapSurface> prepareMapSurfaces(const std::vector<MapInput>& inputs,
   alignEmbeddings(surfaces, landmarkVertices(inputs), options.log);
   for (MapSurface& s : surfaces)
   {
-    buildSamples(s, options);
+    buildSamples(s, options.approximationSamples);
     buildLifts(s);
   }
   return surfaces;

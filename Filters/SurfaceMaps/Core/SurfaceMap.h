@@ -138,6 +138,9 @@ struct MapPhaseReport
   double derivativeSeconds = 0.0;
   double solveSeconds = 0.0;
   double lineSearchSeconds = 0.0;
+  /// Everything else per iteration: target lengths, the flat copy of T and
+  /// the objective, re-locating lifts and samples, writing back.
+  double bookkeepingSeconds = 0.0;
 };
 
 /// A point of input i given by a triangle of input i and barycentric
