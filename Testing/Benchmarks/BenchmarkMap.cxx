@@ -84,6 +84,10 @@ int main(int argc, char* argv[])
     {
       options.fine.targetError = std::atof(value());
     }
+    else if (arg == "--max-point-step")
+    {
+      options.maxPointStep = std::atof(value());
+    }
     else if (arg == "--no-landmark-relaxation")
     {
       options.relaxLandmarkPhase = false;
