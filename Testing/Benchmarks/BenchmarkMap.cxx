@@ -84,6 +84,10 @@ int main(int argc, char* argv[])
     {
       options.fine.targetError = std::atof(value());
     }
+    else if (arg == "--fine-barrier")
+    {
+      options.fine.barrierWeight = std::atof(value());
+    }
     else if (arg == "--max-point-step")
     {
       options.maxPointStep = std::atof(value());
