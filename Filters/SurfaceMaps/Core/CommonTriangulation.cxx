@@ -286,6 +286,20 @@ double CommonTriangulation::sampleEnergy(int i,
     d2, this->weights.approximation * samples.weights[s], this->weights.bound);
 }
 
+bool CommonTriangulation::validTriangle(const MapVertex& a,
+  const MapVertex& b,
+  const MapVertex& c) const
+{
+  for (int i = 0; i < this->numberOfInputs(); ++i)
+  {
+    if (!(a.g[i].dot(b.g[i].cross(c.g[i])) > minDet) || orient3dOrigin(a.g[i], b.g[i], c.g[i]) <= 0)
+    {
+      return false;
+    }
+  }
+  return true;
+}
+
 double CommonTriangulation::localEnergy(const std::vector<MapVertex>& vertices,
   const std::vector<std::array<int, 3>>& triangles,
   const std::vector<double>& lengths,
@@ -305,16 +319,9 @@ double CommonTriangulation::localEnergy(const std::vector<MapVertex>& vertices,
     const MapVertex& a = vertices[triangles[t][0]];
     const MapVertex& b = vertices[triangles[t][1]];
     const MapVertex& c = vertices[triangles[t][2]];
-    if (validate)
+    if (validate && !this->validTriangle(a, b, c))
     {
-      for (int i = 0; i < n; ++i)
-      {
-        if (!(a.g[i].dot(b.g[i].cross(c.g[i])) > minDet) ||
-          orient3dOrigin(a.g[i], b.g[i], c.g[i]) <= 0)
-        {
-          return Infinity;
-        }
-      }
+      return Infinity;
     }
     const double e = this->triangleEnergy(a, b, c, lengths[t]);
     energy += e;

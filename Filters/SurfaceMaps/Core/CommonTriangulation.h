@@ -148,6 +148,10 @@ public:
     const MapVertex& b,
     const MapVertex& c) const;
 
+  /// Whether a triangle is positively oriented (exact predicate) with
+  /// det > minDet on every sphere: what a new triangle must be.
+  bool validTriangle(const MapVertex& a, const MapVertex& b, const MapVertex& c) const;
+
   /// Energy of a local configuration: triangles over `vertices` with target
   /// lengths, plus the samples of each input (which must lie in the union of
   /// the triangles on that input's sphere). With `validate`, a triangle that

@@ -75,8 +75,13 @@ void addFace(const CommonTriangulation& T, LocalEdit& edit, FaceHandle f)
 }
 
 /// Energy before minus energy after; fills the edit's after lengths and
-/// sample assignment.
-double evaluate(const CommonTriangulation& T, LocalEdit& edit)
+/// sample assignment. With a finite minGain, an edit that cannot gain more
+/// than it (its new triangles alone already cost as much as the old
+/// configuration, and sample energies are >= 0) is answered with NoGain
+/// before its samples are located: cheaper, same edits applied.
+double evaluate(const CommonTriangulation& T,
+  LocalEdit& edit,
+  double minGain = -std::numeric_limits<double>::infinity())
 {
   const double before = edit.beforeCached
     ? edit.cachedBefore
@@ -90,6 +95,13 @@ double evaluate(const CommonTriangulation& T, LocalEdit& edit)
   {
     afterVertices[edit.movedIndex] = edit.moved;
   }
+  for (const auto& tri : edit.after)
+  {
+    if (!T.validTriangle(afterVertices[tri[0]], afterVertices[tri[1]], afterVertices[tri[2]]))
+    {
+      return NoGain;
+    }
+  }
   edit.afterLengths.assign(edit.after.size(), 1.0);
   if (T.weights.mesh > 0.0)
   {
@@ -100,11 +112,25 @@ double evaluate(const CommonTriangulation& T, LocalEdit& edit)
         T.targetLength(afterVertices[tri[0]], afterVertices[tri[1]], afterVertices[tri[2]]);
     }
   }
+  if (std::isfinite(minGain) && std::isfinite(before))
+  {
+    double triangles = 0.0;
+    for (std::size_t t = 0; t < edit.after.size(); ++t)
+    {
+      const auto& tri = edit.after[t];
+      triangles += T.triangleEnergy(
+        afterVertices[tri[0]], afterVertices[tri[1]], afterVertices[tri[2]], edit.afterLengths[t]);
+    }
+    if (!(before - triangles > minGain))
+    {
+      return NoGain;
+    }
+  }
   const double after = T.localEnergy(afterVertices,
     edit.after,
     edit.afterLengths,
     edit.samples,
-    true,
+    false, // validated above
     &edit.assignment,
     &edit.afterEnergies);
   if (!std::isfinite(before) || !std::isfinite(after))
@@ -288,14 +314,17 @@ void writeFaces(CommonTriangulation& T, const LocalEdit& edit, const std::vector
 }
 
 template<typename Build, typename Handle>
-double gainOf(const CommonTriangulation& T, Handle handle, Build build)
+double gainOf(const CommonTriangulation& T,
+  Handle handle,
+  Build build,
+  double minGain = -std::numeric_limits<double>::infinity())
 {
   LocalEdit edit;
   if (!build(T, handle, edit))
   {
     return NoGain;
   }
-  return evaluate(T, edit);
+  return evaluate(T, edit, minGain);
 }
 
 /// Builds and evaluates an edit; true (and the gain in `applied`) when it
@@ -312,7 +341,7 @@ bool worthApplying(const CommonTriangulation& T,
   {
     return false;
   }
-  const double gain = evaluate(T, edit);
+  const double gain = evaluate(T, edit, minGain);
   if (!(gain > minGain))
   {
     return false;
@@ -463,7 +492,7 @@ RemeshingResult remesh(CommonTriangulation& T, const RemeshingOptions& options)
     result.splits = pass(
       allEdges(),
       options.minGain,
-      [&](OpenMesh::EdgeHandle e) { return splitGain(T, e); },
+      [&](OpenMesh::EdgeHandle e) { return gainOf(T, e, buildSplit, options.minGain); },
       [&](OpenMesh::EdgeHandle e, double* g) { return applySplit(T, e, options.minGain, g); },
       result.gain);
   }
@@ -478,7 +507,7 @@ RemeshingResult remesh(CommonTriangulation& T, const RemeshingOptions& options)
     result.collapses = pass(
       halfedges,
       options.minGain,
-      [&](OpenMesh::HalfedgeHandle h) { return collapseGain(T, h); },
+      [&](OpenMesh::HalfedgeHandle h) { return gainOf(T, h, buildCollapse, options.minGain); },
       [&](OpenMesh::HalfedgeHandle h, double* g)
       { return applyCollapse(T, h, options.minGain, g); },
       result.gain);
@@ -489,7 +518,7 @@ RemeshingResult remesh(CommonTriangulation& T, const RemeshingOptions& options)
     result.flips = pass(
       allEdges(),
       options.minGain,
-      [&](OpenMesh::EdgeHandle e) { return flipGain(T, e); },
+      [&](OpenMesh::EdgeHandle e) { return gainOf(T, e, buildFlip, options.minGain); },
       [&](OpenMesh::EdgeHandle e, double* g) { return applyFlip(T, e, options.minGain, g); },
       result.gain);
   }
