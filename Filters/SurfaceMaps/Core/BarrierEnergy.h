@@ -13,6 +13,22 @@
 namespace surfacemaps
 {
 
+/// -log vol with vol = det[a, b, c] / 6 (the volume of the tetrahedron with the
+/// origin); +inf when vol <= 0.
+template<typename T>
+T orientationBarrier(const Eigen::Matrix<T, 3, 1>& a,
+  const Eigen::Matrix<T, 3, 1>& b,
+  const Eigen::Matrix<T, 3, 1>& c)
+{
+  const T volume = a.dot(b.cross(c)) / 6.0;
+  if (!(volume > 0.0))
+  {
+    return T(std::numeric_limits<double>::infinity());
+  }
+  using std::log;
+  return -log(volume);
+}
+
 /// -log vol(t) per triangle t = (a, b, c) of an embedding, vol(t) = det[a, b, c] / 6
 /// (the volume of the tetrahedron with the origin); +inf when vol(t) <= 0. Keeps
 /// every triangle positively oriented during optimisation. `offset` is added to
@@ -31,12 +47,7 @@ struct BarrierEnergy
   template<typename T>
   T operator()(int, const std::array<Eigen::Matrix<T, 3, 1>, 3>& p) const
   {
-    const T volume = p[0].dot(p[1].cross(p[2])) / 6.0;
-    if (!(volume > 0.0))
-    {
-      return T(std::numeric_limits<double>::infinity());
-    }
-    return -log(volume);
+    return orientationBarrier<T>(p[0], p[1], p[2]);
   }
 };
 

@@ -164,16 +164,7 @@ void CommonTriangulation::setTrackSamples(bool track)
 void CommonTriangulation::assignSamplesFromScratch()
 {
   this->Mesh.garbage_collection();
-  std::vector<std::array<int, 3>> triangles;
-  triangles.reserve(this->Mesh.n_faces());
-  for (auto f : this->Mesh.faces())
-  {
-    auto it = this->Mesh.cfv_iter(f);
-    const int a = it->idx();
-    const int b = (++it)->idx();
-    const int c = (++it)->idx();
-    triangles.push_back({ a, b, c });
-  }
+  const std::vector<std::array<int, 3>> triangles = faceTriangles(this->Mesh);
   for (int i = 0; i < this->numberOfInputs(); ++i)
   {
     std::vector<Eigen::Vector3d> positions(this->Mesh.n_vertices());
@@ -246,12 +237,12 @@ double CommonTriangulation::triangleEnergy(const MapVertex& a,
   {
     if (w.barrier > 0.0)
     {
-      const double volume = a.g[i].dot(b.g[i].cross(c.g[i])) / 6.0;
-      if (!(volume > 0.0))
+      const double barrier = orientationBarrier<double>(a.g[i], b.g[i], c.g[i]);
+      if (!std::isfinite(barrier))
       {
         return Infinity;
       }
-      energy -= w.barrier * std::log(volume);
+      energy += w.barrier * barrier;
     }
     if (w.mesh > 0.0)
     {
@@ -414,16 +405,10 @@ void CommonTriangulation::snapshot(Snapshot& s, SpherePoints& points, bool lockL
   this->Mesh.garbage_collection();
   const int nv = static_cast<int>(this->Mesh.n_vertices());
   s.vertices = nv;
-  s.triangles.clear();
-  s.triangles.reserve(this->Mesh.n_faces());
+  s.triangles = faceTriangles(this->Mesh);
   s.lengths.clear();
   for (auto f : this->Mesh.faces())
   {
-    auto it = this->Mesh.cfv_iter(f);
-    const int a = it->idx();
-    const int b = (++it)->idx();
-    const int c = (++it)->idx();
-    s.triangles.push_back({ a, b, c });
     s.lengths.push_back(this->Mesh.property(this->Length, f));
   }
   s.neighbours = triangleNeighbours(s.triangles);
@@ -574,19 +559,18 @@ void CommonTriangulation::buildObjective(const Snapshot& s,
   {
     if (w.barrier > 0.0)
     {
+      BarrierEnergy barrier;
+      barrier.triangles = s.triangles;
+      barrier.offset = i * nv;
       if (w.exactBarrierHessian)
       {
-        BarrierEnergy barrier;
-        barrier.triangles = s.triangles;
-        barrier.offset = i * nv;
         objective.addTerm(
           std::make_shared<ElementTerm<3, BarrierEnergy>>("barrier", std::move(barrier)),
           w.barrier);
       }
       else
       {
-        objective.addTerm(
-          std::make_shared<BijectivityBarrierTerm>(&s.triangles, i * nv), w.barrier);
+        objective.addTerm(std::make_shared<BijectivityBarrierTerm>(std::move(barrier)), w.barrier);
       }
     }
     if (w.mesh > 0.0)

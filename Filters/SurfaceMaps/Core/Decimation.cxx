@@ -210,12 +210,7 @@ DecimationResult decimateToTetrahedron(const PolygonMesh& input, const Decimatio
       throw std::runtime_error(
         "decimation stalled at " + std::to_string(alive) + " vertices (is the mesh genus 0?)");
     }
-    for (const auto f : mesh.faces())
-    {
-      auto fv = mesh.cfv_iter(f);
-      const int a = fv->idx(), b = (++fv)->idx(), c = (++fv)->idx();
-      current.triangles.push_back({ a, b, c });
-    }
+    current.triangles = faceTriangles(mesh);
     result.levels.push_back(std::move(current));
   }
   return result;

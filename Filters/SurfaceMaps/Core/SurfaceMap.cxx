@@ -1,6 +1,7 @@
 #include "SurfaceMap.h"
 
 #include "CommonTriangulation.h"
+#include "MeshValidation.h"
 #include "NewtonSolver.h"
 #include "Predicates.h"
 #include "Remeshing.h"
@@ -176,37 +177,35 @@ void buildLifts(MapSurface& s)
 /// Landmark id -> vertex of each input; every id must be on every input.
 std::vector<std::map<int, int>> landmarkVertices(const std::vector<MapInput>& inputs)
 {
+  // The same checks as input validation (MeshValidation.h): ids on one
+  // vertex each, and the same ids on every input.
+  std::vector<std::vector<int>> landmarkIds;
+  std::vector<std::string> names;
+  for (std::size_t i = 0; i < inputs.size(); ++i)
+  {
+    names.push_back(inputName(static_cast<int>(i)));
+    const std::vector<std::string> defects = checkLandmarkIds(inputs[i].landmarks);
+    if (!defects.empty())
+    {
+      throw std::invalid_argument(names.back() + " " + defects.front());
+    }
+    landmarkIds.push_back(inputs[i].landmarks);
+  }
+  for (const std::vector<std::string>& defects : checkLandmarkCorrespondence(landmarkIds, names))
+  {
+    if (!defects.empty())
+    {
+      throw std::invalid_argument(defects.front());
+    }
+  }
   std::vector<std::map<int, int>> ids(inputs.size());
   for (std::size_t i = 0; i < inputs.size(); ++i)
   {
-    const auto& l = inputs[i].landmarks;
-    for (std::size_t v = 0; v < l.size(); ++v)
+    for (std::size_t v = 0; v < inputs[i].landmarks.size(); ++v)
     {
-      if (l[v] < 0)
+      if (inputs[i].landmarks[v] >= 0)
       {
-        continue;
-      }
-      if (!ids[i].emplace(l[v], static_cast<int>(v)).second)
-      {
-        throw std::invalid_argument(inputName(static_cast<int>(i)) + ": landmark " +
-          std::to_string(l[v]) + " is on two vertices (" + std::to_string(ids[i][l[v]]) + " and " +
-          std::to_string(v) + ")");
-      }
-    }
-  }
-  for (std::size_t i = 1; i < inputs.size(); ++i)
-  {
-    for (std::size_t j : { std::size_t(0), i })
-    {
-      const std::size_t other = j == 0 ? i : 0;
-      for (const auto& [id, v] : ids[j])
-      {
-        if (!ids[other].count(id))
-        {
-          throw std::invalid_argument("landmark " + std::to_string(id) + " is on " +
-            inputName(static_cast<int>(j)) + " (vertex " + std::to_string(v) + ") but not on " +
-            inputName(static_cast<int>(other)));
-        }
+        ids[i].emplace(inputs[i].landmarks[v], static_cast<int>(v));
       }
     }
   }
@@ -611,14 +610,7 @@ SurfaceMapResult computeSurfaceMap(const std::vector<MapInput>& inputs,
   SurfaceMesh& mesh = T.mesh();
   mesh.garbage_collection();
   const int nv = static_cast<int>(mesh.n_vertices());
-  for (auto f : mesh.faces())
-  {
-    auto it = mesh.cfv_iter(f);
-    const int a = it->idx();
-    const int b = (++it)->idx();
-    const int c = (++it)->idx();
-    result.triangles.push_back({ a, b, c });
-  }
+  result.triangles = faceTriangles(mesh);
   result.spherePositions.assign(n, std::vector<Eigen::Vector3d>(nv));
   result.lifted.assign(n, std::vector<Eigen::Vector3d>(nv));
   result.sourcePoints.assign(n, std::vector<SurfacePoint>(nv));

@@ -41,15 +41,26 @@ PolygonMesh toPolygonMesh(const SurfaceMesh& mesh)
     polygons.points.emplace_back(p[0], p[1], p[2]);
   }
   polygons.faceVertices.reserve(3 * mesh.n_faces());
+  for (const auto& t : faceTriangles(mesh))
+  {
+    polygons.addFace({ t[0], t[1], t[2] });
+  }
+  return polygons;
+}
+
+std::vector<std::array<int, 3>> faceTriangles(const SurfaceMesh& mesh)
+{
+  std::vector<std::array<int, 3>> triangles;
+  triangles.reserve(mesh.n_faces());
   for (const auto fh : mesh.faces())
   {
     auto fv = mesh.cfv_iter(fh);
     const int a = fv->idx();
     const int b = (++fv)->idx();
     const int c = (++fv)->idx();
-    polygons.addFace({ a, b, c });
+    triangles.push_back({ a, b, c });
   }
-  return polygons;
+  return triangles;
 }
 
 } // namespace surfacemaps

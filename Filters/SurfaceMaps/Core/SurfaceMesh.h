@@ -28,6 +28,10 @@ using SurfaceMesh = OpenMesh::TriMesh_ArrayKernelT<SurfaceMeshTraits>;
 /// validated, or is not a manifold triangle mesh).
 SurfaceMesh toSurfaceMesh(const PolygonMesh& mesh);
 
+/// The faces of a half-edge mesh as vertex-index triples, in face order
+/// (deleted faces skipped; after garbage collection entry f is face f).
+std::vector<std::array<int, 3>> faceTriangles(const SurfaceMesh& mesh);
+
 /// Points and triangles of a half-edge mesh (no texture coordinates).
 PolygonMesh toPolygonMesh(const SurfaceMesh& mesh);
 

@@ -55,15 +55,7 @@ protected:
     EXPECT_EQ(static_cast<long long>(mesh.n_vertices()) - static_cast<long long>(mesh.n_edges()) +
         static_cast<long long>(mesh.n_faces()),
       2);
-    std::vector<std::array<int, 3>> triangles;
-    for (auto f : mesh.faces())
-    {
-      auto it = mesh.cfv_iter(f);
-      const int a = it->idx();
-      const int b = (++it)->idx();
-      const int c = (++it)->idx();
-      triangles.push_back({ a, b, c });
-    }
+    const std::vector<std::array<int, 3>> triangles = faceTriangles(mesh);
     int landmarks = 0;
     for (auto v : mesh.vertices())
     {
