@@ -207,7 +207,8 @@ double CommonTriangulation::targetLength(const MapVertex& a,
   return length;
 }
 
-void CommonTriangulation::updateTargetLengths()
+template<typename Function>
+void CommonTriangulation::forEachFace(Function function)
 {
   std::vector<OpenMesh::FaceHandle> faces;
   faces.reserve(this->Mesh.n_faces());
@@ -222,8 +223,15 @@ void CommonTriangulation::updateTargetLengths()
     const MapVertex a = this->vertex(*it);
     const MapVertex b = this->vertex(*++it);
     const MapVertex c = this->vertex(*++it);
-    this->Mesh.property(this->Length, faces[k]) = this->targetLength(a, b, c);
+    function(faces[k], a, b, c);
   }
+}
+
+void CommonTriangulation::updateTargetLengths()
+{
+  this->forEachFace(
+    [this](OpenMesh::FaceHandle f, const MapVertex& a, const MapVertex& b, const MapVertex& c)
+    { this->Mesh.property(this->Length, f) = this->targetLength(a, b, c); });
 }
 
 double CommonTriangulation::triangleEnergy(const MapVertex& a,
@@ -368,34 +376,23 @@ double CommonTriangulation::localEnergy(const std::vector<MapVertex>& vertices,
 
 void CommonTriangulation::updateFaceEnergies()
 {
-  std::vector<OpenMesh::FaceHandle> faces;
-  faces.reserve(this->Mesh.n_faces());
-  for (auto f : this->Mesh.faces())
-  {
-    faces.push_back(f);
-  }
   const int n = this->numberOfInputs();
-#pragma omp parallel for schedule(dynamic, 256)
-  for (long long k = 0; k < static_cast<long long>(faces.size()); ++k)
-  {
-    const OpenMesh::FaceHandle f = faces[k];
-    auto it = this->Mesh.cfv_iter(f);
-    const MapVertex a = this->vertex(*it);
-    const MapVertex b = this->vertex(*++it);
-    const MapVertex c = this->vertex(*++it);
-    double energy = this->triangleEnergy(a, b, c, this->targetLength(f));
-    if (this->TrackSamples && this->weights.approximation > 0.0)
+  this->forEachFace(
+    [this, n](OpenMesh::FaceHandle f, const MapVertex& a, const MapVertex& b, const MapVertex& c)
     {
-      for (int i = 0; i < n; ++i)
+      double energy = this->triangleEnergy(a, b, c, this->targetLength(f));
+      if (this->TrackSamples && this->weights.approximation > 0.0)
       {
-        for (int s : this->faceSamples(f, i))
+        for (int i = 0; i < n; ++i)
         {
-          energy += this->sampleEnergy(i, s, a, b, c);
+          for (int s : this->faceSamples(f, i))
+          {
+            energy += this->sampleEnergy(i, s, a, b, c);
+          }
         }
       }
-    }
-    this->Mesh.property(this->Energy, f) = energy;
-  }
+      this->Mesh.property(this->Energy, f) = energy;
+    });
   this->FaceEnergiesValid = true;
 }
 

@@ -217,6 +217,10 @@ public:
 
 private:
   void assignSamplesFromScratch();
+  /// Calls function(face, a, b, c) for every face with its corners' data,
+  /// in parallel: function may write that face's properties only.
+  template<typename Function>
+  void forEachFace(Function function);
 
   std::vector<MapSurface>& Surfaces;
   std::vector<std::array<int, 2>> Pairs;
