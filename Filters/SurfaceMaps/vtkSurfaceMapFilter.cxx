@@ -110,7 +110,8 @@ std::vector<double> mapSettings(vtkSurfaceMapFilter* f)
     f->GetRelaxLandmarkPhase() ? 1.0 : 0.0,
     f->GetKeepLandmarks() ? 1.0 : 0.0,
     static_cast<double>(f->GetPairMode()),
-    f->GetApproximationBound(),
+    f->GetMaxError(),
+    static_cast<double>(f->GetBoundIterations()),
     static_cast<double>(f->GetApproximationSamples()),
     static_cast<double>(f->GetSizingMode()),
     f->GetMinEdgeLength(),
@@ -143,7 +144,8 @@ surfacemaps::SurfaceMapOptions mapOptions(vtkSurfaceMapFilter* f)
   options.meshWeight = f->GetMeshWeight();
   options.mapWeight = f->GetMapWeight();
   options.approximationWeight = f->GetApproximationWeight();
-  options.approximationBound = f->GetApproximationBound();
+  options.maxError = f->GetMaxError();
+  options.boundIterations = f->GetBoundIterations();
   options.approximationSamples = f->GetApproximationSamples();
   options.minEdgeLength = f->GetMinEdgeLength();
   options.maxEdgeLength = f->GetMaxEdgeLength();
@@ -464,6 +466,8 @@ void setMapFieldData(vtkFieldData* fields,
   addField<vtkDoubleArray>(fields, "ApproximationEnergy", map.approximationEnergy);
   addField<vtkDoubleArray>(fields, "MapEnergy", map.mapEnergy);
   addField<vtkDoubleArray>(fields, "LandmarkError", map.landmarkError);
+  addField<vtkDoubleArray>(fields, "BaseDistance", map.baseDistance[index]);
+  addField<vtkDoubleArray>(fields, "ErrorBound", map.errorBound[index]);
   addField<vtkDoubleArray>(fields, "MapSeconds", map.seconds);
   addField<vtkDoubleArray>(fields, "EmbeddingSeconds", embeddingSeconds);
 
@@ -833,7 +837,8 @@ void vtkSurfaceMapFilter::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "RelaxLandmarkPhase: " << (this->RelaxLandmarkPhase ? "on" : "off") << "\n";
   os << indent << "KeepLandmarks: " << this->KeepLandmarks << "\n";
   os << indent << "PairMode: " << this->PairMode << "\n";
-  os << indent << "ApproximationBound: " << this->ApproximationBound << "\n";
+  os << indent << "MaxError: " << this->MaxError << "\n";
+  os << indent << "BoundIterations: " << this->BoundIterations << "\n";
   os << indent << "ApproximationSamples: " << this->ApproximationSamples << "\n";
   os << indent << "SizingMode: " << this->SizingMode << "\n";
   os << indent << "MinEdgeLength: " << this->MinEdgeLength << "\n";

@@ -266,13 +266,28 @@ public:
 
   ///@{
   /**
-   * Hard bound on the approximation error in the fine phase, unit-area units:
-   * the approximation term becomes a barrier that no input vertex may cross
-   * at this distance from its base point on T. Default 0 (off: soft term),
-   * range [0, 1]; when used it must exceed the error the coarse phase leaves.
+   * Error-bounded remeshing: the largest distance allowed between an input
+   * vertex and its base point on T (the point of T that the map assigns to
+   * it), as a fraction of that input's bounding-box diagonal. Default 0
+   * (off), range [0, 1]. After the fine phase the sizing is refined around
+   * the vertices that are too far (rounds of 10 iterations, at most 8), then
+   * BoundIterations iterations run with the bound as a barrier instead of the
+   * soft approximation term. The bound is certified on every input vertex
+   * (every vertex is an approximation sample then); a bound that cannot be
+   * met is an error ("no certified map"). Field data: "BaseDistance" and
+   * "ErrorBound" per input, in the input's units.
    */
-  vtkSetClampMacro(ApproximationBound, double, 0.0, 1.0);
-  vtkGetMacro(ApproximationBound, double);
+  vtkSetClampMacro(MaxError, double, 0.0, 1.0);
+  vtkGetMacro(MaxError, double);
+  ///@}
+
+  ///@{
+  /**
+   * Iterations with the hard bound when MaxError is set. Default 20,
+   * range [0, 100000].
+   */
+  vtkSetClampMacro(BoundIterations, int, 0, 100000);
+  vtkGetMacro(BoundIterations, int);
   ///@}
 
   ///@{
@@ -366,7 +381,8 @@ protected:
   bool RelaxLandmarkPhase = true;
   bool KeepLandmarks = true;
   int PairMode = PAIRS_STAR;
-  double ApproximationBound = 0.0;
+  double MaxError = 0.0;
+  int BoundIterations = 20;
   int ApproximationSamples = 50000;
   int SizingMode = SIZING_ARRAY_OR_CURVATURE;
   double MinEdgeLength = 1e-3;

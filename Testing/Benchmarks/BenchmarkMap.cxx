@@ -88,6 +88,10 @@ int main(int argc, char* argv[])
     {
       options.fine.barrierWeight = std::atof(value());
     }
+    else if (arg == "--max-error")
+    {
+      options.maxError = std::atof(value());
+    }
     else if (arg == "--max-point-step")
     {
       options.maxPointStep = std::atof(value());
@@ -192,6 +196,13 @@ int main(int argc, char* argv[])
     certified = certified && c.bijective;
   }
   std::printf("certified: %s; landmark error %.3g\n", certified ? "yes" : "NO", r.landmarkError);
+  for (std::size_t i = 0; i < r.baseDistance.size(); ++i)
+  {
+    std::printf("input %zu: largest base-point distance %.4g (bound %.4g)\n",
+      i,
+      r.baseDistance[i],
+      r.errorBound[i]);
+  }
   std::printf("| map | SD | a1.5 | a2 | max | min angle T_0 / T_j | mean min angle |\n"
               "|---|---|---|---|---|---|---|\n");
   for (std::size_t j = 1; j < meshes.size(); ++j)

@@ -78,6 +78,8 @@ T approximationEnergy(const T& distance2, double weight, double bound)
 /// weight (vertex area, normalised so the weights sum to 1).
 struct ApproximationSamples
 {
+  /// The input vertex each sample is.
+  std::vector<int> vertices;
   std::vector<Eigen::Vector3d> spherePoints;
   std::vector<Eigen::Vector3d> positions;
   std::vector<double> weights;

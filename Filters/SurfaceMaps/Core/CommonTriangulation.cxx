@@ -282,7 +282,33 @@ double CommonTriangulation::sampleEnergy(int i,
     { a.g[i], b.g[i], c.g[i] },
     { a.lifted[i], b.lifted[i], c.lifted[i] });
   return approximationEnergy<double>(
-    d2, this->weights.approximation * samples.weights[s], this->weights.bound);
+    d2, this->weights.approximation * samples.weights[s], this->weights.bound(i));
+}
+
+std::vector<double> CommonTriangulation::baseDistances(int i) const
+{
+  const ApproximationSamples& samples = this->Surfaces[i].samples;
+  std::vector<double> distances(samples.positions.size(), Infinity);
+  for (auto f : this->Mesh.faces())
+  {
+    const std::vector<int>& inside = this->faceSamples(f, i);
+    if (inside.empty())
+    {
+      continue;
+    }
+    auto fv = this->Mesh.cfv_iter(f);
+    const MapVertex a = this->vertex(*fv);
+    const MapVertex b = this->vertex(*++fv);
+    const MapVertex c = this->vertex(*++fv);
+    for (int s : inside)
+    {
+      distances[s] = std::sqrt(squaredBaseDistance<double>(samples.spherePoints[s],
+        samples.positions[s],
+        { a.g[i], b.g[i], c.g[i] },
+        { a.lifted[i], b.lifted[i], c.lifted[i] }));
+    }
+  }
+  return distances;
 }
 
 bool CommonTriangulation::validTriangle(const MapVertex& a,
@@ -583,7 +609,7 @@ void CommonTriangulation::buildObjective(const Snapshot& s,
       approximation.triangles = &s.triangles;
       approximation.lifts = &s.lifts;
       approximation.offset = i * nv;
-      approximation.bound = w.bound;
+      approximation.bound = w.bound(i);
       objective.addTerm(
         std::make_shared<ElementTerm<3, ApproximationEnergy>>("approximation", approximation),
         w.approximation);

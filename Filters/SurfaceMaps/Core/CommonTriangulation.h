@@ -50,8 +50,11 @@ struct MapEnergyWeights
   double approximation = 0.0; // includes 1 / eps^2 for the soft term
   double landmark = 0.0;
   double map = 0.0;
-  /// Hard approximation bound (unit-area units), 0: soft term.
-  double bound = 0.0;
+  /// Hard approximation bound per input (unit-area units of that input);
+  /// empty: the soft term. With a bound, `approximation` is the barrier's
+  /// weight (no 1 / eps^2).
+  std::vector<double> bounds;
+  double bound(int i) const { return this->bounds.empty() ? 0.0 : this->bounds[i]; }
   /// Project the barrier's exact Hessian (eigenvalue clamp) instead of using
   /// its cheap Gauss-Newton form; worth it where the barrier dominates (the
   /// landmark phase), not where its weight is tiny.
@@ -147,6 +150,10 @@ public:
     const MapVertex& a,
     const MapVertex& b,
     const MapVertex& c) const;
+
+  /// Distance of every approximation sample of input i from its base point
+  /// on T (unit-area units), in the faces the samples are assigned to.
+  std::vector<double> baseDistances(int i) const;
 
   /// Whether a triangle is positively oriented (exact predicate) with
   /// det > minDet on every sphere: what a new triangle must be.

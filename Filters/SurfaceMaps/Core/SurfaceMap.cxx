@@ -8,8 +8,10 @@
 #include "Sizing.h"
 #include "SphereEmbedding.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <limits>
 #include <map>
 #include <sstream>
 #include <stdexcept>
@@ -147,6 +149,7 @@ void buildSamples(MapSurface& s, int samples)
   double weightSum = 0.0;
   for (std::size_t v = 0; v < nv; v += stride)
   {
+    s.samples.vertices.push_back(static_cast<int>(v));
     s.samples.positions.push_back(s.points[v]);
     s.samples.spherePoints.push_back(s.sphere[v]);
     s.samples.weights.push_back(vertexArea[v]);
@@ -266,6 +269,93 @@ void setSizing(std::vector<MapSurface>& surfaces,
     sizing.minEdgeLength = options.minEdgeLength;
     sizing.maxEdgeLength = options.maxEdgeLength;
     surfaces[i].sizing = curvatureSizing(surfaces[i].points, surfaces[i].triangles, sizing);
+  }
+}
+
+double boundingBoxDiagonal(const std::vector<Eigen::Vector3d>& points)
+{
+  Eigen::Vector3d lo = Eigen::Vector3d::Constant(std::numeric_limits<double>::infinity());
+  Eigen::Vector3d hi = -lo;
+  for (const Eigen::Vector3d& p : points)
+  {
+    lo = lo.cwiseMin(p);
+    hi = hi.cwiseMax(p);
+  }
+  return (hi - lo).norm();
+}
+
+/// Input vertices whose base point is farther than margin * bound.
+struct BoundViolations
+{
+  int count = 0;
+  /// Per input: the violating samples and their distance / bound.
+  std::vector<std::vector<std::pair<int, double>>> samples;
+  /// The largest distance / bound, and where.
+  double worst = 0.0;
+  int worstInput = -1, worstVertex = -1;
+};
+
+BoundViolations boundViolations(const CommonTriangulation& T,
+  const std::vector<double>& bounds,
+  double margin)
+{
+  BoundViolations v;
+  v.samples.resize(bounds.size());
+  for (int i = 0; i < T.numberOfInputs(); ++i)
+  {
+    const std::vector<double> distances = T.baseDistances(i);
+    const std::vector<int>& vertexOf = T.surface(i).samples.vertices;
+    for (std::size_t s = 0; s < distances.size(); ++s)
+    {
+      const double ratio = distances[s] / bounds[i];
+      if (ratio > margin)
+      {
+        v.samples[i].emplace_back(static_cast<int>(s), ratio);
+        ++v.count;
+      }
+      if (ratio > v.worst)
+      {
+        v.worst = ratio;
+        v.worstInput = i;
+        v.worstVertex = vertexOf[s];
+      }
+    }
+  }
+  return v;
+}
+
+/// Where input vertices are too far from their base points: shrinks the
+/// sizing around them (the vertex and its one-ring; distance grows like the
+/// edge length squared, so by sqrt(margin / ratio), at least by 0.7 and at
+/// most by 0.25) so that the mesh-quality term asks for smaller triangles
+/// there, and weights those samples 4 times more in the soft term.
+void refineAround(std::vector<MapSurface>& surfaces,
+  const BoundViolations& violations,
+  double margin)
+{
+  for (std::size_t i = 0; i < surfaces.size(); ++i)
+  {
+    MapSurface& s = surfaces[i];
+    std::vector<double> factor(s.points.size(), 1.0);
+    for (const auto& [sample, ratio] : violations.samples[i])
+    {
+      s.samples.weights[sample] *= 4.0;
+      const int v = s.samples.vertices[sample];
+      factor[v] = std::min(factor[v], std::clamp(std::sqrt(margin / ratio), 0.25, 0.7));
+    }
+    std::vector<double> ring(factor);
+    for (const auto& t : s.triangles)
+    {
+      const double f = std::min({ factor[t[0]], factor[t[1]], factor[t[2]] });
+      for (int k = 0; k < 3; ++k)
+      {
+        ring[t[k]] = std::min(ring[t[k]], f);
+      }
+    }
+    for (std::size_t v = 0; v < ring.size(); ++v)
+    {
+      s.sizing[v] *= ring[v];
+    }
   }
 }
 
@@ -504,7 +594,9 @@ std::vector<MapSurface> prepareMapSurfaces(const std::vector<MapInput>& inputs,
   alignEmbeddings(surfaces, landmarkVertices(inputs), options.log);
   for (MapSurface& s : surfaces)
   {
-    buildSamples(s, options.approximationSamples);
+    // An error bound holds for every input vertex: no subsample then.
+    buildSamples(
+      s, options.maxError > 0.0 ? std::numeric_limits<int>::max() : options.approximationSamples);
     buildLifts(s);
   }
   return surfaces;
@@ -545,7 +637,8 @@ SurfaceMapResult computeSurfaceMap(const std::vector<MapInput>& inputs,
   CommonTriangulation T(surfaces, pairs);
   const int total = (hasLandmarks ? options.landmarkIterations : 0) +
     (options.coarse.enabled ? options.coarse.maxIterations : 0) +
-    (options.fine.enabled ? options.fine.maxIterations : 0);
+    (options.fine.enabled ? options.fine.maxIterations : 0) +
+    (options.maxError > 0.0 ? options.boundIterations : 0);
   Schedule schedule(T, options, targets, total);
   SurfaceMapResult result;
 
@@ -579,32 +672,103 @@ SurfaceMapResult computeSurfaceMap(const std::vector<MapInput>& inputs,
   T.setTrackSamples(true);
 
   const double pairCount = std::max<std::size_t>(1, pairs.size());
-  auto runPhase = [&](const char* name, const MapPhaseOptions& phase, bool bound)
+  const bool lockLandmarks = hasLandmarks && options.keepLandmarks;
+  // The weights of a phase; with `bounds` the approximation term is the
+  // hard-bound barrier.
+  auto setWeights = [&](const MapPhaseOptions& phase, const std::vector<double>& bounds)
+  {
+    T.weights = MapEnergyWeights();
+    T.weights.barrier = phase.barrierWeight / n;
+    T.weights.mesh = options.meshWeight / n;
+    T.weights.map = pairs.empty() ? 0.0 : options.mapWeight / pairCount;
+    T.weights.bounds = bounds;
+    T.weights.approximation = options.approximationWeight / n /
+      (bounds.empty() ? phase.targetError * phase.targetError : 1.0);
+  };
+  auto runPhase = [&](const char* name, const MapPhaseOptions& phase)
   {
     if (!phase.enabled || phase.maxIterations <= 0)
     {
       return;
     }
     setSizing(surfaces, inputs, phase.targetError, options);
-    T.weights = MapEnergyWeights();
-    T.weights.barrier = phase.barrierWeight / n;
-    T.weights.mesh = options.meshWeight / n;
-    T.weights.map = pairs.empty() ? 0.0 : options.mapWeight / pairCount;
-    if (bound && options.approximationBound > 0.0)
-    {
-      T.weights.bound = options.approximationBound;
-      T.weights.approximation = options.approximationWeight / n;
-    }
-    else
-    {
-      T.weights.approximation =
-        options.approximationWeight / n / (phase.targetError * phase.targetError);
-    }
-    result.phases.push_back(
-      schedule.run(name, phase.maxIterations, hasLandmarks && options.keepLandmarks, false));
+    setWeights(phase, {});
+    result.phases.push_back(schedule.run(name, phase.maxIterations, lockLandmarks, false));
   };
-  runPhase("coarse", options.coarse, false);
-  runPhase("fine", options.fine, true);
+  runPhase("coarse", options.coarse);
+  runPhase("fine", options.fine);
+
+  std::vector<double> bounds;
+  if (options.maxError > 0.0)
+  {
+    for (const MapSurface& s : surfaces)
+    {
+      bounds.push_back(options.maxError * boundingBoxDiagonal(s.points));
+    }
+    if (!options.fine.enabled || options.fine.maxIterations <= 0)
+    {
+      setSizing(surfaces, inputs, options.fine.targetError, options);
+    }
+    std::vector<std::vector<double>> sampleWeights;
+    for (const MapSurface& s : surfaces)
+    {
+      sampleWeights.push_back(s.samples.weights);
+    }
+    // Refine where the bound does not hold yet (with a margin, so that the
+    // barrier starts finite), with the soft term of the fine phase.
+    for (int round = 0;; ++round)
+    {
+      const BoundViolations violations = boundViolations(T, bounds, options.boundMargin);
+      std::ostringstream message;
+      message << "error bound " << options.maxError
+              << " of the bounding-box diagonal: " << violations.count << " input vertices beyond "
+              << options.boundMargin << " of it (largest " << violations.worst
+              << " of the bound, input " << violations.worstInput << " vertex "
+              << violations.worstVertex << ")";
+      options.log(Logger::Info, message.str());
+      if (violations.count == 0)
+      {
+        break;
+      }
+      if (round == options.boundRefinementRounds)
+      {
+        throw std::runtime_error("the error bound " + std::to_string(options.maxError) +
+          " of the bounding-box diagonal could not be met after " + std::to_string(round) +
+          " refinement rounds: input " + std::to_string(violations.worstInput) + " vertex " +
+          std::to_string(violations.worstVertex) + " is at " + std::to_string(violations.worst) +
+          " times the bound");
+      }
+      refineAround(surfaces, violations, options.boundMargin);
+      T.invalidateFaceEnergies();
+      setWeights(options.fine, {});
+      result.phases.push_back(
+        schedule.run("refine", options.boundRefinementIterations, lockLandmarks, false));
+    }
+    for (std::size_t i = 0; i < surfaces.size(); ++i)
+    {
+      surfaces[i].samples.weights = sampleWeights[i]; // the boosts were for the soft term
+    }
+    setWeights(options.fine, bounds);
+    T.invalidateFaceEnergies();
+    result.phases.push_back(schedule.run("bound", options.boundIterations, lockLandmarks, false));
+  }
+  // Base-point distances, and the bound certified on every input vertex.
+  for (int i = 0; i < n; ++i)
+  {
+    const std::vector<double> distances = T.baseDistances(i);
+    double largest = 0.0;
+    for (double d : distances)
+    {
+      largest = std::max(largest, d);
+    }
+    if (!bounds.empty() && !(largest < bounds[i]))
+    {
+      throw std::runtime_error("input " + std::to_string(i) + " is not within the error bound: " +
+        std::to_string(largest / bounds[i]) + " times the bound");
+    }
+    result.baseDistance.push_back(largest / surfaces[i].scale);
+    result.errorBound.push_back(bounds.empty() ? 0.0 : bounds[i] / surfaces[i].scale);
+  }
 
   // Outputs.
   SurfaceMesh& mesh = T.mesh();

@@ -61,7 +61,8 @@ struct MapPhaseOptions
 
 struct SurfaceMapProgress
 {
-  /// "landmarks", "coarse", "fine", "output".
+  /// "landmarks", "coarse", "fine", "refine" and "bound" (maxError),
+  /// "output".
   std::string phase;
   int iteration = 0;
   /// Fraction of the whole schedule's iterations done (0..1).
@@ -97,10 +98,20 @@ struct SurfaceMapOptions
   double meshWeight = 1.0;
   double mapWeight = 1.0;
   double approximationWeight = 1.0;
-  /// Hard approximation bound in unit-area units (0: off): in the fine phase
-  /// the approximation term becomes a barrier that is infinite at this
-  /// distance from an input vertex to its base point.
-  double approximationBound = 0.0;
+  /// Error-bounded remeshing (0: off): the largest distance allowed between
+  /// an input vertex and its base point on T (DESIGN.md 1.3), as a fraction
+  /// of that input's bounding-box diagonal. After the fine phase, rounds of
+  /// boundRefinementIterations iterations with the sizing halved around the
+  /// vertices beyond boundMargin * bound run until none is left (at most
+  /// boundRefinementRounds); then boundIterations iterations with the hard
+  /// bound (a barrier infinite at the bound) instead of the soft term. The
+  /// bound is certified on every input vertex at the end; every vertex is a
+  /// sample then (approximationSamples does not apply).
+  double maxError = 0.0;
+  int boundRefinementRounds = 8;
+  int boundRefinementIterations = 10;
+  double boundMargin = 0.9;
+  int boundIterations = 20;
   /// Input vertices per input the approximation term uses at most (a fixed,
   /// evenly spread subsample of larger inputs).
   int approximationSamples = 50000;
@@ -180,6 +191,11 @@ struct SurfaceMapResult
   double energy = 0.0;
   double barrierEnergy = 0.0, meshEnergy = 0.0, approximationEnergy = 0.0, mapEnergy = 0.0;
   std::vector<MapPhaseReport> phases;
+  /// Per input: the largest distance of an input vertex (of the
+  /// approximation samples: every vertex with maxError) from its base point
+  /// on T, and the bound it had to meet (0 without maxError); original units.
+  std::vector<double> baseDistance;
+  std::vector<double> errorBound;
   /// Largest distance of a kept landmark from its input vertex (original
   /// units of each input, maximum over inputs): 0 when snapped exactly.
   double landmarkError = 0.0;

@@ -95,7 +95,7 @@ TEST(MapEnergies, HardApproximationBoundMatchesFiniteDifferences)
   MapEnergyWeights w;
   w.barrier = 0.01;
   w.approximation = 1.0;
-  w.bound = 0.5;
+  w.bounds = { 0.5, 0.5 };
   EnergyCase c(w);
   c.expectDerivativesMatch();
 }

@@ -1,6 +1,7 @@
 // The surface map schedule on small inputs with short schedules.
 #include "MapMetrics.h"
 #include "MapTestInputs.h"
+#include "SphereLocator.h"
 #include "SurfaceMap.h"
 
 #include <gtest/gtest.h>
@@ -192,4 +193,50 @@ TEST(SurfaceMap, InconsistentInputIsRejected)
   inputs[1].spherePositions.pop_back();
   EXPECT_THROW(computeSurfaceMap(inputs), std::invalid_argument);
   EXPECT_THROW(computeSurfaceMap({}), std::invalid_argument);
+}
+
+TEST(SurfaceMap, ErrorBoundHoldsAtEveryInputVertex)
+{
+  const std::vector<MapInput> inputs = landmarkPair();
+  SurfaceMapOptions options = shortSchedule(3, 4);
+  options.fine.targetError = 1e-2; // leaves vertices beyond the bound: refinement must run
+  options.maxError = 2e-3;
+  options.boundRefinementIterations = 4;
+  options.boundIterations = 4;
+  const SurfaceMapResult r = computeSurfaceMap(inputs, options);
+  expectCertified(r);
+  int refinements = 0;
+  for (const MapPhaseReport& phase : r.phases)
+  {
+    refinements += phase.name == "refine";
+  }
+  EXPECT_GT(refinements, 0);
+  EXPECT_EQ(r.phases.back().name, "bound");
+  for (std::size_t i = 0; i < inputs.size(); ++i)
+  {
+    const PolygonMesh& mesh = inputs[i].mesh;
+    Eigen::Vector3d lo = mesh.points[0], hi = mesh.points[0];
+    for (const Eigen::Vector3d& p : mesh.points)
+    {
+      lo = lo.cwiseMin(p);
+      hi = hi.cwiseMax(p);
+    }
+    const double bound = options.maxError * (hi - lo).norm();
+    EXPECT_NEAR(r.errorBound[i], bound, 1e-12 * bound);
+    // Independently of the engine's bookkeeping: every input vertex's base
+    // point, from the outputs (its sphere point located in T's embedding i,
+    // the same barycentric coordinates on T lifted onto input i).
+    const SphereLocator onT(r.spherePositions[i], r.triangles);
+    double largest = 0.0;
+    for (std::size_t v = 0; v < mesh.points.size(); ++v)
+    {
+      const SphereLocation loc = onT.locate(r.inputSpherePositions[i][v]);
+      const auto& t = r.triangles[loc.triangle];
+      const Eigen::Vector3d base = loc.alpha * r.lifted[i][t[0]] + loc.beta * r.lifted[i][t[1]] +
+        loc.gamma * r.lifted[i][t[2]];
+      largest = std::max(largest, (base - mesh.points[v]).norm());
+    }
+    EXPECT_LT(largest, bound) << "input " << i;
+    EXPECT_NEAR(largest, r.baseDistance[i], 1e-9 * bound) << "input " << i;
+  }
 }

@@ -627,7 +627,8 @@ TEST(SurfaceMapFilter, SettingsDefaultsAndPrintSelf)
   EXPECT_TRUE(filter->GetKeepLandmarks());
   EXPECT_EQ(filter->GetPairMode(), vtkSurfaceMapFilter::PAIRS_STAR);
   EXPECT_EQ(filter->GetOutputMode(), vtkSurfaceMapFilter::COMMON_TRIANGULATION);
-  EXPECT_EQ(filter->GetApproximationBound(), 0.0);
+  EXPECT_EQ(filter->GetMaxError(), 0.0);
+  EXPECT_EQ(filter->GetBoundIterations(), 20);
   filter->SetPairModeToCycle();
   EXPECT_EQ(filter->GetPairMode(), vtkSurfaceMapFilter::PAIRS_CYCLE);
   filter->SetPairMode(17);
