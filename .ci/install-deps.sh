@@ -11,6 +11,7 @@ packages=(
   libgtest-dev
   python3-numpy python3-matplotlib python3-pytest
   xvfb
+  python3-mpi4py openmpi-bin
 )
 
 missing=()

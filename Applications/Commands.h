@@ -39,6 +39,10 @@ extern const char* const EvaluateHelp;
 int runMap(const std::vector<std::string>& args);
 extern const char* const MapHelp;
 
+/// `surfacemap transfer MAPDIR --from I --to J [--arrays NAME ...] -o OUT.vtp`
+int runTransfer(const std::vector<std::string>& args);
+extern const char* const TransferHelp;
+
 /// Prints "surfacemap: error: <message>" on stderr.
 void printError(const std::string& message);
 

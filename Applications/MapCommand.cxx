@@ -46,6 +46,10 @@ const char* const MapHelp =
   "                      with SpherePosition, SourceCellId, SourceBarycentric,\n"
   "                      Landmarks and the input's point arrays\n"
   "  DIR/mapped_<i>.vtp  input 0's mesh mapped onto input i by the exact map\n"
+  "  DIR/embedding_<i>.vtp\n"
+  "                      input i with its sphere embedding in the map's frame\n"
+  "                      (SpherePosition): with common_<i>.vtp, what\n"
+  "                      'surfacemap transfer' reads to carry data between inputs\n"
   "  DIR/report.json     sizes, energies, per-phase iterations and times, the\n"
   "                      certificate, the landmark error and the metrics of the\n"
   "                      approximating map (common_0 -> common_i) and of the\n"
@@ -495,6 +499,21 @@ int runMap(const std::vector<std::string>& args)
            << evaluate("exact map", i, map->GetOutput(0), map->GetOutput(i), nullptr, inputs[i]);
     }
     json << "\n  ]\n}\n";
+
+    // ... and the inputs with their embeddings f_i, for `surfacemap transfer`.
+    map->SetOutputModeToInputEmbeddings();
+    map->Update();
+    if (!errors.messages().empty() || map->GetOutput(0)->GetNumberOfPoints() == 0)
+    {
+      throw std::logic_error("the embedding outputs failed: " +
+        (errors.messages().empty() ? std::string("empty") : errors.messages().front()));
+    }
+    for (int i = 0; i < n; ++i)
+    {
+      const std::string path = outputDir + "/embedding_" + std::to_string(i) + ".vtp";
+      writePolyDataAtomically(map->GetOutput(i), path);
+      written.push_back(path);
+    }
     writeFileAtomically(outputDir + "/report.json", json.str());
   }
   catch (const std::runtime_error& e)
@@ -502,7 +521,8 @@ int runMap(const std::vector<std::string>& args)
     printError(e.what());
     return ExitBadInput;
   }
-  std::printf("  written to %s: common_<i>.vtp, mapped_<i>.vtp (i < %d), report.json\n",
+  std::printf("  written to %s: common_<i>.vtp, mapped_<i>.vtp, embedding_<i>.vtp (i < %d), "
+              "report.json\n",
     outputDir.c_str(),
     n);
   return certified ? ExitOk : ExitNoCertifiedResult;

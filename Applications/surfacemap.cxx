@@ -48,6 +48,10 @@ const Command Commands[] = {
     "bijective map between surfaces through a common triangulation",
     &surfacemap::runMap,
     &surfacemap::MapHelp },
+  { "transfer",
+    "carry point data and texture coordinates from one input of a map to another",
+    &surfacemap::runTransfer,
+    &surfacemap::TransferHelp },
 };
 
 void printUsage(std::ostream& os)

@@ -4,6 +4,7 @@
 
 #include "InputError.h"
 #include "MapMetrics.h"
+#include "MapTransfer.h"
 #include "MeshValidation.h"
 #include "SphereEmbedding.h"
 #include "SphericalTriangulation.h"
@@ -81,6 +82,7 @@ const char* const SizingName = "Sizing";
 const char* const SpherePositionName = "SpherePosition";
 const char* const SourceCellIdName = "SourceCellId";
 const char* const SourceBarycentricName = "SourceBarycentric";
+const char* const TCoordsName = "TCoords";
 
 // "input 1" or "input 1 (a.obj)" when the input carries a file name.
 std::string inputName(vtkPolyData* input, int index)
@@ -90,8 +92,8 @@ std::string inputName(vtkPolyData* input, int index)
   return name == plain ? plain : plain + " (" + name + ")";
 }
 
-// Every setting that changes the map (all but OutputMode), to decide whether
-// the kept map can be reused.
+// Every setting that changes the map (all but OutputMode and MappedInput), to
+// decide whether the kept map can be reused.
 std::vector<double> mapSettings(vtkSurfaceMapFilter* f)
 {
   return { f->GetTargetError(),
@@ -427,6 +429,40 @@ void setSourcePointData(vtkPolyData* output,
   to->AddArray(barycentric);
 }
 
+// Active point texture coordinates "TCoords" from an input's per-corner ones,
+// evaluated in the input triangle each output point lies in (none without).
+void setCornerTCoords(vtkPolyData* output,
+  const std::vector<Eigen::Vector2d>& corners,
+  const std::vector<surfacemaps::SurfacePoint>& points)
+{
+  if (corners.empty())
+  {
+    return;
+  }
+  auto array = vtkSmartPointer<vtkDoubleArray>::New();
+  array->SetName(TCoordsName);
+  array->SetNumberOfComponents(2);
+  array->SetNumberOfTuples(static_cast<vtkIdType>(points.size()));
+  for (std::size_t v = 0; v < points.size(); ++v)
+  {
+    const Eigen::Vector2d t = surfacemaps::evaluateCornerValues(corners, points[v]);
+    array->SetTypedTuple(static_cast<vtkIdType>(v), t.data());
+  }
+  output->GetPointData()->SetTCoords(array);
+}
+
+// Input i itself with its sphere embedding f_i as "SpherePosition".
+void setEmbeddingOutput(vtkPolyData* output,
+  vtkPolyData* input,
+  const std::vector<Eigen::Vector3d>& embedding)
+{
+  output->CopyStructure(input);
+  output->GetPointData()->PassData(input->GetPointData());
+  output->GetCellData()->PassData(input->GetCellData());
+  output->GetPointData()->AddArray(vectorArray(SpherePositionName, embedding));
+  output->GetFieldData()->PassData(input->GetFieldData());
+}
+
 void setLandmarks(vtkPolyData* output, const std::vector<int>& ids)
 {
   const vtkIdType n = output->GetNumberOfPoints();
@@ -639,6 +675,15 @@ int vtkSurfaceMapFilter::RequestData(vtkInformation*,
     return !this->GetAbortExecute();
   };
 
+  // A bad MappedInput is a setting error: the kept map stays.
+  if (this->OutputMode == MAPPED_INPUT && this->MappedInput > 0 && this->MappedInput >= n)
+  {
+    this->SetErrorCode(InvalidInputError);
+    vtkErrorMacro(<< "MappedInput is " << this->MappedInput << " but there "
+                  << (n == 1 ? "is 1 input" : "are " + std::to_string(n) + " inputs"));
+    return 0;
+  }
+
   try
   {
     if (static_cast<int>(outputs.size()) != n)
@@ -740,17 +785,46 @@ int vtkSurfaceMapFilter::RequestData(vtkInformation*,
     // 4. Outputs.
     report(0.98, "Writing the outputs");
     const surfacemaps::SurfaceMapResult& map = internals.Map;
+    const std::vector<surfacemaps::MapInput>& mapInputs = internals.MapInputs;
+    if (this->OutputMode == INPUT_EMBEDDINGS)
+    {
+      for (int i = 0; i < n; ++i)
+      {
+        setEmbeddingOutput(outputs[i], inputs[i], map.inputSpherePositions[i]);
+        setMapFieldData(outputs[i]->GetFieldData(), map, internals.EmbeddingSeconds, i);
+      }
+      report(1.0, "Done");
+      return 1;
+    }
     const bool common = this->OutputMode == COMMON_TRIANGULATION;
-    const std::vector<std::array<int, 3>> firstTriangles =
-      common ? std::vector<std::array<int, 3>>() : internals.MapInputs[0].mesh.triangles();
-    const auto& triangles = common ? map.triangles : firstTriangles;
-    const auto& points = common ? map.lifted : map.mappedFirst;
-    const auto& sources = common ? map.sourcePoints : map.mappedFirstSource;
+    // Mapped: input k's vertices carried onto every input j.
+    const int k = common ? 0 : this->MappedInput;
+    std::vector<std::array<int, 3>> mappedTriangles;
+    std::vector<std::vector<surfacemaps::SurfacePoint>> mappedSources(common ? 0 : n);
+    std::vector<std::vector<Eigen::Vector3d>> mappedPoints(common ? 0 : n);
+    if (!common)
+    {
+      mappedTriangles = mapInputs[k].mesh.triangles();
+      for (int j = 0; j < n; ++j)
+      {
+        mappedSources[j] = surfacemaps::transferVertices(map, mapInputs, k, j);
+        const std::vector<std::array<int, 3>> onJ = mapInputs[j].mesh.triangles();
+        for (const surfacemaps::SurfacePoint& p : mappedSources[j])
+        {
+          mappedPoints[j].push_back(
+            surfacemaps::evaluateSurfacePoint(mapInputs[j].mesh.points, onJ, p));
+        }
+      }
+    }
+    const auto& triangles = common ? map.triangles : mappedTriangles;
+    const auto& points = common ? map.lifted : mappedPoints;
+    const auto& sources = common ? map.sourcePoints : mappedSources;
     for (int i = 0; i < n; ++i)
     {
       vtkPolyData* output = outputs[i];
       setGeometry(output, points[i], triangles);
-      setSourcePointData(output, inputs[i], internals.MapInputs[i].mesh, sources[i]);
+      setSourcePointData(output, inputs[i], mapInputs[i].mesh, sources[i]);
+      setCornerTCoords(output, mapInputs[i].mesh.cornerTexCoords, sources[i]);
       if (common)
       {
         output->GetPointData()->AddArray(vectorArray(SpherePositionName, map.spherePositions[i]));
@@ -758,12 +832,12 @@ int vtkSurfaceMapFilter::RequestData(vtkInformation*,
       }
       else
       {
-        setLandmarks(output, internals.MapInputs[0].landmarks);
-        output->GetCellData()->PassData(inputs[0]->GetCellData());
+        setLandmarks(output, mapInputs[k].landmarks);
+        output->GetCellData()->PassData(inputs[k]->GetCellData());
       }
       setDistortion(output,
-        i == 0 ? std::vector<double>(triangles.size(), 1.0)
-               : distortionPerTriangle(points[0], points[i], triangles));
+        i == k ? std::vector<double>(triangles.size(), 1.0)
+               : distortionPerTriangle(points[k], points[i], triangles));
       output->GetFieldData()->PassData(inputs[i]->GetFieldData());
       setMapFieldData(output->GetFieldData(), map, internals.EmbeddingSeconds, i);
     }
@@ -845,4 +919,5 @@ void vtkSurfaceMapFilter::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "MaxEdgeLength: " << this->MaxEdgeLength << "\n";
   os << indent << "DecrementTolerance: " << this->DecrementTolerance << "\n";
   os << indent << "OutputMode: " << this->OutputMode << "\n";
+  os << indent << "MappedInput: " << this->MappedInput << "\n";
 }

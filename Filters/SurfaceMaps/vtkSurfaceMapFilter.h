@@ -42,15 +42,33 @@
  * every other point array of input i interpolated with those barycentric
  * coordinates (its own "Landmarks", "Sizing" and "SpherePosition" are not).
  *
- * OutputMode MAPPED_FIRST_INPUT: output j is input 0's mesh mapped onto input j
- * by the exact map (its connectivity, vertex v at Phi_0j(v) on input j): for
- * transferring data between inputs and for measuring the exact map. Point
- * data: "SourceCellId", "SourceBarycentric" (where on input j), "Landmarks"
- * (input 0's ids) and input j's point arrays interpolated; cell data: input
- * 0's (same cells). Output 0 is input 0 itself.
+ * OutputMode MAPPED_INPUT (also MAPPED_FIRST_INPUT): output j is the mesh of
+ * input k = MappedInput mapped onto input j by the exact map (k's
+ * connectivity, vertex v at Phi_kj(v) on input j): for transferring data
+ * between inputs and for measuring the exact map. Point data:
+ * "SourceCellId", "SourceBarycentric" (where on input j), "Landmarks" (input
+ * k's ids) and input j's point arrays interpolated; cell data: input k's (same
+ * cells). Output k is input k itself.
  *
- * Cell data (both modes): "Distortion", the symmetric Dirichlet energy of the
- * piecewise linear map from output 0 to output i per triangle: with both
+ * Texture coordinates (both modes above): when input i carries per-corner
+ * texture coordinates (the 6-component cell array "CornerTCoords" of
+ * vtkSurfaceMeshReader), output i gets the point array "TCoords" (active
+ * texture coordinates): the corner values of the input triangle the point
+ * lies in ("SourceCellId"), interpolated with "SourceBarycentric", so texture
+ * seams stay sharp. Active point texture coordinates of an input are
+ * interpolated like any point array (the corner ones take precedence).
+ *
+ * OutputMode INPUT_EMBEDDINGS: output i is input i unchanged (points, cells,
+ * point and cell data) with the point array "SpherePosition" set to its sphere
+ * embedding f_i as the map used it (inputs 1.. rotated onto input 0's frame
+ * by the landmarks): the frame of the common triangulation's own
+ * "SpherePosition" arrays. With T lifted on inputs i and j, these are what
+ * vtkSurfaceMapTransfer needs to carry data from input i to input j later.
+ * No "Distortion"; field data as below.
+ *
+ * Cell data (modes COMMON_TRIANGULATION and MAPPED_INPUT): "Distortion", the
+ * symmetric Dirichlet energy of the piecewise linear map from output r to
+ * output i per triangle (r = 0, or MappedInput in MAPPED_INPUT mode): with both
  * meshes centred and scaled to unit area, s1 >= s2 the singular values of the
  * triangle's Jacobian and A_0, A_i its unit-area areas on output 0 and
  * output i,
@@ -59,7 +77,7 @@
  * the map's energy divided by the triangle's mean area (A_0 + A_i) / 2: 1 for a
  * locally isometric triangle, larger otherwise (+inf if degenerate), and its
  * mean weighted by (A_0 + A_i) / 2 is the map's whole symmetric Dirichlet
- * energy (vtkSurfaceMapEvaluation's "SymmetricDirichlet"). Output 0: all 1.
+ * energy (vtkSurfaceMapEvaluation's "SymmetricDirichlet"). Output r: all 1.
  *
  * Field data (every output): "InputIndex"; "Bijective" (1: every embedding g_i
  * of T certified with exact predicates and degree 1), "SphericalDegree" (of
@@ -86,9 +104,10 @@
  * update (e.g. from a ProgressEvent observer) stops within one iteration and
  * leaves every output empty without an error.
  *
- * Switching OutputMode after an update reuses the computed map as long as the
- * inputs and every other setting are unchanged (the filter keeps the last map
- * for that), so both kinds of output cost one computation.
+ * Switching OutputMode or MappedInput after an update reuses the computed map
+ * as long as the inputs and every other setting are unchanged (the filter
+ * keeps the last map for that), so every kind of output costs one
+ * computation.
  *
  * @warning Cost: the sphere embeddings (see vtkSphereEmbeddingFilter: about
  * 0.7 s for 3 000 vertices, 3.5 s for 12 000) plus the optimisation,
@@ -102,6 +121,7 @@
  * until the next update.
  *
  * @sa vtkSphereEmbeddingFilter vtkSurfaceMapEvaluation vtkSurfaceMeshValidator
+ * vtkSurfaceMapTransfer
  */
 #ifndef vtkSurfaceMapFilter_h
 #define vtkSurfaceMapFilter_h
@@ -131,8 +151,10 @@ public:
   /** What the outputs carry. */
   enum OutputModes
   {
-    COMMON_TRIANGULATION = 0, ///< output i: T lifted onto input i
-    MAPPED_FIRST_INPUT = 1    ///< output j: input 0 mapped onto input j
+    COMMON_TRIANGULATION = 0,         ///< output i: T lifted onto input i
+    MAPPED_INPUT = 1,                 ///< output j: input MappedInput mapped onto input j
+    INPUT_EMBEDDINGS = 2,             ///< output i: input i with its embedding f_i
+    MAPPED_FIRST_INPUT = MAPPED_INPUT ///< MAPPED_INPUT (with MappedInput 0)
   };
 
   /** Where the target edge lengths come from. */
@@ -334,13 +356,31 @@ public:
   ///@{
   /**
    * COMMON_TRIANGULATION (default): output i is T lifted onto input i.
-   * MAPPED_FIRST_INPUT: output j is input 0 mapped onto input j. Changing only
-   * this setting does not recompute the map.
+   * MAPPED_INPUT: output j is input MappedInput mapped onto input j
+   * (SetOutputModeToMappedFirstInput() also sets MappedInput to 0).
+   * INPUT_EMBEDDINGS: output i is input i with its sphere embedding f_i.
+   * Changing only this setting does not recompute the map.
    */
-  vtkSetClampMacro(OutputMode, int, COMMON_TRIANGULATION, MAPPED_FIRST_INPUT);
+  vtkSetClampMacro(OutputMode, int, COMMON_TRIANGULATION, INPUT_EMBEDDINGS);
   vtkGetMacro(OutputMode, int);
   void SetOutputModeToCommonTriangulation() { this->SetOutputMode(COMMON_TRIANGULATION); }
-  void SetOutputModeToMappedFirstInput() { this->SetOutputMode(MAPPED_FIRST_INPUT); }
+  void SetOutputModeToMappedInput() { this->SetOutputMode(MAPPED_INPUT); }
+  void SetOutputModeToMappedFirstInput()
+  {
+    this->SetMappedInput(0);
+    this->SetOutputMode(MAPPED_INPUT);
+  }
+  void SetOutputModeToInputEmbeddings() { this->SetOutputMode(INPUT_EMBEDDINGS); }
+  ///@}
+
+  ///@{
+  /**
+   * The input whose mesh the MAPPED_INPUT outputs carry onto every input.
+   * Default 0, range [0, number of inputs - 1] (a larger value is an error at
+   * the update in that mode). Changing it does not recompute the map.
+   */
+  vtkSetClampMacro(MappedInput, int, 0, VTK_INT_MAX);
+  vtkGetMacro(MappedInput, int);
   ///@}
 
   ///@{
@@ -389,6 +429,7 @@ protected:
   double MaxEdgeLength = 100.0;
   double DecrementTolerance = 1e-4;
   int OutputMode = COMMON_TRIANGULATION;
+  int MappedInput = 0;
 
 private:
   vtkSurfaceMapFilter(const vtkSurfaceMapFilter&) = delete;

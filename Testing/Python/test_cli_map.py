@@ -23,7 +23,8 @@ def test_map_writes_common_and_mapped_meshes_and_a_report(tmp_path):
             data("blob.vts"), *SHORT, "--output-dir", out)
     assert r.returncode == 0, r.stderr
     assert "map of 2 surfaces: certified bijective" in r.stdout
-    assert sorted(os.listdir(out)) == ["common_0.vtp", "common_1.vtp", "mapped_0.vtp", "mapped_1.vtp", "report.json"]
+    assert sorted(os.listdir(out)) == ["common_0.vtp", "common_1.vtp", "embedding_0.vtp", "embedding_1.vtp",
+                                       "mapped_0.vtp", "mapped_1.vtp", "report.json"]
 
     report = json.loads((out / "report.json").read_text())
     assert report["certificate"]["bijective"] is True
@@ -105,4 +106,5 @@ def test_usage(tmp_path):
     assert r.returncode == 2 and "needs a whole number" in r.stderr
     r = run("map", "--help")
     assert r.returncode == 0 and "--release-landmarks" in r.stdout and "mapped_<i>.vtp" in r.stdout
+    assert "embedding_<i>.vtp" in r.stdout
     assert os.listdir(tmp_path) == []

@@ -1,6 +1,7 @@
 #include "SurfaceMap.h"
 
 #include "CommonTriangulation.h"
+#include "MapTransfer.h"
 #include "MeshValidation.h"
 #include "NewtonSolver.h"
 #include "Predicates.h"
@@ -817,36 +818,17 @@ SurfaceMapResult computeSurfaceMap(const std::vector<MapInput>& inputs,
   }
 
   // The exact map on input 0's vertices: f_0, then T's embedding 0 inverted
-  // (barycentric in T), T's embedding j, f_j inverted.
-  const SphereLocator onT(result.spherePositions[0], result.triangles);
-  const MapSurface& first = surfaces[0];
+  // (barycentric in T), T's embedding j, f_j inverted (MapTransfer.h).
   result.mappedFirst.assign(n, {});
   result.mappedFirstSource.assign(n, {});
   for (int j = 0; j < n; ++j)
   {
-    result.mappedFirst[j].resize(first.points.size());
-    result.mappedFirstSource[j].resize(first.points.size());
-  }
-  for (std::size_t w = 0; w < first.points.size(); ++w)
-  {
-    const SphereLocation loc = onT.locate(first.sphere[w]);
-    const auto& tri = result.triangles[loc.triangle];
-    for (int j = 0; j < n; ++j)
+    result.mappedFirstSource[j] = transferVertices(result, inputs, 0, j);
+    result.mappedFirst[j].reserve(result.mappedFirstSource[j].size());
+    for (const SurfacePoint& p : result.mappedFirstSource[j])
     {
-      SurfacePoint p;
-      if (j == 0)
-      {
-        p = surfacePoint(first, first.sphere[w], -1);
-      }
-      else
-      {
-        const auto& g = result.spherePositions[j];
-        const Eigen::Vector3d q =
-          (loc.alpha * g[tri[0]] + loc.beta * g[tri[1]] + loc.gamma * g[tri[2]]).normalized();
-        p = surfacePoint(surfaces[j], q, result.sourcePoints[j][tri[0]].triangle);
-      }
-      result.mappedFirstSource[j][w] = p;
-      result.mappedFirst[j][w] = evaluatePoint(inputs[j].mesh, surfaces[j], p);
+      result.mappedFirst[j].push_back(
+        evaluateSurfacePoint(inputs[j].mesh.points, surfaces[j].triangles, p));
     }
   }
 

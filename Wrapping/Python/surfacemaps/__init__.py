@@ -23,6 +23,16 @@ Helpers:
     output per mesh (the common triangulation lifted onto each), or with
     ``mapped=True`` also the first mesh mapped onto each; raises InputError or
     MapError.
+``transfer(map_dir, source, target, arrays=None)``
+    Point data (and texture coordinates) of input `source` of a saved map
+    (``surfacemap map``'s directory) carried onto input `target`'s vertices
+    (vtkSurfaceMapTransfer); raises InputError.
+``average_surfaces(meshes, weights=None, align="rigid")``
+    Weighted mean shape of meshes with identical connectivity (e.g. the
+    outputs of map_surfaces), each aligned onto the first (vtkSurfaceAverage).
+``write_time_series(source, times, directory, name="surface")``
+    The output of a temporal source (e.g. vtkSurfaceSequenceInterpolator) at
+    each time as .vtp files plus a ParaView .pvd collection.
 
 Submodules: ``surfacemaps.plots`` (distortion curves), ``surfacemaps.render``
 (offscreen pictures).
@@ -34,7 +44,8 @@ import vtkmodules.vtkCommonExecutionModel  # noqa: F401
 
 from .SurfaceMapsFilters import *  # noqa: F401,F403
 from .SurfaceMapsFilters import (vtkSphereEmbeddingFilter, vtkSurfaceMapEvaluation, vtkSurfaceMapFilter,
-                                 vtkSurfaceMeshReader, vtkSurfaceMeshValidator)
+                                 vtkSurfaceMapTransfer, vtkSurfaceMeshReader, vtkSurfaceMeshValidator)
+from .SurfaceMapsFilters import vtkSurfaceAverage, vtkSurfaceSequenceInterpolator
 
 __version__ = "0.1.0"
 
@@ -240,3 +251,166 @@ def map_surfaces(meshes, landmarks=None, target_error=1e-3, pairs="star", keep_l
         return common
     f.SetOutputModeToMappedFirstInput()
     return common, outputs()
+
+
+def transfer(map_dir, source, target, arrays=None):
+    """Carry the point data of input `source` of a saved map onto the vertices of input `target`.
+
+    `map_dir` is an output directory of ``surfacemap map`` (it reads
+    embedding_<i>.vtp and common_<i>.vtp of both inputs); `source` and `target`
+    are input indices. Runs vtkSurfaceMapTransfer: every vertex of the target
+    is sent onto the source by the map, where the source's point arrays are
+    interpolated. Returns the target mesh (vtkPolyData) with those arrays (all
+    but "SpherePosition", "Landmarks", "SourceCellId", "SourceBarycentric", or
+    the names in `arrays`), "SourceCellId", "SourceBarycentric" (where on the
+    source) and "TCoords" (the source's per-corner or point texture
+    coordinates evaluated there). Raises InputError for missing files, unknown
+    array names or files that do not fit together.
+    """
+    import os
+    for name, index in (("source", source), ("target", target)):
+        if isinstance(index, bool) or not isinstance(index, int) or index < 0:
+            raise TypeError(f"{name} is an input index (0, 1, ...), not {index!r}")
+    files = [os.path.join(str(map_dir), f"{kind}_{index}.vtp")
+             for kind, index in (("embedding", target), ("embedding", source), ("common", target), ("common", source))]
+    missing = sorted({os.path.basename(f) for f in files if not os.path.isfile(f)})
+    if missing:
+        raise InputError(f"{map_dir} has no {', '.join(missing)} (written by 'surfacemap map')")
+    t = vtkSurfaceMapTransfer()
+    errors = _collect_errors(t)
+    for port, path in enumerate(files):
+        t.SetInputDataObject(port, read_mesh(path))
+    for name in arrays or ():
+        t.AddArrayName(str(name))
+    t.Update()
+    if errors or t.GetOutput().GetNumberOfPoints() == 0:
+        message = "; ".join(errors) or "the transfer was aborted"
+        raise (InputError if t.GetErrorCode() == vtkSurfaceMapTransfer.InvalidInputError else MapError)(message)
+    result = t.GetOutput().NewInstance()
+    result.ShallowCopy(t.GetOutput())
+    return result
+
+
+_ALIGN_MODES = {"none": vtkSurfaceAverage.ALIGN_NONE, "rigid": vtkSurfaceAverage.ALIGN_RIGID,
+                "similarity": vtkSurfaceAverage.ALIGN_SIMILARITY}
+
+
+def average_surfaces(meshes, weights=None, align="rigid"):
+    """Weighted mean shape of meshes with identical connectivity (vtkSurfaceAverage).
+
+    - `meshes`: vtkPolyData or file names, all with the same points count and
+      cells, e.g. the outputs of map_surfaces (one common triangulation lifted
+      onto each surface).
+    - `weights`: None (all 1) or one weight >= 0 per mesh; normalised to sum 1.
+    - `align`: "none", "rigid" (rotation and translation of each mesh onto the
+      first, area-weighted least squares) or "similarity" (also a uniform scale).
+
+    Returns a vtkPolyData in the first mesh's frame with its cells, the averaged
+    points and point arrays, and field data "AlignmentRMS",
+    "AlignmentTransform", "AverageWeight" (and "AlignmentScale"). Raises
+    InputError when the connectivity differs or a weight is invalid.
+    """
+    meshes = list(meshes)
+    if not meshes:
+        raise InputError("no meshes to average")
+    if align not in _ALIGN_MODES:
+        raise ValueError(f"align is one of {sorted(_ALIGN_MODES)}, not {align!r}")
+    if weights is not None:
+        weights = [float(w) for w in weights]
+        if len(weights) != len(meshes):
+            raise InputError(f"{len(meshes)} meshes but {len(weights)} weights")
+    a = vtkSurfaceAverage()
+    errors = _collect_errors(a)
+    a.SetAlignMode(_ALIGN_MODES[align])
+    for k, mesh in enumerate(meshes):
+        a.AddInputData(_with_landmarks(mesh, None))
+        if weights is not None:
+            a.SetInputWeight(k, weights[k])
+    a.Update()
+    if errors or a.GetOutput().GetNumberOfPoints() == 0:
+        raise InputError("; ".join(errors) or "the average was aborted")
+    result = a.GetOutput().NewInstance()
+    result.ShallowCopy(a.GetOutput())
+    return result
+
+
+def _replace_atomically(path, write):
+    """Call write(temporary_path) for a temporary file next to `path`, then rename it to `path`."""
+    import os
+    # Next to `path` (same file system, so the rename is atomic), created with the usual permissions.
+    temporary = os.path.join(os.path.dirname(path), f".{os.path.basename(path)}.{os.getpid()}.tmp")
+    try:
+        write(temporary)
+        os.replace(temporary, path)
+    except BaseException:
+        if os.path.exists(temporary):
+            os.unlink(temporary)
+        raise
+
+
+def write_time_series(source, times, directory, name="surface"):
+    """Write a temporal source's output at each time as VTK XML files plus a ParaView collection.
+
+    `source` is a vtkSurfaceSequenceInterpolator or any algorithm whose output
+    port 0 produces vtkPolyData for vtkAlgorithm.UpdateTimeStep(t). Writes
+    ``directory/name_XXXX.vtp`` (XXXX the time's index, at least four digits)
+    for each of `times` and ``directory/name.pvd`` listing them with their
+    times (open it in ParaView for an animation). Every file is written to a
+    temporary name and renamed, so readers never see a partial file; the
+    directory is created if needed.
+
+    Returns the paths written: the .vtp files in the order of `times`, then the
+    .pvd. Raises InputError when the source reports an error or produces an
+    empty surface, OSError when a file cannot be written.
+    """
+    import os
+    from xml.sax.saxutils import quoteattr
+    from vtkmodules.vtkCommonCore import vtkCommand
+    from vtkmodules.vtkIOXML import vtkXMLPolyDataWriter
+
+    times = [float(t) for t in times]
+    directory = os.fspath(directory)
+    os.makedirs(directory, exist_ok=True)
+    digits = max(4, len(str(max(len(times) - 1, 0))))
+    messages = []
+
+    def on_error(obj, event, text=None):
+        messages.append(text.split("): ", 1)[-1].strip() if text else "unknown error")
+
+    on_error.CallDataType = "string0"
+    tag = source.AddObserver(vtkCommand.ErrorEvent, on_error)
+    paths = []
+    try:
+        for k, t in enumerate(times):
+            source.UpdateTimeStep(t)
+            output = source.GetOutputDataObject(0)
+            if messages or output is None or output.GetNumberOfPoints() == 0:
+                raise InputError("; ".join(messages) or f"no surface at time {t!r}")
+            path = os.path.join(directory, f"{name}_{k:0{digits}d}.vtp")
+
+            def write(temporary, output=output):
+                writer = vtkXMLPolyDataWriter()
+                writer.SetInputData(output)
+                writer.SetFileName(temporary)
+                if writer.Write() != 1:
+                    raise OSError(f"cannot write {path}")
+
+            _replace_atomically(path, write)
+            paths.append(path)
+    finally:
+        source.RemoveObserver(tag)
+
+    lines = ['<?xml version="1.0"?>',
+             '<VTKFile type="Collection" version="0.1" byte_order="LittleEndian">',
+             "  <Collection>"]
+    for t, path in zip(times, paths):
+        lines.append(f'    <DataSet timestep="{t!r}" group="" part="0" file={quoteattr(os.path.basename(path))}/>')
+    lines += ["  </Collection>", "</VTKFile>", ""]
+    pvd = os.path.join(directory, f"{name}.pvd")
+
+    def write_collection(temporary):
+        with open(temporary, "w", encoding="utf-8") as f:
+            f.write("\n".join(lines))
+
+    _replace_atomically(pvd, write_collection)
+    return paths + [pvd]

@@ -155,6 +155,8 @@ def test_settings_round_trip_and_clamp():
     f.SetPairModeToSequence()
     assert f.GetPairMode() == surfacemaps.vtkSurfaceMapFilter.PAIRS_SEQUENCE
     f.SetOutputMode(5)
-    assert f.GetOutputMode() == surfacemaps.vtkSurfaceMapFilter.MAPPED_FIRST_INPUT
+    assert f.GetOutputMode() == surfacemaps.vtkSurfaceMapFilter.INPUT_EMBEDDINGS
+    f.SetMappedInput(-1)
+    assert f.GetMappedInput() == 0
     f.SetTargetError(10.0)
     assert f.GetTargetError() == 1.0

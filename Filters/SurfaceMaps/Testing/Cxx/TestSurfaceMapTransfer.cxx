@@ -1,0 +1,657 @@
+// Data carried between the inputs of a map: vtkSurfaceMapFilter's
+// MAPPED_INPUT and INPUT_EMBEDDINGS outputs, and vtkSurfaceMapTransfer on them.
+#include "vtkSurfaceMapFilter.h"
+#include "vtkSurfaceMapTransfer.h"
+#include "vtkSurfaceMapsConversion.h"
+#include "vtkSurfaceMeshReader.h"
+
+#include "Primitives.h"
+#include "SphereLocator.h"
+#include "SphericalTriangulation.h"
+
+#include "vtkCallbackCommand.h"
+#include "vtkCellArray.h"
+#include "vtkCellData.h"
+#include "vtkCommand.h"
+#include "vtkDataArray.h"
+#include "vtkDoubleArray.h"
+#include "vtkFieldData.h"
+#include "vtkIntArray.h"
+#include "vtkNew.h"
+#include "vtkPointData.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+#include "vtkStringArray.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <set>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace
+{
+const std::string Data = SURFACEMAPS_DATA_DIR;
+
+vtkSmartPointer<vtkPolyData> read(const std::string& file, const std::string& landmarks = "")
+{
+  vtkNew<vtkSurfaceMeshReader> reader;
+  reader->SetFileName((Data + "/" + file).c_str());
+  if (!landmarks.empty())
+  {
+    reader->SetLandmarkFileName((Data + "/" + landmarks).c_str());
+  }
+  reader->Update();
+  vtkSmartPointer<vtkPolyData> output = reader->GetOutput();
+  return output;
+}
+
+// An icosphere scaled to an ellipsoid, with a smooth bump around +z.
+vtkSmartPointer<vtkPolyData> ellipsoid(int level, double a, double b, double c, double bump = 0.0)
+{
+  surfacemaps::PolygonMesh mesh = surfacemaps::makeIcosphere(level);
+  for (Eigen::Vector3d& p : mesh.points)
+  {
+    const double r = 1.0 + bump * std::exp(-4.0 * (1.0 - p.z()));
+    p = Eigen::Vector3d(a * p.x(), b * p.y(), c * p.z()) * r;
+  }
+  return vtkSurfaceMapsConversion::ToPolyData(mesh);
+}
+
+// Point array `name` = the z coordinate: linear, so interpolation in a
+// triangle gives exactly the z of the interpolated point.
+void addHeight(vtkPolyData* mesh, const char* name = "Height")
+{
+  vtkNew<vtkDoubleArray> height;
+  height->SetName(name);
+  height->SetNumberOfValues(mesh->GetNumberOfPoints());
+  for (vtkIdType v = 0; v < mesh->GetNumberOfPoints(); ++v)
+  {
+    height->SetValue(v, mesh->GetPoint(v)[2]);
+  }
+  mesh->GetPointData()->AddArray(height);
+}
+
+struct Events
+{
+  std::vector<std::string> Errors;
+  std::vector<std::string> Texts;
+};
+
+void watch(vtkAlgorithm* filter, Events& events)
+{
+  vtkNew<vtkCallbackCommand> onError;
+  onError->SetClientData(&events);
+  onError->SetCallback([](vtkObject*, unsigned long, void* client, void* text)
+    { static_cast<Events*>(client)->Errors.emplace_back(static_cast<const char*>(text)); });
+  filter->AddObserver(vtkCommand::ErrorEvent, onError);
+  vtkNew<vtkCallbackCommand> onProgress;
+  onProgress->SetClientData(&events);
+  onProgress->SetCallback(
+    [](vtkObject* object, unsigned long, void* client, void*)
+    {
+      auto* f = static_cast<vtkAlgorithm*>(object);
+      static_cast<Events*>(client)->Texts.emplace_back(
+        f->GetProgressText() ? f->GetProgressText() : "");
+    });
+  filter->AddObserver(vtkCommand::ProgressEvent, onProgress);
+}
+
+bool computedTheMap(const Events& events)
+{
+  return std::any_of(events.Texts.begin(),
+    events.Texts.end(),
+    [](const std::string& t) { return t.find(" phase, iteration ") != std::string::npos; });
+}
+
+void useShortSchedule(vtkSurfaceMapFilter* filter)
+{
+  filter->SetLandmarkIterations(10);
+  filter->SetCoarseIterations(3);
+  filter->SetFineIterations(3);
+}
+
+vtkSmartPointer<vtkPolyData> copyOf(vtkPolyData* data)
+{
+  auto copy = vtkSmartPointer<vtkPolyData>::New();
+  copy->ShallowCopy(data);
+  return copy;
+}
+
+std::vector<vtkIdType> connectivity(vtkPolyData* data)
+{
+  std::vector<vtkIdType> ids;
+  vtkDataArray* c = data->GetPolys()->GetConnectivityArray();
+  for (vtkIdType k = 0; k < c->GetNumberOfTuples(); ++k)
+  {
+    ids.push_back(static_cast<vtkIdType>(c->GetTuple1(k)));
+  }
+  return ids;
+}
+
+std::vector<std::array<int, 3>> triangles(vtkPolyData* data)
+{
+  const std::vector<vtkIdType> ids = connectivity(data);
+  std::vector<std::array<int, 3>> result;
+  for (std::size_t k = 0; k + 2 < ids.size(); k += 3)
+  {
+    result.push_back(
+      { static_cast<int>(ids[k]), static_cast<int>(ids[k + 1]), static_cast<int>(ids[k + 2]) });
+  }
+  return result;
+}
+
+std::vector<Eigen::Vector3d> vectors(vtkPolyData* data, const char* name)
+{
+  std::vector<Eigen::Vector3d> result;
+  vtkDataArray* a = data->GetPointData()->GetArray(name);
+  for (vtkIdType v = 0; a && v < a->GetNumberOfTuples(); ++v)
+  {
+    result.emplace_back(a->GetTuple3(v));
+  }
+  return result;
+}
+
+Eigen::Vector3d point(vtkPolyData* data, vtkIdType v)
+{
+  return Eigen::Vector3d(data->GetPoint(v));
+}
+
+// Where an output point lies on `source` by its SourceCellId and
+// SourceBarycentric: the source triangle's corners and the weights.
+struct Landing
+{
+  std::array<int, 3> corners;
+  Eigen::Vector3d weights;
+  vtkIdType cell;
+};
+
+Landing landing(vtkPolyData* output, vtkPolyData* source, vtkIdType v)
+{
+  vtkDataArray* cells = output->GetPointData()->GetArray("SourceCellId");
+  vtkDataArray* weights = output->GetPointData()->GetArray("SourceBarycentric");
+  Landing l;
+  l.cell = static_cast<vtkIdType>(cells->GetTuple1(v));
+  l.weights = Eigen::Vector3d(weights->GetTuple3(v));
+  const auto tris = triangles(source);
+  l.corners = tris.at(static_cast<std::size_t>(l.cell));
+  return l;
+}
+
+Eigen::Vector3d combine(const std::vector<Eigen::Vector3d>& values, const Landing& l)
+{
+  return l.weights[0] * values[l.corners[0]] + l.weights[1] * values[l.corners[1]] +
+    l.weights[2] * values[l.corners[2]];
+}
+
+std::vector<Eigen::Vector3d> points(vtkPolyData* data)
+{
+  std::vector<Eigen::Vector3d> result;
+  for (vtkIdType v = 0; v < data->GetNumberOfPoints(); ++v)
+  {
+    result.push_back(point(data, v));
+  }
+  return result;
+}
+
+// Every output point is the point its SourceCellId / SourceBarycentric name
+// on `source`, inside that triangle.
+void expectOnSource(vtkPolyData* output, vtkPolyData* source)
+{
+  ASSERT_NE(output->GetPointData()->GetArray("SourceCellId"), nullptr);
+  ASSERT_NE(output->GetPointData()->GetArray("SourceBarycentric"), nullptr);
+  const std::vector<Eigen::Vector3d> corners = points(source);
+  const auto tris = triangles(source);
+  vtkDataArray* cells = output->GetPointData()->GetArray("SourceCellId");
+  vtkDataArray* weights = output->GetPointData()->GetArray("SourceBarycentric");
+  const double tolerance = 1e-9 * source->GetLength();
+  for (vtkIdType v = 0; v < output->GetNumberOfPoints(); ++v)
+  {
+    const auto cell = static_cast<std::size_t>(cells->GetTuple1(v));
+    ASSERT_LT(cell, tris.size());
+    const Eigen::Vector3d w(weights->GetTuple3(v));
+    ASSERT_NEAR(w.sum(), 1.0, 1e-9);
+    ASSERT_GE(w.minCoeff(), -1e-9);
+    const auto& t = tris[cell];
+    const Eigen::Vector3d expected =
+      w[0] * corners[t[0]] + w[1] * corners[t[1]] + w[2] * corners[t[2]];
+    ASSERT_LT((point(output, v) - expected).norm(), tolerance) << "point " << v;
+  }
+}
+
+// The sphere map psi = g_to o g_from^-1 at p, by brute force over T's
+// triangles (no locator): the triangle containing p on g_from (largest
+// smallest barycentric coordinate, on p's side of the sphere), the same
+// barycentric coordinates on g_to, normalised.
+Eigen::Vector3d sphereMap(const Eigen::Vector3d& p,
+  const std::vector<std::array<int, 3>>& T,
+  const std::vector<Eigen::Vector3d>& gFrom,
+  const std::vector<Eigen::Vector3d>& gTo)
+{
+  double best = -1.0;
+  Eigen::Vector3d result = Eigen::Vector3d::Zero();
+  for (const auto& t : T)
+  {
+    if (p.dot(gFrom[t[0]] + gFrom[t[1]] + gFrom[t[2]]) <= 0.0)
+    {
+      continue;
+    }
+    const auto w =
+      surfacemaps::SphereLocator::barycentric(p, gFrom[t[0]], gFrom[t[1]], gFrom[t[2]]);
+    const double smallest = std::min({ w[0], w[1], w[2] });
+    if (smallest > best)
+    {
+      best = smallest;
+      result = (w[0] * gTo[t[0]] + w[1] * gTo[t[1]] + w[2] * gTo[t[2]]).normalized();
+    }
+  }
+  EXPECT_GE(best, -1e-12) << "no triangle of T contains the point";
+  return result;
+}
+
+// The four inputs of vtkSurfaceMapTransfer for `from` -> `to`.
+void connect(vtkSurfaceMapTransfer* transfer,
+  vtkPolyData* embeddingTo,
+  vtkPolyData* embeddingFrom,
+  vtkPolyData* commonTo,
+  vtkPolyData* commonFrom)
+{
+  transfer->SetInputDataObject(0, embeddingTo);
+  transfer->SetInputDataObject(1, embeddingFrom);
+  transfer->SetInputDataObject(2, commonTo);
+  transfer->SetInputDataObject(3, commonFrom);
+}
+
+// A computed map of two inputs with every kind of output kept.
+struct MapOutputs
+{
+  std::vector<vtkSmartPointer<vtkPolyData>> inputs, common, embeddings, mapped;
+};
+
+MapOutputs computeMap(const std::vector<vtkSmartPointer<vtkPolyData>>& inputs)
+{
+  MapOutputs m;
+  m.inputs = inputs;
+  vtkNew<vtkSurfaceMapFilter> filter;
+  useShortSchedule(filter);
+  Events events;
+  watch(filter, events);
+  for (const auto& input : inputs)
+  {
+    filter->AddInputData(input);
+  }
+  const int n = static_cast<int>(inputs.size());
+  filter->Update();
+  EXPECT_TRUE(events.Errors.empty()) << events.Errors.front();
+  for (int i = 0; i < n; ++i)
+  {
+    m.common.push_back(copyOf(filter->GetOutput(i)));
+  }
+  filter->SetOutputModeToInputEmbeddings();
+  filter->Update();
+  for (int i = 0; i < n; ++i)
+  {
+    m.embeddings.push_back(copyOf(filter->GetOutput(i)));
+  }
+  filter->SetOutputModeToMappedFirstInput();
+  filter->Update();
+  for (int i = 0; i < n; ++i)
+  {
+    m.mapped.push_back(copyOf(filter->GetOutput(i)));
+  }
+  EXPECT_TRUE(events.Errors.empty()) << events.Errors.front();
+  return m;
+}
+
+} // namespace
+
+TEST(SurfaceMapTransfer, MappedInputCarriesAnyInputWithoutRecomputing)
+{
+  vtkSmartPointer<vtkPolyData> a = ellipsoid(2, 1.0, 0.8, 0.6);
+  vtkSmartPointer<vtkPolyData> b = ellipsoid(3, 1.2, 1.0, 0.7, 0.3);
+  vtkSmartPointer<vtkPolyData> c = ellipsoid(1, 1.0, 1.0, 0.5, 0.2);
+  addHeight(a);
+  vtkNew<vtkSurfaceMapFilter> filter;
+  useShortSchedule(filter);
+  Events events;
+  watch(filter, events);
+  filter->AddInputData(a);
+  filter->AddInputData(b);
+  filter->AddInputData(c);
+  filter->Update();
+  ASSERT_TRUE(events.Errors.empty()) << events.Errors.front();
+  ASSERT_TRUE(computedTheMap(events));
+
+  events.Texts.clear();
+  filter->SetOutputModeToMappedInput();
+  filter->SetMappedInput(1);
+  filter->Update();
+  ASSERT_TRUE(events.Errors.empty()) << events.Errors.front();
+  EXPECT_FALSE(computedTheMap(events)); // the kept map was reused
+  vtkSmartPointer<vtkPolyData> inputs[3] = { a, b, c };
+  for (int j = 0; j < 3; ++j)
+  {
+    SCOPED_TRACE("output " + std::to_string(j));
+    vtkPolyData* out = filter->GetOutput(j);
+    ASSERT_EQ(out->GetNumberOfPoints(), b->GetNumberOfPoints());
+    EXPECT_EQ(connectivity(out), connectivity(b));
+    expectOnSource(out, inputs[j]);
+    vtkDataArray* distortion = out->GetCellData()->GetArray("Distortion");
+    ASSERT_NE(distortion, nullptr);
+    EXPECT_EQ(distortion->GetNumberOfTuples(), b->GetNumberOfPolys());
+    if (j == 1)
+    {
+      EXPECT_EQ(distortion->GetRange()[0], 1.0);
+      EXPECT_EQ(distortion->GetRange()[1], 1.0);
+    }
+  }
+  // Input 1 on itself is input 1, exactly.
+  for (vtkIdType v = 0; v < b->GetNumberOfPoints(); ++v)
+  {
+    ASSERT_EQ(point(filter->GetOutput(1), v), point(b, v));
+  }
+  // Input 0's arrays are interpolated on output 0 (input 1 on input 0).
+  vtkDataArray* height = filter->GetOutput(0)->GetPointData()->GetArray("Height");
+  ASSERT_NE(height, nullptr);
+  for (vtkIdType v = 0; v < b->GetNumberOfPoints(); ++v)
+  {
+    ASSERT_NEAR(height->GetTuple1(v), filter->GetOutput(0)->GetPoint(v)[2], 1e-12);
+  }
+  EXPECT_EQ(filter->GetOutput(1)->GetPointData()->GetArray("Height"), nullptr);
+
+  // A MappedInput beyond the inputs is an error that keeps the map.
+  filter->SetMappedInput(3);
+  filter->Update();
+  ASSERT_EQ(events.Errors.size(), 1u);
+  EXPECT_NE(events.Errors[0].find("MappedInput is 3 but there are 3 inputs"), std::string::npos)
+    << events.Errors[0];
+  EXPECT_EQ(filter->GetErrorCode(), vtkSurfaceMapFilter::InvalidInputError);
+  EXPECT_EQ(filter->GetOutput(0)->GetNumberOfPoints(), 0);
+  events.Texts.clear();
+  filter->SetMappedInput(2);
+  filter->Update();
+  EXPECT_EQ(events.Errors.size(), 1u);
+  EXPECT_FALSE(computedTheMap(events));
+  EXPECT_EQ(connectivity(filter->GetOutput(0)), connectivity(c));
+  // The former name still means input 0.
+  filter->SetOutputModeToMappedFirstInput();
+  EXPECT_EQ(filter->GetMappedInput(), 0);
+  EXPECT_EQ(filter->GetOutputMode(), vtkSurfaceMapFilter::MAPPED_FIRST_INPUT);
+}
+
+TEST(SurfaceMapTransfer, InputEmbeddingsAreInTheFrameOfTheCommonTriangulation)
+{
+  // With landmarks input 1's embedding is rotated onto input 0's: the
+  // embedding output must be the rotated one, the frame of T's g_i.
+  const MapOutputs m =
+    computeMap({ read("ellipsoid.obj", "ellipsoid.pinned"), read("blob.off", "blob.vts") });
+  for (int i = 0; i < 2; ++i)
+  {
+    SCOPED_TRACE("input " + std::to_string(i));
+    vtkPolyData* embedding = m.embeddings[i];
+    vtkPolyData* input = m.inputs[i];
+    ASSERT_EQ(embedding->GetNumberOfPoints(), input->GetNumberOfPoints());
+    EXPECT_EQ(points(embedding), points(input));
+    EXPECT_EQ(connectivity(embedding), connectivity(input));
+    EXPECT_NE(embedding->GetPointData()->GetArray("Landmarks"), nullptr);
+    EXPECT_EQ(embedding->GetCellData()->GetArray("Distortion"), nullptr);
+    EXPECT_NE(embedding->GetFieldData()->GetArray("Bijective"), nullptr);
+    const std::vector<Eigen::Vector3d> f = vectors(embedding, "SpherePosition");
+    ASSERT_EQ(f.size(), static_cast<std::size_t>(input->GetNumberOfPoints()));
+    for (const Eigen::Vector3d& p : f)
+    {
+      ASSERT_NEAR(p.norm(), 1.0, 1e-12);
+    }
+    EXPECT_TRUE(surfacemaps::certifyBijective(f, triangles(embedding)).bijective);
+    // T's vertices: g_i is where their source points lie on f_i.
+    vtkPolyData* common = m.common[i];
+    const std::vector<Eigen::Vector3d> g = vectors(common, "SpherePosition");
+    for (vtkIdType v = 0; v < common->GetNumberOfPoints(); ++v)
+    {
+      const Landing l = landing(common, input, v);
+      ASSERT_LT((combine(f, l).normalized() - g[v]).norm(), 1e-9) << "T vertex " << v;
+    }
+  }
+}
+
+// The test: per-corner texture coordinates transferred through the
+// map land where the map says, evaluated in the containing source triangle.
+TEST(SurfaceMapTransfer, CornerTexCoordsLandWhereTheMapSays)
+{
+  vtkSmartPointer<vtkPolyData> spot = read("spot.obj");
+  vtkDataArray* cornerTCoords = spot->GetCellData()->GetArray("CornerTCoords");
+  ASSERT_NE(cornerTCoords, nullptr);
+  ASSERT_EQ(cornerTCoords->GetNumberOfComponents(), 6);
+  const MapOutputs m = computeMap({ read("ellipsoid.obj"), spot });
+  vtkPolyData* onSpot = m.mapped[1]; // the ellipsoid's vertices carried onto spot
+  vtkDataArray* tcoords = onSpot->GetPointData()->GetTCoords();
+  ASSERT_NE(tcoords, nullptr);
+  EXPECT_STREQ(tcoords->GetName(), "TCoords");
+  ASSERT_EQ(tcoords->GetNumberOfComponents(), 2);
+  ASSERT_EQ(tcoords->GetNumberOfTuples(), m.inputs[0]->GetNumberOfPoints());
+  EXPECT_EQ(m.mapped[0]->GetPointData()->GetTCoords(), nullptr); // the ellipsoid has none
+  EXPECT_NE(m.common[1]->GetPointData()->GetTCoords(), nullptr); // T on spot has them too
+
+  // What the map says: f_0, then T from g_0 to g_1 (brute force), on sphere 1.
+  const std::vector<Eigen::Vector3d> f0 = vectors(m.embeddings[0], "SpherePosition");
+  const std::vector<Eigen::Vector3d> f1 = vectors(m.embeddings[1], "SpherePosition");
+  const std::vector<Eigen::Vector3d> g0 = vectors(m.common[0], "SpherePosition");
+  const std::vector<Eigen::Vector3d> g1 = vectors(m.common[1], "SpherePosition");
+  const auto T = triangles(m.common[0]);
+  const std::vector<Eigen::Vector3d> spotPoints = points(spot);
+  const double tolerance = 1e-9 * spot->GetLength();
+  std::set<double> distinctU;
+  for (vtkIdType v = 0; v < onSpot->GetNumberOfPoints(); ++v)
+  {
+    const Landing l = landing(onSpot, spot, v);
+    // The texture coordinates: the landing triangle's corners, interpolated.
+    double corners[6];
+    cornerTCoords->GetTuple(l.cell, corners);
+    for (int d = 0; d < 2; ++d)
+    {
+      const double expected =
+        l.weights[0] * corners[d] + l.weights[1] * corners[2 + d] + l.weights[2] * corners[4 + d];
+      ASSERT_NEAR(tcoords->GetComponent(v, d), expected, 1e-12) << "vertex " << v;
+    }
+    distinctU.insert(tcoords->GetComponent(v, 0));
+    // That landing point is the output's point, in 3D ...
+    ASSERT_LT((combine(spotPoints, l) - point(onSpot, v)).norm(), tolerance) << "vertex " << v;
+    // ... and where the map sends the vertex, on the sphere.
+    const Eigen::Vector3d says = sphereMap(f0[v], T, g0, g1);
+    ASSERT_LT((combine(f1, l).normalized() - says).norm(), 1e-9) << "vertex " << v;
+  }
+  EXPECT_GT(distinctU.size(), 100u); // real texture coordinates, not a constant
+
+  // vtkSurfaceMapTransfer from the saved outputs (spot -> ellipsoid) gives the
+  // same landing points and texture coordinates, bit for bit.
+  vtkNew<vtkSurfaceMapTransfer> transfer;
+  connect(transfer, m.embeddings[0], m.embeddings[1], m.common[0], m.common[1]);
+  transfer->Update();
+  vtkPolyData* out = transfer->GetOutput();
+  ASSERT_EQ(out->GetNumberOfPoints(), m.inputs[0]->GetNumberOfPoints());
+  EXPECT_EQ(points(out), points(m.inputs[0])); // the target's own points
+  vtkDataArray* transferred = out->GetPointData()->GetTCoords();
+  ASSERT_NE(transferred, nullptr);
+  for (vtkIdType v = 0; v < out->GetNumberOfPoints(); ++v)
+  {
+    const Landing a = landing(out, spot, v), b = landing(onSpot, spot, v);
+    ASSERT_EQ(a.cell, b.cell) << "vertex " << v;
+    ASSERT_EQ(a.weights, b.weights) << "vertex " << v;
+    ASSERT_EQ(transferred->GetComponent(v, 0), tcoords->GetComponent(v, 0));
+    ASSERT_EQ(transferred->GetComponent(v, 1), tcoords->GetComponent(v, 1));
+  }
+}
+
+TEST(SurfaceMapTransfer, ChosenArraysAreInterpolatedWithTheirRoles)
+{
+  vtkSmartPointer<vtkPolyData> a = ellipsoid(2, 1.0, 0.8, 0.6);
+  vtkSmartPointer<vtkPolyData> b = ellipsoid(2, 1.2, 1.0, 0.7, 0.3);
+  addHeight(b);
+  b->GetPointData()->SetActiveScalars("Height");
+  vtkNew<vtkIntArray> label;
+  label->SetName("Label");
+  label->SetNumberOfValues(b->GetNumberOfPoints());
+  label->Fill(7);
+  b->GetPointData()->AddArray(label);
+  const MapOutputs m = computeMap({ a, b });
+
+  // Input 1's arrays onto input 0's vertices.
+  vtkNew<vtkSurfaceMapTransfer> transfer;
+  Events events;
+  watch(transfer, events);
+  connect(transfer, m.embeddings[0], m.embeddings[1], m.common[0], m.common[1]);
+  transfer->Update();
+  ASSERT_TRUE(events.Errors.empty()) << events.Errors.front();
+  vtkPointData* pd = transfer->GetOutput()->GetPointData();
+  ASSERT_NE(pd->GetArray("Height"), nullptr);
+  EXPECT_EQ(pd->GetScalars(), pd->GetArray("Height"));
+  ASSERT_NE(pd->GetArray("Label"), nullptr);
+  EXPECT_EQ(pd->GetArray("Label")->GetRange()[0], 7.0);
+  EXPECT_EQ(pd->GetArray("Label")->GetRange()[1], 7.0);
+  EXPECT_EQ(pd->GetArray("SpherePosition"), nullptr);
+  EXPECT_EQ(pd->GetArray("Landmarks"), nullptr);
+  EXPECT_EQ(pd->GetTCoords(), nullptr);
+  EXPECT_EQ(pd->GetNumberOfArrays(), 4); // Height, Label, SourceCellId, SourceBarycentric
+  // Height is linear: its value is the z of the landing point on input 1,
+  // which is where the map filter sends the vertex (mapped_1).
+  for (vtkIdType v = 0; v < a->GetNumberOfPoints(); ++v)
+  {
+    ASSERT_NEAR(pd->GetArray("Height")->GetTuple1(v), m.mapped[1]->GetPoint(v)[2], 1e-12);
+  }
+
+  transfer->AddArrayName("Height");
+  EXPECT_EQ(transfer->GetNumberOfArrayNames(), 1);
+  EXPECT_STREQ(transfer->GetArrayName(0), "Height");
+  transfer->Update();
+  EXPECT_EQ(pd, transfer->GetOutput()->GetPointData());
+  EXPECT_NE(pd->GetArray("Height"), nullptr);
+  EXPECT_EQ(pd->GetArray("Label"), nullptr);
+
+  transfer->AddArrayName("Nope");
+  transfer->Update();
+  ASSERT_EQ(events.Errors.size(), 1u);
+  EXPECT_NE(events.Errors[0].find("has no point array 'Nope'"), std::string::npos)
+    << events.Errors[0];
+  EXPECT_NE(events.Errors[0].find("port 1 (source mesh"), std::string::npos) << events.Errors[0];
+  EXPECT_NE(events.Errors[0].find("Height, Label"), std::string::npos) << events.Errors[0];
+  EXPECT_EQ(transfer->GetErrorCode(), vtkSurfaceMapTransfer::InvalidInputError);
+  EXPECT_EQ(transfer->GetOutput()->GetNumberOfPoints(), 0);
+  transfer->RemoveAllArrayNames();
+  EXPECT_EQ(transfer->GetNumberOfArrayNames(), 0);
+
+  // From an input to itself: the identity, the source's values exactly.
+  events.Errors.clear();
+  connect(transfer, m.embeddings[1], m.embeddings[1], m.common[1], m.common[1]);
+  transfer->Update();
+  ASSERT_TRUE(events.Errors.empty()) << events.Errors.front();
+  vtkDataArray* same = transfer->GetOutput()->GetPointData()->GetArray("Height");
+  ASSERT_NE(same, nullptr);
+  for (vtkIdType v = 0; v < b->GetNumberOfPoints(); ++v)
+  {
+    ASSERT_EQ(same->GetTuple1(v), b->GetPoint(v)[2]);
+  }
+}
+
+TEST(SurfaceMapTransfer, BadInputsNameThePortAndTheDefect)
+{
+  const MapOutputs m =
+    computeMap({ ellipsoid(2, 1.0, 0.8, 0.6), ellipsoid(1, 1.2, 1.0, 0.7, 0.3) });
+  auto named = [](vtkPolyData* data, const char* file)
+  {
+    vtkSmartPointer<vtkPolyData> copy = copyOf(data);
+    vtkNew<vtkFieldData> fields;
+    vtkNew<vtkStringArray> name;
+    name->SetName("FileName");
+    name->InsertNextValue(file);
+    fields->AddArray(name);
+    copy->SetFieldData(fields);
+    return copy;
+  };
+  auto expectError = [&](vtkPolyData* to,
+                       vtkPolyData* from,
+                       vtkPolyData* commonTo,
+                       vtkPolyData* commonFrom,
+                       const std::vector<std::string>& parts)
+  {
+    vtkNew<vtkSurfaceMapTransfer> transfer;
+    Events events;
+    watch(transfer, events);
+    connect(transfer, to, from, commonTo, commonFrom);
+    transfer->Update();
+    ASSERT_EQ(events.Errors.size(), 1u);
+    for (const std::string& part : parts)
+    {
+      EXPECT_NE(events.Errors[0].find(part), std::string::npos) << events.Errors[0];
+    }
+    EXPECT_EQ(transfer->GetErrorCode(), vtkSurfaceMapTransfer::InvalidInputError);
+    EXPECT_EQ(transfer->GetOutput()->GetNumberOfPoints(), 0);
+  };
+
+  // No embedding on the source.
+  vtkSmartPointer<vtkPolyData> bare = named(m.embeddings[1], "embedding_1.vtp");
+  bare->GetPointData()->RemoveArray("SpherePosition");
+  expectError(m.embeddings[0],
+    bare,
+    m.common[0],
+    m.common[1],
+    { "port 1 (source mesh, embedding_1.vtp)", "has no SpherePosition point array" });
+
+  // Not unit vectors on the target.
+  vtkSmartPointer<vtkPolyData> scaled = copyOf(m.embeddings[0]);
+  vtkNew<vtkDoubleArray> doubled;
+  doubled->DeepCopy(m.embeddings[0]->GetPointData()->GetArray("SpherePosition"));
+  doubled->SetTuple3(5,
+    2.0 * doubled->GetComponent(5, 0),
+    2.0 * doubled->GetComponent(5, 1),
+    2.0 * doubled->GetComponent(5, 2));
+  scaled->GetPointData()->AddArray(doubled);
+  expectError(scaled,
+    m.embeddings[1],
+    m.common[0],
+    m.common[1],
+    { "port 0 (target mesh)", "not a unit vector at point 5 (length 2" });
+
+  // T's embedding on the source folded: two vertices swapped.
+  vtkSmartPointer<vtkPolyData> folded = named(m.common[1], "common_1.vtp");
+  vtkNew<vtkDoubleArray> swapped;
+  swapped->DeepCopy(m.common[1]->GetPointData()->GetArray("SpherePosition"));
+  double p0[3], p1[3];
+  swapped->GetTuple(0, p0);
+  swapped->GetTuple(1, p1);
+  swapped->SetTuple(0, p1);
+  swapped->SetTuple(1, p0);
+  folded->GetPointData()->AddArray(swapped);
+  expectError(m.embeddings[0],
+    m.embeddings[1],
+    m.common[0],
+    folded,
+    { "port 3 (common triangulation on the source, common_1.vtp)",
+      "is not a bijective embedding",
+      "not positively oriented" });
+
+  // Port 3 is not T: the source mesh itself.
+  expectError(m.embeddings[0],
+    m.embeddings[1],
+    m.common[0],
+    m.embeddings[1],
+    { "port 2 (common triangulation on the target)",
+      "port 3",
+      "do not hold the same common triangulation" });
+}
+
+TEST(SurfaceMapTransfer, PrintSelfListsTheArrayNames)
+{
+  vtkNew<vtkSurfaceMapTransfer> transfer;
+  std::ostringstream all;
+  transfer->Print(all);
+  EXPECT_NE(all.str().find("ArrayNames: (all)"), std::string::npos);
+  transfer->AddArrayName("Height");
+  transfer->AddArrayName("Label");
+  std::ostringstream some;
+  transfer->Print(some);
+  EXPECT_NE(some.str().find("ArrayNames: Height Label"), std::string::npos);
+  EXPECT_EQ(transfer->GetArrayName(2), nullptr);
+}

@@ -1,0 +1,123 @@
+/**
+ * @class   vtkSurfaceAverage
+ * @brief   Weighted mean shape of N surfaces with identical connectivity, after alignment.
+ *
+ * Averages N >= 1 meshes that share their cells vertex by vertex, typically
+ * the N outputs of vtkSurfaceMapFilter in its default COMMON_TRIANGULATION
+ * mode (the common triangulation T lifted onto each input, in each input's
+ * own coordinates): the mean shape of, e.g., the organ surfaces of one
+ * developmental stage.
+ *
+ * Each input i is first aligned onto input 0 (AlignMode): the similarity
+ * x -> s_i R_i x + t_i (R_i a rotation, never a reflection; s_i = 1 unless
+ * ALIGN_SIMILARITY) minimising the area-weighted sum of squared distances
+ * sum_v A_v |s_i R_i x_iv + t_i - x_0v|^2 over all vertices v, with A_v a
+ * third of the area of the triangles around v on input 0 (uniform weights
+ * when input 0 has no area). This is the closed-form solution of Umeyama
+ * (1991) via a 3x3 SVD. The output points are then the weighted mean
+ * sum_i w_i (s_i R_i x_iv + t_i) with the input weights w_i normalised to
+ * sum 1, in input 0's frame. Input 0 is the reference frame even if its
+ * weight is 0.
+ *
+ * Inputs: port 0 is repeatable; input i is the (i+1)-th connection. Every
+ * input must have input 0's number of points and exactly its cells (same
+ * point ids in the same order); otherwise vtkErrorMacro names the input and
+ * the first difference ("input 2 (b.obj) does not have the connectivity of
+ * input 0: cell 17 has the points (3 4 5) instead of (3 5 4)") and the output
+ * is empty.
+ *
+ * Output: input 0's cells with the averaged points. Point data:
+ * - floating-point arrays present on every input with the same name, type
+ *   and number of components are averaged with the same weights; the active
+ *   vectors are rotated by R_i first;
+ * - "Landmarks" is input 0's; other integer arrays (labels, ids) are passed
+ *   when identical on every input, dropped otherwise;
+ * - "SourceCellId", "SourceBarycentric" and "SpherePosition" (where a vertex
+ *   lies on one input and on its sphere) and the active normals are dropped
+ *   (recompute normals with vtkPolyDataNormals).
+ * Cell data is not passed. Field data: "AlignmentRMS" (one value per input:
+ * the area-weighted RMS distance between the aligned input and input 0, in
+ * input 0's units; 0 for input 0), "AlignmentTransform" (one 12-component
+ * tuple per input: the 3x4 matrix [s_i R_i | t_i], row by row),
+ * "AverageWeight" (the normalised weights) and, with ALIGN_SIMILARITY,
+ * "AlignmentScale" (s_i per input).
+ *
+ * Errors: a negative or non-finite weight, weights summing to 0, or
+ * connectivity that differs: vtkErrorMacro and an empty output. AbortExecute
+ * set during the update (e.g. from a ProgressEvent observer) leaves the output
+ * empty without an error.
+ *
+ * @warning Linear in N times the number of points; single-threaded (about a
+ * millisecond per 10 000 vertices and input). Progress is reported once per
+ * input, and AbortExecute is honoured there.
+ *
+ * @sa vtkSurfaceMapFilter vtkSurfaceSequenceInterpolator vtkProcrustesAlignmentFilter
+ */
+#ifndef vtkSurfaceAverage_h
+#define vtkSurfaceAverage_h
+
+#include "SurfaceMapsFiltersModule.h" // for export macro
+#include "vtkPolyDataAlgorithm.h"
+
+#include <memory> // for std::unique_ptr
+
+class SURFACEMAPSFILTERS_EXPORT vtkSurfaceAverage : public vtkPolyDataAlgorithm
+{
+public:
+  static vtkSurfaceAverage* New();
+  vtkTypeMacro(vtkSurfaceAverage, vtkPolyDataAlgorithm);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  /** How each input is aligned onto input 0 before averaging. */
+  enum AlignModes
+  {
+    ALIGN_NONE = 0,      ///< as given
+    ALIGN_RIGID = 1,     ///< rotation and translation
+    ALIGN_SIMILARITY = 2 ///< rotation, translation and uniform scale
+  };
+
+  ///@{
+  /**
+   * ALIGN_NONE, ALIGN_RIGID (default) or ALIGN_SIMILARITY: the least-squares
+   * (area-weighted) transformation of each input onto input 0 applied before
+   * averaging. Reflections are never used.
+   */
+  vtkSetClampMacro(AlignMode, int, ALIGN_NONE, ALIGN_SIMILARITY);
+  vtkGetMacro(AlignMode, int);
+  void SetAlignModeToNone() { this->SetAlignMode(ALIGN_NONE); }
+  void SetAlignModeToRigid() { this->SetAlignMode(ALIGN_RIGID); }
+  void SetAlignModeToSimilarity() { this->SetAlignMode(ALIGN_SIMILARITY); }
+  ///@}
+
+  ///@{
+  /**
+   * Weight of input i in the mean (default 1 for every input). Weights must
+   * be >= 0 with a positive sum (checked at update time: an error otherwise);
+   * they are normalised to sum 1, and weight 0 leaves an input out of the mean
+   * (it must still have the connectivity). Weights of indices beyond the
+   * number of inputs are kept but unused. A negative index is ignored with an
+   * error.
+   */
+  void SetInputWeight(int i, double weight);
+  double GetInputWeight(int i);
+  void RemoveAllInputWeights();
+  ///@}
+
+protected:
+  vtkSurfaceAverage();
+  ~vtkSurfaceAverage() override;
+
+  int FillInputPortInformation(int port, vtkInformation* info) override;
+  int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+
+  int AlignMode = ALIGN_RIGID;
+
+private:
+  vtkSurfaceAverage(const vtkSurfaceAverage&) = delete;
+  void operator=(const vtkSurfaceAverage&) = delete;
+
+  struct vtkInternals;
+  std::unique_ptr<vtkInternals> Internals;
+};
+
+#endif

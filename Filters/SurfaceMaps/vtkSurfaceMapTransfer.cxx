@@ -1,0 +1,457 @@
+#include "vtkSurfaceMapTransfer.h"
+
+#include "vtkSurfaceMapsConversion.h"
+
+#include "InputError.h"
+#include "MapTransfer.h"
+#include "SphericalTriangulation.h"
+
+#include "vtkAbstractArray.h"
+#include "vtkCellData.h"
+#include "vtkDataArray.h"
+#include "vtkDoubleArray.h"
+#include "vtkFieldData.h"
+#include "vtkIdList.h"
+#include "vtkIdTypeArray.h"
+#include "vtkInformation.h"
+#include "vtkInformationVector.h"
+#include "vtkNew.h"
+#include "vtkObjectFactory.h"
+#include "vtkPointData.h"
+#include "vtkPolyData.h"
+#include "vtkSmartPointer.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+vtkStandardNewMacro(vtkSurfaceMapTransfer);
+
+struct vtkSurfaceMapTransfer::vtkInternals
+{
+  std::vector<std::string> ArrayNames;
+};
+
+namespace
+{
+const char* const SpherePositionName = "SpherePosition";
+const char* const SourceCellIdName = "SourceCellId";
+const char* const SourceBarycentricName = "SourceBarycentric";
+const char* const TCoordsName = "TCoords";
+
+// Largest deviation of a SpherePosition's length from 1 (the map writes
+// normalised doubles; anything further off is not a sphere embedding). The
+// values are used as given, not normalised again: point location only
+// depends on directions, and the exact values keep a transfer from saved
+// files bit for bit equal to the map filter's own mapped output.
+const double UnitTolerance = 1e-6;
+
+// "port 2 (T on the target, common_1.vtp)".
+std::string portName(vtkPolyData* data, int port)
+{
+  static const char* const roles[4] = { "target mesh",
+    "source mesh",
+    "common triangulation on the target",
+    "common triangulation on the source" };
+  std::string name = "port " + std::to_string(port) + " (" + roles[port];
+  const std::string file = vtkSurfaceMapsConversion::InputName(data, port);
+  if (file != "input " + std::to_string(port))
+  {
+    name += ", " + file;
+  }
+  return name + ")";
+}
+
+// One input: its triangles and its certified sphere embedding.
+struct PortMesh
+{
+  std::string name;
+  surfacemaps::PolygonMesh mesh;
+  std::vector<std::array<int, 3>> triangles;
+  std::vector<Eigen::Vector3d> sphere;
+};
+
+PortMesh readPort(vtkPolyData* data, int port)
+{
+  PortMesh p;
+  p.name = portName(data, port);
+  if (!data || data->GetNumberOfPoints() == 0 || data->GetNumberOfCells() == 0)
+  {
+    throw surfacemaps::InputError(p.name + " is empty");
+  }
+  p.mesh = vtkSurfaceMapsConversion::ToPolygonMesh(data);
+  if (p.mesh.nonPolygonCells > 0)
+  {
+    throw surfacemaps::InputError(p.name + " has " + std::to_string(p.mesh.nonPolygonCells) +
+      " cells that are not triangles (vertices, lines or strips)");
+  }
+  const std::size_t nv = p.mesh.points.size();
+  for (std::size_t f = 0; f < p.mesh.numberOfFaces(); ++f)
+  {
+    if (p.mesh.faceSize(f) != 3)
+    {
+      throw surfacemaps::InputError(p.name + " is not a triangle mesh (cell " + std::to_string(f) +
+        " has " + std::to_string(p.mesh.faceSize(f)) + " points)");
+    }
+    for (int k = 0; k < 3; ++k)
+    {
+      const int v = p.mesh.face(f)[k];
+      if (v < 0 || static_cast<std::size_t>(v) >= nv)
+      {
+        throw surfacemaps::InputError(p.name + ": cell " + std::to_string(f) + " uses point " +
+          std::to_string(v) + " of " + std::to_string(nv));
+      }
+    }
+  }
+  p.triangles = p.mesh.triangles();
+
+  vtkDataArray* array = data->GetPointData()->GetArray(SpherePositionName);
+  if (!array)
+  {
+    throw surfacemaps::InputError(
+      p.name + " has no SpherePosition point array (its sphere embedding in the map's frame)");
+  }
+  p.sphere = vtkSurfaceMapsConversion::SpherePositions(data);
+  if (p.sphere.empty())
+  {
+    throw surfacemaps::InputError(p.name + " has a SpherePosition array of the wrong shape (" +
+      std::to_string(array->GetNumberOfTuples()) + " x " +
+      std::to_string(array->GetNumberOfComponents()) + " values for " + std::to_string(nv) +
+      " points)");
+  }
+  for (std::size_t v = 0; v < nv; ++v)
+  {
+    const double length = p.sphere[v].norm();
+    if (!(std::abs(length - 1.0) <= UnitTolerance))
+    {
+      throw surfacemaps::InputError(p.name +
+        " has a SpherePosition that is not a unit vector at point " + std::to_string(v) +
+        " (length " + std::to_string(length) + ")");
+    }
+  }
+  const surfacemaps::BijectivityCertificate certificate =
+    surfacemaps::certifyBijective(p.sphere, p.triangles);
+  if (!certificate.bijective)
+  {
+    throw surfacemaps::InputError(p.name +
+      " has a SpherePosition array that is not a bijective embedding: " + certificate.reason);
+  }
+  return p;
+}
+
+// Ports 2 and 3 are the same triangulation T (lifted onto two inputs).
+void checkSameTriangulation(const PortMesh& onTarget, const PortMesh& onSource)
+{
+  std::string where;
+  if (onTarget.mesh.points.size() != onSource.mesh.points.size())
+  {
+    where = std::to_string(onTarget.mesh.points.size()) + " vs " +
+      std::to_string(onSource.mesh.points.size()) + " points";
+  }
+  else if (onTarget.triangles.size() != onSource.triangles.size())
+  {
+    where = std::to_string(onTarget.triangles.size()) + " vs " +
+      std::to_string(onSource.triangles.size()) + " triangles";
+  }
+  else
+  {
+    for (std::size_t t = 0; t < onTarget.triangles.size() && where.empty(); ++t)
+    {
+      if (onTarget.triangles[t] != onSource.triangles[t])
+      {
+        where = "first difference at triangle " + std::to_string(t);
+      }
+    }
+  }
+  if (!where.empty())
+  {
+    throw surfacemaps::InputError(onTarget.name + " and " + onSource.name +
+      " do not hold the same common triangulation (" + where + ")");
+  }
+}
+
+// Where point location on the source starts for each T vertex: T's
+// "SourceCellId" on the source when it names source triangles, else nothing.
+std::vector<int> startTriangles(vtkPolyData* commonOnSource, std::size_t sourceTriangles)
+{
+  vtkDataArray* ids = commonOnSource->GetPointData()->GetArray(SourceCellIdName);
+  if (!ids || ids->GetNumberOfComponents() != 1 ||
+    ids->GetNumberOfTuples() != commonOnSource->GetNumberOfPoints())
+  {
+    return {};
+  }
+  std::vector<int> start(static_cast<std::size_t>(ids->GetNumberOfTuples()));
+  for (vtkIdType v = 0; v < ids->GetNumberOfTuples(); ++v)
+  {
+    const double t = ids->GetComponent(v, 0);
+    if (!(t >= 0.0 && t < static_cast<double>(sourceTriangles)))
+    {
+      return {};
+    }
+    start[v] = static_cast<int>(t);
+  }
+  return start;
+}
+
+// The source arrays to transfer: the named ones (each must exist), or all but
+// the map's own bookkeeping arrays and ids.
+std::vector<vtkAbstractArray*> selectArrays(vtkPointData* source,
+  const std::vector<std::string>& names,
+  const std::string& sourceName)
+{
+  std::vector<vtkAbstractArray*> arrays;
+  if (names.empty())
+  {
+    for (int a = 0; a < source->GetNumberOfArrays(); ++a)
+    {
+      vtkAbstractArray* array = source->GetAbstractArray(a);
+      const std::string name = array && array->GetName() ? array->GetName() : "";
+      if (name.empty() || name == SpherePositionName || name == "Landmarks" ||
+        name == SourceCellIdName || name == SourceBarycentricName ||
+        array->GetDataType() == VTK_ID_TYPE)
+      {
+        continue;
+      }
+      arrays.push_back(array);
+    }
+    return arrays;
+  }
+  for (const std::string& name : names)
+  {
+    if (name == SourceCellIdName || name == SourceBarycentricName)
+    {
+      throw surfacemaps::InputError(
+        "'" + name + "' cannot be transferred: the output has its own array of that name");
+    }
+    vtkAbstractArray* array = source->GetAbstractArray(name.c_str());
+    if (!array)
+    {
+      std::string present;
+      for (int a = 0; a < source->GetNumberOfArrays(); ++a)
+      {
+        const char* n = source->GetArrayName(a);
+        present += (present.empty() ? "" : ", ") + std::string(n ? n : "(unnamed)");
+      }
+      throw surfacemaps::InputError(sourceName + " has no point array '" + name +
+        "' (point arrays: " + (present.empty() ? "none" : present) + ")");
+    }
+    arrays.push_back(array);
+  }
+  return arrays;
+}
+
+// `array` of the source interpolated at the surface points.
+vtkSmartPointer<vtkAbstractArray> sampled(vtkAbstractArray* array,
+  const std::vector<std::array<int, 3>>& sourceTriangles,
+  const std::vector<surfacemaps::SurfacePoint>& points)
+{
+  auto result = vtk::TakeSmartPointer(array->NewInstance());
+  result->SetName(array->GetName());
+  result->SetNumberOfComponents(array->GetNumberOfComponents());
+  result->CopyComponentNames(array);
+  result->SetNumberOfTuples(static_cast<vtkIdType>(points.size()));
+  vtkNew<vtkIdList> corners;
+  corners->SetNumberOfIds(3);
+  for (std::size_t v = 0; v < points.size(); ++v)
+  {
+    const auto& tri = sourceTriangles[points[v].triangle];
+    double w[3] = { points[v].barycentric[0], points[v].barycentric[1], points[v].barycentric[2] };
+    for (int k = 0; k < 3; ++k)
+    {
+      corners->SetId(k, tri[k]);
+    }
+    result->InterpolateTuple(static_cast<vtkIdType>(v), corners, array, w);
+  }
+  return result;
+}
+
+} // namespace
+
+vtkSurfaceMapTransfer::vtkSurfaceMapTransfer()
+  : Internals(new vtkInternals)
+{
+  this->SetNumberOfInputPorts(4);
+  this->SetNumberOfOutputPorts(1);
+}
+
+vtkSurfaceMapTransfer::~vtkSurfaceMapTransfer() = default;
+
+void vtkSurfaceMapTransfer::AddArrayName(const char* name)
+{
+  if (!name)
+  {
+    return;
+  }
+  this->Internals->ArrayNames.emplace_back(name);
+  this->Modified();
+}
+
+void vtkSurfaceMapTransfer::RemoveAllArrayNames()
+{
+  if (!this->Internals->ArrayNames.empty())
+  {
+    this->Internals->ArrayNames.clear();
+    this->Modified();
+  }
+}
+
+int vtkSurfaceMapTransfer::GetNumberOfArrayNames()
+{
+  return static_cast<int>(this->Internals->ArrayNames.size());
+}
+
+const char* vtkSurfaceMapTransfer::GetArrayName(int index)
+{
+  return index >= 0 && index < this->GetNumberOfArrayNames()
+    ? this->Internals->ArrayNames[index].c_str()
+    : nullptr;
+}
+
+int vtkSurfaceMapTransfer::FillInputPortInformation(int, vtkInformation* info)
+{
+  info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkPolyData");
+  return 1;
+}
+
+int vtkSurfaceMapTransfer::RequestData(vtkInformation*,
+  vtkInformationVector** inputVector,
+  vtkInformationVector* outputVector)
+{
+  vtkPolyData* inputs[4];
+  for (int port = 0; port < 4; ++port)
+  {
+    inputs[port] = vtkPolyData::GetData(inputVector[port], 0);
+  }
+  vtkPolyData* target = inputs[0];
+  vtkPolyData* source = inputs[1];
+  vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
+  output->Initialize();
+  this->SetErrorCode(vtkErrorCode::NoError);
+
+  try
+  {
+    // 1. The four meshes and their certified embeddings f_to, f_from, g_to, g_from.
+    this->SetProgressText("Checking the map's embeddings");
+    this->UpdateProgress(0.0);
+    PortMesh ports[4];
+    for (int port = 0; port < 4; ++port)
+    {
+      ports[port] = readPort(inputs[port], port);
+    }
+    checkSameTriangulation(ports[2], ports[3]);
+    const std::vector<vtkAbstractArray*> arrays =
+      selectArrays(source->GetPointData(), this->Internals->ArrayNames, ports[1].name);
+    if (this->GetAbortExecute())
+    {
+      return 1;
+    }
+
+    // 2. Every target vertex through the map onto the source.
+    this->SetProgressText("Mapping the target's vertices onto the source");
+    this->UpdateProgress(0.4);
+    surfacemaps::MapTransferOptions options;
+    options.startTriangles = startTriangles(inputs[3], ports[1].triangles.size());
+    // The same input on both sides: the identity, exact at the vertices.
+    options.identity = ports[0].sphere == ports[1].sphere &&
+      ports[0].triangles == ports[1].triangles && ports[2].sphere == ports[3].sphere;
+    const std::vector<surfacemaps::SurfacePoint> points =
+      surfacemaps::transferPoints(ports[0].sphere,
+        ports[2].triangles,
+        ports[2].sphere,
+        ports[3].sphere,
+        ports[1].sphere,
+        ports[1].triangles,
+        options);
+
+    // 3. The target with the source's arrays sampled there.
+    this->SetProgressText("Sampling the source's point data");
+    this->UpdateProgress(0.8);
+    output->CopyStructure(target);
+    output->GetCellData()->PassData(target->GetCellData());
+    output->GetFieldData()->PassData(target->GetFieldData());
+    vtkPointData* from = source->GetPointData();
+    vtkPointData* to = output->GetPointData();
+    std::vector<vtkAbstractArray*> transferred = arrays;
+    vtkDataArray* pointTCoords = from->GetTCoords();
+    const bool cornerTCoords = !ports[1].mesh.cornerTexCoords.empty();
+    if (pointTCoords && !cornerTCoords &&
+      std::find(transferred.begin(), transferred.end(), pointTCoords) == transferred.end())
+    {
+      transferred.push_back(pointTCoords);
+    }
+    for (vtkAbstractArray* array : transferred)
+    {
+      to->AddArray(sampled(array, ports[1].triangles, points));
+      int index = -1;
+      from->GetAbstractArray(array->GetName(), index);
+      const int attribute = index >= 0 ? from->IsArrayAnAttribute(index) : -1;
+      if (attribute >= 0)
+      {
+        to->SetActiveAttribute(array->GetName(), attribute);
+      }
+    }
+    auto cellIds = vtkSmartPointer<vtkIdTypeArray>::New();
+    cellIds->SetName(SourceCellIdName);
+    cellIds->SetNumberOfValues(static_cast<vtkIdType>(points.size()));
+    auto barycentric = vtkSmartPointer<vtkDoubleArray>::New();
+    barycentric->SetName(SourceBarycentricName);
+    barycentric->SetNumberOfComponents(3);
+    barycentric->SetNumberOfTuples(static_cast<vtkIdType>(points.size()));
+    for (std::size_t v = 0; v < points.size(); ++v)
+    {
+      cellIds->SetValue(static_cast<vtkIdType>(v), points[v].triangle);
+      barycentric->SetTypedTuple(static_cast<vtkIdType>(v), points[v].barycentric.data());
+    }
+    to->AddArray(cellIds);
+    to->AddArray(barycentric);
+    if (cornerTCoords)
+    {
+      auto tcoords = vtkSmartPointer<vtkDoubleArray>::New();
+      tcoords->SetName(TCoordsName);
+      tcoords->SetNumberOfComponents(2);
+      tcoords->SetNumberOfTuples(static_cast<vtkIdType>(points.size()));
+      for (std::size_t v = 0; v < points.size(); ++v)
+      {
+        const Eigen::Vector2d t =
+          surfacemaps::evaluateCornerValues(ports[1].mesh.cornerTexCoords, points[v]);
+        tcoords->SetTypedTuple(static_cast<vtkIdType>(v), t.data());
+      }
+      to->SetTCoords(tcoords);
+    }
+    this->UpdateProgress(1.0);
+  }
+  catch (const surfacemaps::InputError& e)
+  {
+    output->Initialize();
+    this->SetErrorCode(InvalidInputError);
+    vtkErrorMacro(<< e.what());
+    return 0;
+  }
+  catch (const std::exception& e)
+  {
+    // Point location fails only on embeddings that are not bijective, which
+    // were certified above: anything here is an internal error.
+    output->Initialize();
+    this->SetErrorCode(vtkErrorCode::UnknownError);
+    vtkErrorMacro(<< "internal error: " << e.what());
+    return 0;
+  }
+  return 1;
+}
+
+void vtkSurfaceMapTransfer::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "ArrayNames:";
+  if (this->Internals->ArrayNames.empty())
+  {
+    os << " (all)";
+  }
+  for (const std::string& name : this->Internals->ArrayNames)
+  {
+    os << " " << name;
+  }
+  os << "\n";
+}

@@ -1,0 +1,129 @@
+/**
+ * @class   vtkSurfaceMapTransfer
+ * @brief   Carries point data from one input of a computed surface map to another.
+ *
+ * Samples the point arrays of one input of a bijective surface map (the
+ * source, input `from`) onto the vertices of another (the target, input
+ * `to`), through the map that vtkSurfaceMapFilter computed ("Surface Maps via
+ * Adaptive Triangulations", Schmidt, Pieper, Kobbelt, Eurographics 2023),
+ * from its saved outputs: no optimisation runs here. For every target vertex
+ * v the exact map Phi = f_from^-1 o g_from o g_to^-1 o f_to gives a point of
+ * the source: v's sphere point f_to(v) is located in the common
+ * triangulation T's embedding g_to, the same barycentric coordinates are
+ * taken on g_from (and normalised), and that sphere point is located in the
+ * source's embedding f_from: a source triangle and barycentric coordinates,
+ * where the source's arrays are interpolated.
+ *
+ * Inputs (one vtkPolyData each, triangles only, all from the same map):
+ * - port 0, target mesh: input `to` with the point array "SpherePosition" =
+ *   f_to, its sphere embedding as the map used it (vtkSurfaceMapFilter's
+ *   INPUT_EMBEDDINGS output `to`; `surfacemap map`'s embedding_<to>.vtp);
+ * - port 1, source mesh: input `from` with "SpherePosition" = f_from and the
+ *   arrays to transfer (embedding_<from>.vtp);
+ * - port 2: T lifted onto the target, with "SpherePosition" = g_to
+ *   (COMMON_TRIANGULATION output `to`, common_<to>.vtp);
+ * - port 3: T lifted onto the source, with "SpherePosition" = g_from
+ *   (common_<from>.vtp); its "SourceCellId", where present, is where point
+ *   location on the source starts.
+ *
+ * Output: the target mesh (its points, triangles, cell data and field data)
+ * with point data:
+ * - the source's point arrays interpolated (VTK's rules: integer values are
+ *   rounded), keeping their names and their roles as active attributes: all
+ *   of them except "SpherePosition", "Landmarks", "SourceCellId",
+ *   "SourceBarycentric" and id-typed arrays, or those named with
+ *   AddArrayName (any point array of the source);
+ * - "SourceCellId" (the source triangle the vertex maps into) and
+ *   "SourceBarycentric" (its barycentric coordinates there);
+ * - "TCoords" (active texture coordinates) when the source carries per-corner
+ *   texture coordinates (the 6-component cell array "CornerTCoords" of
+ *   vtkSurfaceMeshReader): the corners of that source triangle interpolated
+ *   with those barycentric coordinates, so seams stay sharp; otherwise the
+ *   source's active point texture coordinates, if any, are transferred (also
+ *   when not named).
+ * The target's own point arrays are not kept.
+ *
+ * Checks (errors name the port, the file from the "FileName" field data where
+ * present, and the defect): every input is a non-empty triangle mesh with a
+ * "SpherePosition" array of unit vectors (within 1e-6; used as given) that
+ * is a certified bijective embedding (exact orientation of every triangle,
+ * degree 1); ports 2 and 3 hold the same triangles; every named array
+ * exists. Errors leave the output empty and set GetErrorCode() to
+ * InvalidInputError. Inputs from different map runs cannot be detected and
+ * give a wrong transfer.
+ *
+ * @warning Cost: point location on the sphere (a visibility walk, exact
+ * predicates) for every target vertex in T and in the source, plus the
+ * certification of the four embeddings: roughly linear in the sizes, about
+ * 0.2 s for 100 000 target vertices. Single-threaded.
+ *
+ * @sa vtkSurfaceMapFilter
+ */
+#ifndef vtkSurfaceMapTransfer_h
+#define vtkSurfaceMapTransfer_h
+
+#include "SurfaceMapsFiltersModule.h" // for export macro
+#include "vtkErrorCode.h"             // for the error codes
+#include "vtkPolyDataAlgorithm.h"
+
+#include <memory> // for std::unique_ptr
+
+class SURFACEMAPSFILTERS_EXPORT vtkSurfaceMapTransfer : public vtkPolyDataAlgorithm
+{
+public:
+  static vtkSurfaceMapTransfer* New();
+  vtkTypeMacro(vtkSurfaceMapTransfer, vtkPolyDataAlgorithm);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  /** Values of GetErrorCode() after a failed update. */
+  enum ErrorCodes
+  {
+    InvalidInputError = vtkErrorCode::UserError + 1 ///< an input or array name cannot be used
+  };
+
+  ///@{
+  /**
+   * Convenience: target mesh (port 0), source mesh (1), T lifted onto the
+   * target (2) and onto the source (3).
+   */
+  void SetTargetConnection(vtkAlgorithmOutput* output) { this->SetInputConnection(0, output); }
+  void SetSourceConnection(vtkAlgorithmOutput* output) { this->SetInputConnection(1, output); }
+  void SetTargetCommonConnection(vtkAlgorithmOutput* output)
+  {
+    this->SetInputConnection(2, output);
+  }
+  void SetSourceCommonConnection(vtkAlgorithmOutput* output)
+  {
+    this->SetInputConnection(3, output);
+  }
+  ///@}
+
+  ///@{
+  /**
+   * The source point arrays to transfer. None named (default): every point
+   * array of the source except "SpherePosition", "Landmarks", "SourceCellId",
+   * "SourceBarycentric" and id-typed arrays. A name the source does not have
+   * is an error at the update.
+   */
+  void AddArrayName(const char* name);
+  void RemoveAllArrayNames();
+  int GetNumberOfArrayNames();
+  const char* GetArrayName(int index);
+  ///@}
+
+protected:
+  vtkSurfaceMapTransfer();
+  ~vtkSurfaceMapTransfer() override;
+
+  int FillInputPortInformation(int port, vtkInformation* info) override;
+  int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+
+private:
+  vtkSurfaceMapTransfer(const vtkSurfaceMapTransfer&) = delete;
+  void operator=(const vtkSurfaceMapTransfer&) = delete;
+
+  struct vtkInternals;
+  std::unique_ptr<vtkInternals> Internals;
+};
+
+#endif

@@ -1,0 +1,299 @@
+#include "vtkSurfaceMapsCombination.h"
+
+#include "vtkCellArray.h"
+#include "vtkDataArray.h"
+#include "vtkDataSetAttributes.h"
+#include "vtkFieldData.h"
+#include "vtkIdList.h"
+#include "vtkNew.h"
+#include "vtkPointData.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+#include "vtkSmartPointer.h"
+#include "vtkStringArray.h"
+
+#include <Eigen/Dense>
+
+#include <set>
+#include <sstream>
+#include <stdexcept>
+
+namespace
+{
+
+// Per-input correspondence data that a blend of positions does not carry over.
+const char* const DroppedArrays[] = { "SourceCellId", "SourceBarycentric", "SpherePosition" };
+const char* const LandmarksName = "Landmarks";
+
+bool isFloating(vtkDataArray* array)
+{
+  return array->GetDataType() == VTK_FLOAT || array->GetDataType() == VTK_DOUBLE;
+}
+
+std::string idList(vtkIdList* ids)
+{
+  std::ostringstream text;
+  text << "(";
+  for (vtkIdType k = 0; k < ids->GetNumberOfIds(); ++k)
+  {
+    text << (k ? " " : "") << ids->GetId(k);
+  }
+  text << ")";
+  return text.str();
+}
+
+// The array named `name` on every mesh with the type and shape of mesh 0's,
+// one tuple per point; empty otherwise.
+std::vector<vtkDataArray*> sameArrayOnEveryMesh(const std::vector<vtkPolyData*>& meshes,
+  const char* name)
+{
+  std::vector<vtkDataArray*> arrays;
+  vtkDataArray* first = meshes[0]->GetPointData()->GetArray(name);
+  for (vtkPolyData* mesh : meshes)
+  {
+    vtkDataArray* array = mesh->GetPointData()->GetArray(name);
+    if (!array || array->GetDataType() != first->GetDataType() ||
+      array->GetNumberOfComponents() != first->GetNumberOfComponents() ||
+      array->GetNumberOfTuples() != mesh->GetNumberOfPoints())
+    {
+      return {};
+    }
+    arrays.push_back(array);
+  }
+  return arrays;
+}
+
+bool identicalValues(const std::vector<vtkDataArray*>& arrays)
+{
+  const vtkIdType n = arrays[0]->GetNumberOfValues();
+  for (std::size_t i = 1; i < arrays.size(); ++i)
+  {
+    for (vtkIdType v = 0; v < n; ++v)
+    {
+      if (arrays[i]->GetVariantValue(v) != arrays[0]->GetVariantValue(v))
+      {
+        return false;
+      }
+    }
+  }
+  return true;
+}
+
+// sum_i c_i A_i a_i per tuple, A_i = rotation_i for rotated vectors, else identity.
+vtkSmartPointer<vtkDataArray> combineArray(const std::vector<vtkDataArray*>& arrays,
+  const std::vector<double>& coefficients,
+  const std::vector<Eigen::Matrix3d>* rotations)
+{
+  auto result = vtk::TakeSmartPointer(arrays[0]->NewInstance());
+  result->SetName(arrays[0]->GetName());
+  const int nc = arrays[0]->GetNumberOfComponents();
+  const vtkIdType nt = arrays[0]->GetNumberOfTuples();
+  result->SetNumberOfComponents(nc);
+  for (int c = 0; c < nc; ++c)
+  {
+    if (const char* component = arrays[0]->GetComponentName(c))
+    {
+      result->SetComponentName(c, component);
+    }
+  }
+  result->SetNumberOfTuples(nt);
+  std::vector<double> sum(nc), tuple(nc);
+  for (vtkIdType t = 0; t < nt; ++t)
+  {
+    std::fill(sum.begin(), sum.end(), 0.0);
+    for (std::size_t i = 0; i < arrays.size(); ++i)
+    {
+      if (coefficients[i] == 0.0)
+      {
+        continue;
+      }
+      arrays[i]->GetTuple(t, tuple.data());
+      if (rotations)
+      {
+        const Eigen::Vector3d r = (*rotations)[i] * Eigen::Vector3d(tuple[0], tuple[1], tuple[2]);
+        tuple.assign(r.data(), r.data() + 3);
+      }
+      for (int c = 0; c < nc; ++c)
+      {
+        sum[c] += coefficients[i] * tuple[c];
+      }
+    }
+    result->SetTuple(t, sum.data());
+  }
+  return result;
+}
+
+} // namespace
+
+std::string vtkSurfaceMapsCombination::Name(vtkPolyData* mesh, const std::string& kind, int index)
+{
+  std::string name = kind + " " + std::to_string(index);
+  auto* files = mesh
+    ? vtkStringArray::SafeDownCast(mesh->GetFieldData()->GetAbstractArray("FileName"))
+    : nullptr;
+  if (files && files->GetNumberOfValues() > 0 && !files->GetValue(0).empty())
+  {
+    name += " (" + files->GetValue(0) + ")";
+  }
+  return name;
+}
+
+void vtkSurfaceMapsCombination::CheckSameConnectivity(const std::vector<vtkPolyData*>& meshes,
+  const std::string& kind)
+{
+  vtkPolyData* first = meshes[0];
+  vtkNew<vtkIdList> a, b;
+  for (std::size_t i = 1; i < meshes.size(); ++i)
+  {
+    vtkPolyData* mesh = meshes[i];
+    const std::string prefix = Name(mesh, kind, static_cast<int>(i)) +
+      " does not have the connectivity of " + Name(first, kind, 0) + ": ";
+    if (mesh->GetNumberOfPoints() != first->GetNumberOfPoints())
+    {
+      throw std::invalid_argument(prefix + std::to_string(mesh->GetNumberOfPoints()) +
+        " points instead of " + std::to_string(first->GetNumberOfPoints()));
+    }
+    // Cell ids run over verts, lines, polys, strips in this order.
+    vtkIdType offset = 0;
+    for (int kindIndex = 0; kindIndex < 4; ++kindIndex)
+    {
+      vtkCellArray* mine = nullptr;
+      vtkCellArray* reference = nullptr;
+      const char* cellKind = nullptr;
+      switch (kindIndex)
+      {
+        case 0:
+          mine = mesh->GetVerts(), reference = first->GetVerts(), cellKind = "vertex cells";
+          break;
+        case 1:
+          mine = mesh->GetLines(), reference = first->GetLines(), cellKind = "lines";
+          break;
+        case 2:
+          mine = mesh->GetPolys(), reference = first->GetPolys(), cellKind = "polygons";
+          break;
+        default:
+          mine = mesh->GetStrips(), reference = first->GetStrips(), cellKind = "strips";
+          break;
+      }
+      const vtkIdType n = mine ? mine->GetNumberOfCells() : 0;
+      const vtkIdType m = reference ? reference->GetNumberOfCells() : 0;
+      if (n != m)
+      {
+        throw std::invalid_argument(
+          prefix + std::to_string(n) + " " + cellKind + " instead of " + std::to_string(m));
+      }
+      for (vtkIdType c = 0; c < n; ++c)
+      {
+        mine->GetCellAtId(c, a);
+        reference->GetCellAtId(c, b);
+        bool same = a->GetNumberOfIds() == b->GetNumberOfIds();
+        for (vtkIdType k = 0; same && k < a->GetNumberOfIds(); ++k)
+        {
+          same = a->GetId(k) == b->GetId(k);
+        }
+        if (!same)
+        {
+          throw std::invalid_argument(prefix + "cell " + std::to_string(offset + c) +
+            " has the points " + idList(a) + " instead of " + idList(b));
+        }
+      }
+      offset += n;
+    }
+  }
+}
+
+void vtkSurfaceMapsCombination::Combine(const std::vector<vtkPolyData*>& meshes,
+  const std::vector<double>& coefficients,
+  const std::vector<Similarity>& transforms,
+  vtkPolyData* output)
+{
+  vtkPolyData* first = meshes[0];
+  const vtkIdType np = first->GetNumberOfPoints();
+
+  // Points.
+  vtkNew<vtkPoints> points;
+  points->SetDataType(first->GetPoints() ? first->GetPoints()->GetDataType() : VTK_DOUBLE);
+  points->SetNumberOfPoints(np);
+  for (vtkIdType v = 0; v < np; ++v)
+  {
+    Eigen::Vector3d sum = Eigen::Vector3d::Zero();
+    for (std::size_t i = 0; i < meshes.size(); ++i)
+    {
+      if (coefficients[i] == 0.0)
+      {
+        continue;
+      }
+      Eigen::Vector3d x;
+      meshes[i]->GetPoint(v, x.data());
+      if (!transforms.empty())
+      {
+        const Similarity& s = transforms[i];
+        x = s.Scale * (s.Rotation * x) + s.Translation;
+      }
+      sum += coefficients[i] * x;
+    }
+    points->SetPoint(v, sum.data());
+  }
+  output->CopyStructure(first);
+  output->SetPoints(points);
+
+  // Point arrays.
+  vtkPointData* from = first->GetPointData();
+  vtkPointData* to = output->GetPointData();
+  std::set<std::string> dropped(std::begin(DroppedArrays), std::end(DroppedArrays));
+  if (vtkDataArray* normals = from->GetNormals())
+  {
+    if (normals->GetName())
+    {
+      dropped.insert(normals->GetName());
+    }
+  }
+  const char* vectorsName = from->GetVectors() ? from->GetVectors()->GetName() : nullptr;
+  std::vector<Eigen::Matrix3d> rotations;
+  for (std::size_t i = 0; i < meshes.size(); ++i)
+  {
+    rotations.push_back(transforms.empty() ? Eigen::Matrix3d::Identity() : transforms[i].Rotation);
+  }
+  for (int a = 0; a < from->GetNumberOfArrays(); ++a)
+  {
+    vtkDataArray* array = from->GetArray(a);
+    const char* name = array ? array->GetName() : nullptr;
+    if (!name || dropped.count(name))
+    {
+      continue;
+    }
+    if (std::string(name) == LandmarksName)
+    {
+      to->AddArray(array);
+      continue;
+    }
+    const std::vector<vtkDataArray*> arrays = sameArrayOnEveryMesh(meshes, name);
+    if (arrays.empty())
+    {
+      continue;
+    }
+    if (!isFloating(array))
+    {
+      if (identicalValues(arrays))
+      {
+        to->AddArray(array);
+      }
+      continue;
+    }
+    const bool rotate =
+      vectorsName && std::string(name) == vectorsName && array->GetNumberOfComponents() == 3;
+    to->AddArray(combineArray(arrays, coefficients, rotate ? &rotations : nullptr));
+  }
+  // Input 0's active attributes, where their arrays made it.
+  for (int attribute : { vtkDataSetAttributes::SCALARS,
+         vtkDataSetAttributes::VECTORS,
+         vtkDataSetAttributes::TCOORDS,
+         vtkDataSetAttributes::TENSORS })
+  {
+    vtkDataArray* active = from->GetAttribute(attribute);
+    if (active && active->GetName() && to->GetArray(active->GetName()))
+    {
+      to->SetActiveAttribute(active->GetName(), attribute);
+    }
+  }
+}

@@ -1,0 +1,62 @@
+/**
+ * @class   vtkSurfaceMapsCombination
+ * @brief   Linear combinations of meshes with identical connectivity (private).
+ *
+ * Shared by vtkSurfaceAverage (weighted mean after alignment) and
+ * vtkSurfaceSequenceInterpolator (linear or cubic Hermite blend of keyframes):
+ * both compute sum_i c_i x_i over N meshes that share their cells.
+ *
+ * Point-data rules (the same for both filters):
+ * - "SourceCellId", "SourceBarycentric", "SpherePosition" and the active
+ *   normals are dropped: they describe where a vertex lies on one input (or
+ *   its surface orientation), which a blend of positions does not carry over
+ *   (recompute normals with vtkPolyDataNormals).
+ * - "Landmarks" is input 0's.
+ * - Other integer arrays (labels, ids) are passed from input 0 when they are
+ *   identical on every input, dropped otherwise.
+ * - Floating-point arrays with the same name, type and number of components
+ *   on every input are combined component-wise with the same coefficients, in
+ *   double precision, into an array of that type; the active vectors are first
+ *   rotated by each input's transform. Arrays missing on some input, or of a
+ *   different type or shape there, are dropped.
+ * Cell data and field data are not passed.
+ */
+#ifndef vtkSurfaceMapsCombination_h
+#define vtkSurfaceMapsCombination_h
+
+#include <Eigen/Core>
+
+#include <string>
+#include <vector>
+
+class vtkPolyData;
+
+class vtkSurfaceMapsCombination
+{
+public:
+  /// x -> Scale * Rotation * x + Translation.
+  struct Similarity
+  {
+    Eigen::Matrix3d Rotation = Eigen::Matrix3d::Identity();
+    double Scale = 1.0;
+    Eigen::Vector3d Translation = Eigen::Vector3d::Zero();
+  };
+
+  /// "<kind> <index>", followed by " (<FileName>)" when the mesh carries one.
+  static std::string Name(vtkPolyData* mesh, const std::string& kind, int index);
+
+  /// Throws std::invalid_argument naming the first mesh (as `kind` i) whose
+  /// number of points or cells differs from mesh 0's, and where.
+  static void CheckSameConnectivity(const std::vector<vtkPolyData*>& meshes,
+    const std::string& kind);
+
+  /// output = mesh 0's cells with points sum_i c_i T_i(x_i) and the point
+  /// arrays described above. `transforms` is empty (identity) or one per
+  /// mesh. Meshes with coefficient 0 do not contribute values.
+  static void Combine(const std::vector<vtkPolyData*>& meshes,
+    const std::vector<double>& coefficients,
+    const std::vector<Similarity>& transforms,
+    vtkPolyData* output);
+};
+
+#endif

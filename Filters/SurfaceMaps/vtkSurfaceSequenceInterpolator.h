@@ -1,0 +1,145 @@
+/**
+ * @class   vtkSurfaceSequenceInterpolator
+ * @brief   A surface that moves through K keyframe surfaces of identical connectivity over time.
+ *
+ * Interpolates vertex by vertex between K >= 1 keyframe meshes that share
+ * their cells, e.g. the outputs of vtkSurfaceMapFilter with
+ * SetPairModeToSequence() (one common triangulation lifted onto the surfaces
+ * of successive developmental stages), or stage averages (vtkSurfaceAverage)
+ * mapped through one common triangulation. Keyframe k is placed at time t_k
+ * (SetKeyframeTime; default t_k = k); the output is the surface at any time
+ * in [t_0, t_{K-1}], following VTK's temporal pipeline: the output
+ * information reports TIME_STEPS and TIME_RANGE, and the requested
+ * UPDATE_TIME_STEP is produced (UpdateTimeStep(t), ParaView's animation, or
+ * downstream temporal filters).
+ *
+ * InterpolationMode:
+ * - INTERPOLATE_LINEAR: on [t_k, t_{k+1}], (1 - u) x_k + u x_{k+1} with
+ *   u = (t - t_k) / (t_{k+1} - t_k). Continuous; the velocity jumps at the
+ *   keyframes.
+ * - INTERPOLATE_SMOOTH (default): piecewise-cubic Hermite interpolation, C1
+ *   in time, with the tangent at keyframe k the derivative of the parabola
+ *   through keyframes k - 1, k, k + 1 (through 0, 1, 2 at the first keyframe
+ *   and K - 3, K - 2, K - 1 at the last), valid for non-uniform times. It
+ *   reproduces every vertex path that is a polynomial of degree <= 2 in t
+ *   exactly; with two keyframes it equals the linear interpolation. Like every
+ *   interpolating cubic it may overshoot between keyframes that change
+ *   direction abruptly.
+ * Both modes reproduce the keyframes exactly at the keyframe times.
+ *
+ * Inputs: port 0 is repeatable; keyframe k is the (k+1)-th connection. Every
+ * keyframe must have keyframe 0's number of points and exactly its cells;
+ * otherwise vtkErrorMacro names the keyframe and the first difference, and
+ * the output is empty. The keyframes are requested without a time (they are
+ * static surfaces).
+ *
+ * Output: keyframe 0's cells with the interpolated points; point data
+ * interpolated with the same coefficients under vtkSurfaceAverage's rules
+ * (floating-point arrays present on every keyframe with the same name, type
+ * and components are interpolated; "Landmarks" is keyframe 0's; other integer
+ * arrays pass when identical on every keyframe; "SourceCellId",
+ * "SourceBarycentric", "SpherePosition" and the active normals are dropped).
+ * No cell data. Field data "InterpolationTime": the time actually
+ * interpolated (the requested time clamped into [t_0, t_{K-1}]). The output's
+ * vtkDataObject::DATA_TIME_STEP is the requested time.
+ *
+ * Errors: keyframe times that are not strictly increasing (the message names
+ * the first keyframe k with t_k <= t_{k-1}) or connectivity that differs:
+ * vtkErrorMacro and an empty output (TIME_STEPS is then not reported).
+ *
+ * @warning Linear in K times the number of points per update (only the two
+ * or four keyframes around the time contribute values); single-threaded.
+ *
+ * @sa vtkSurfaceMapFilter vtkSurfaceAverage vtkTemporalInterpolator
+ */
+#ifndef vtkSurfaceSequenceInterpolator_h
+#define vtkSurfaceSequenceInterpolator_h
+
+#include "SurfaceMapsFiltersModule.h" // for export macro
+#include "vtkPolyDataAlgorithm.h"
+
+#include <memory> // for std::unique_ptr
+
+class SURFACEMAPSFILTERS_EXPORT vtkSurfaceSequenceInterpolator : public vtkPolyDataAlgorithm
+{
+public:
+  static vtkSurfaceSequenceInterpolator* New();
+  vtkTypeMacro(vtkSurfaceSequenceInterpolator, vtkPolyDataAlgorithm);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  /** How the surface moves between keyframes. */
+  enum InterpolationModes
+  {
+    INTERPOLATE_LINEAR = 0, ///< piecewise linear in time
+    INTERPOLATE_SMOOTH = 1  ///< piecewise cubic Hermite, C1 in time
+  };
+
+  ///@{
+  /**
+   * INTERPOLATE_LINEAR or INTERPOLATE_SMOOTH (default).
+   */
+  vtkSetClampMacro(InterpolationMode, int, INTERPOLATE_LINEAR, INTERPOLATE_SMOOTH);
+  vtkGetMacro(InterpolationMode, int);
+  void SetInterpolationModeToLinear() { this->SetInterpolationMode(INTERPOLATE_LINEAR); }
+  void SetInterpolationModeToSmooth() { this->SetInterpolationMode(INTERPOLATE_SMOOTH); }
+  ///@}
+
+  ///@{
+  /**
+   * Time of keyframe k (default k for every keyframe without an explicit
+   * time). The times of the connected keyframes must be strictly increasing
+   * (checked at update time: an error otherwise). Times of indices beyond the
+   * number of keyframes are kept but unused. A negative index is ignored with
+   * an error.
+   */
+  void SetKeyframeTime(int k, double time);
+  double GetKeyframeTime(int k);
+  void RemoveAllKeyframeTimes();
+  ///@}
+
+  ///@{
+  /**
+   * Time steps reported per keyframe interval in TIME_STEPS: the keyframe
+   * times plus StepsPerInterval - 1 evenly spaced times inside each interval,
+   * so an animation that snaps to the time steps shows the motion. Default 1
+   * (only the keyframes), range [1, 10000]. Any time in the range can be
+   * requested regardless.
+   */
+  vtkSetClampMacro(StepsPerInterval, int, 1, 10000);
+  vtkGetMacro(StepsPerInterval, int);
+  ///@}
+
+  ///@{
+  /**
+   * Time produced when the request carries no UPDATE_TIME_STEP (a plain
+   * Update() before any time was requested downstream). Default 0 (keyframe
+   * 0 with the default times); clamped into the keyframe range at update time.
+   * Once a time was requested (UpdateTimeStep), the pipeline keeps requesting
+   * it, so later plain updates use that time.
+   */
+  vtkSetMacro(TimeValue, double);
+  vtkGetMacro(TimeValue, double);
+  ///@}
+
+protected:
+  vtkSurfaceSequenceInterpolator();
+  ~vtkSurfaceSequenceInterpolator() override;
+
+  int FillInputPortInformation(int port, vtkInformation* info) override;
+  int RequestInformation(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+  int RequestUpdateExtent(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+  int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+
+  int InterpolationMode = INTERPOLATE_SMOOTH;
+  int StepsPerInterval = 1;
+  double TimeValue = 0.0;
+
+private:
+  vtkSurfaceSequenceInterpolator(const vtkSurfaceSequenceInterpolator&) = delete;
+  void operator=(const vtkSurfaceSequenceInterpolator&) = delete;
+
+  struct vtkInternals;
+  std::unique_ptr<vtkInternals> Internals;
+};
+
+#endif

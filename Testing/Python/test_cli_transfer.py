@@ -1,0 +1,206 @@
+"""`surfacemap transfer` (and surfacemaps.transfer) on the files of `surfacemap map`."""
+
+import os
+import shutil
+
+import pytest
+
+from cli import data, run
+
+# Short schedules: the map of two 642-vertex meshes takes about a second.
+SHORT = ("--landmark-iterations", "10", "--coarse-iterations", "3", "--fine-iterations", "3")
+
+
+def read_vtp(path):
+    from vtkmodules.vtkIOXML import vtkXMLPolyDataReader
+    reader = vtkXMLPolyDataReader()
+    reader.SetFileName(str(path))
+    reader.Update()
+    return reader.GetOutput()
+
+
+def write_vtp(mesh, path):
+    from vtkmodules.vtkIOXML import vtkXMLPolyDataWriter
+    writer = vtkXMLPolyDataWriter()
+    writer.SetInputData(mesh)
+    writer.SetFileName(str(path))
+    assert writer.Write() == 1
+
+
+def with_coordinates(path, landmarks, out, corner_tcoords=False):
+    """The mesh at `path` with the point array "Coordinates" (its own points) and, if asked, a
+    synthetic per-corner "CornerTCoords" with a seam at every vertex (u = triangle id, v = corner)."""
+    from vtkmodules.vtkCommonCore import vtkDoubleArray
+    import surfacemaps
+    mesh = surfacemaps.read_mesh(path, landmarks=landmarks)
+    coordinates = vtkDoubleArray()
+    coordinates.SetName("Coordinates")
+    coordinates.SetNumberOfComponents(3)
+    for v in range(mesh.GetNumberOfPoints()):
+        coordinates.InsertNextTuple(mesh.GetPoint(v))
+    mesh.GetPointData().AddArray(coordinates)
+    if corner_tcoords:
+        tcoords = vtkDoubleArray()
+        tcoords.SetName("CornerTCoords")
+        tcoords.SetNumberOfComponents(6)
+        for t in range(mesh.GetNumberOfCells()):
+            tcoords.InsertNextTuple([t / 1000.0, 0.0, t / 1000.0, 0.5, t / 1000.0, 1.0])
+        mesh.GetCellData().AddArray(tcoords)
+    write_vtp(mesh, out)
+    return mesh
+
+
+@pytest.fixture(scope="module")
+def map_dir(tmp_path_factory):
+    """A map of ellipsoid (input 0, with Coordinates and CornerTCoords) and blob (input 1, with
+    Coordinates), both with landmarks."""
+    root = tmp_path_factory.mktemp("transfer")
+    with_coordinates(data("ellipsoid.obj"), data("ellipsoid.pinned"), root / "ellipsoid.vtp", corner_tcoords=True)
+    with_coordinates(data("blob.off"), data("blob.vts"), root / "blob.vtp")
+    out = root / "map"
+    r = run("map", root / "ellipsoid.vtp", root / "blob.vtp", *SHORT, "--output-dir", out)
+    assert r.returncode == 0, r.stderr
+    return out
+
+
+def surface_distance(mesh):
+    """Closest-point distance to `mesh`."""
+    from vtkmodules.vtkCommonCore import reference
+    from vtkmodules.vtkCommonDataModel import vtkGenericCell, vtkStaticCellLocator
+    locator = vtkStaticCellLocator()
+    locator.SetDataSet(mesh)
+    locator.BuildLocator()
+    cell = vtkGenericCell()
+
+    def distance(p):
+        closest = [0.0, 0.0, 0.0]
+        cell_id, sub_id, d2 = reference(0), reference(0), reference(0.0)
+        locator.FindClosestPoint(p, closest, cell, cell_id, sub_id, d2)
+        return d2.get() ** 0.5
+    return distance
+
+
+def test_map_writes_the_embeddings(map_dir):
+    for i, vertices in enumerate((642, 642)):
+        embedding = read_vtp(map_dir / f"embedding_{i}.vtp")
+        assert embedding.GetNumberOfPoints() == vertices
+        sphere = embedding.GetPointData().GetArray("SpherePosition")
+        assert sphere is not None and sphere.GetNumberOfComponents() == 3
+        assert all(abs(sum(c * c for c in sphere.GetTuple3(v)) - 1.0) < 1e-12 for v in range(vertices))
+        assert embedding.GetPointData().GetArray("Coordinates") is not None  # the input's own arrays
+    assert read_vtp(map_dir / "embedding_0.vtp").GetCellData().GetArray("CornerTCoords") is not None
+
+
+def test_coordinates_of_input_0_land_on_input_0(map_dir, tmp_path):
+    out = tmp_path / "on_blob.vtp"
+    r = run("transfer", map_dir, "--from", "0", "--to", "1", "-o", out)
+    assert r.returncode == 0, r.stderr
+    assert "input 0 -> input 1: 642 vertices of input 1 received" in r.stdout
+    result = read_vtp(out)
+    blob = read_vtp(map_dir / "embedding_1.vtp")
+    ellipsoid = read_vtp(map_dir / "embedding_0.vtp")
+    assert result.GetNumberOfPoints() == blob.GetNumberOfPoints()
+    assert [result.GetPoint(v) for v in (0, 100, 641)] == [blob.GetPoint(v) for v in (0, 100, 641)]
+    pd = result.GetPointData()
+    names = {pd.GetArrayName(a) for a in range(pd.GetNumberOfArrays())}
+    assert names == {"Coordinates", "SourceCellId", "SourceBarycentric", "TCoords"}
+    assert pd.GetTCoords().GetName() == "TCoords"
+    # Every blob vertex receives a point of the ellipsoid's surface ...
+    distance = surface_distance(ellipsoid)
+    diagonal = ellipsoid.GetLength()
+    coordinates = pd.GetArray("Coordinates")
+    assert max(distance(coordinates.GetTuple3(v)) for v in range(642)) < 1e-9 * diagonal
+    # ... the one SourceCellId and SourceBarycentric name, with the corner texture coordinates
+    # of that triangle (u is the triangle id / 1000 on all three corners, v the barycentric mix).
+    cells, weights, tcoords = pd.GetArray("SourceCellId"), pd.GetArray("SourceBarycentric"), pd.GetTCoords()
+    for v in range(642):
+        t, w = int(cells.GetTuple1(v)), weights.GetTuple3(v)
+        ids = ellipsoid.GetCell(t).GetPointIds()
+        corners = [ellipsoid.GetPoint(ids.GetId(k)) for k in range(3)]
+        expected = [sum(w[k] * corners[k][d] for k in range(3)) for d in range(3)]
+        assert max(abs(a - b) for a, b in zip(coordinates.GetTuple3(v), expected)) < 1e-12 * diagonal
+        assert tcoords.GetTuple2(v) == pytest.approx((t / 1000.0, 0.5 * w[1] + w[2]), abs=1e-12)
+
+
+def test_transfer_is_the_map_of_the_mapped_outputs(map_dir, tmp_path):
+    # mapped_1 is input 0 carried onto input 1 by the exact map: carrying input 1's coordinates
+    # back onto input 0's vertices gives the same points.
+    out = tmp_path / "on_ellipsoid.vtp"
+    r = run("transfer", map_dir, "--from", "1", "--to", "0", "--arrays", "Coordinates", "-o", out)
+    assert r.returncode == 0, r.stderr
+    result = read_vtp(out)
+    mapped = read_vtp(map_dir / "mapped_1.vtp")
+    pd = result.GetPointData()
+    assert {pd.GetArrayName(a) for a in range(pd.GetNumberOfArrays())} == {
+        "Coordinates", "SourceCellId", "SourceBarycentric"}
+    coordinates = pd.GetArray("Coordinates")
+    for v in range(result.GetNumberOfPoints()):
+        assert coordinates.GetTuple3(v) == pytest.approx(mapped.GetPoint(v), abs=1e-12)
+        assert pd.GetArray("SourceCellId").GetTuple1(v) == mapped.GetPointData().GetArray("SourceCellId").GetTuple1(v)
+
+
+def test_python_helper(map_dir):
+    import surfacemaps
+    result = surfacemaps.transfer(map_dir, source=0, target=1, arrays=["Coordinates"])
+    assert result.GetNumberOfPoints() == 642
+    assert result.GetPointData().GetArray("Coordinates") is not None
+    assert result.GetPointData().GetTCoords() is not None
+    with pytest.raises(surfacemaps.InputError, match="has no point array 'Nope'"):
+        surfacemaps.transfer(map_dir, 0, 1, arrays=["Nope"])
+    with pytest.raises(surfacemaps.InputError, match="has no common_7.vtp, embedding_7.vtp"):
+        surfacemaps.transfer(map_dir, 7, 1)
+    with pytest.raises(TypeError):
+        surfacemaps.transfer(map_dir, "0", 1)
+
+
+def test_missing_map_files_are_named(map_dir, tmp_path):
+    r = run("transfer", map_dir, "--from", "0", "--to", "5", "-o", tmp_path / "out.vtp")
+    assert r.returncode == 2
+    assert "has no embedding_5.vtp, common_5.vtp" in r.stderr
+    copy = tmp_path / "copy"
+    shutil.copytree(map_dir, copy)
+    (copy / "embedding_0.vtp").unlink()
+    r = run("transfer", copy, "--from", "0", "--to", "1", "-o", tmp_path / "out.vtp")
+    assert r.returncode == 2
+    assert "has no embedding_0.vtp" in r.stderr and "common_" not in r.stderr
+    r = run("transfer", tmp_path / "nowhere", "--from", "0", "--to", "1", "-o", tmp_path / "out.vtp")
+    assert r.returncode == 2 and "is not a directory" in r.stderr
+    assert not (tmp_path / "out.vtp").exists()
+
+
+def test_files_that_do_not_fit_are_bad_input(map_dir, tmp_path):
+    # common_1 replaced by input 1 itself: not the same triangulation as common_0.
+    copy = tmp_path / "copy"
+    shutil.copytree(map_dir, copy)
+    shutil.copy(copy / "embedding_1.vtp", copy / "common_1.vtp")
+    r = run("transfer", copy, "--from", "1", "--to", "0", "-o", tmp_path / "out.vtp")
+    assert r.returncode == 2
+    assert "common_1.vtp" in r.stderr and "do not hold the same common triangulation" in r.stderr
+    assert not (tmp_path / "out.vtp").exists()
+
+
+def test_unknown_arrays_and_usage(map_dir, tmp_path):
+    out = tmp_path / "out.vtp"
+    r = run("transfer", map_dir, "--from", "0", "--to", "1", "--arrays", "Coordinates", "Nope", "-o", out)
+    assert r.returncode == 2
+    assert "has no point array 'Nope'" in r.stderr and "Coordinates" in r.stderr
+    assert run("transfer").returncode == 2
+    r = run("transfer", map_dir, "--to", "1", "-o", out)
+    assert r.returncode == 2 and "--from I --to J" in r.stderr
+    r = run("transfer", map_dir, "--from", "x", "--to", "1", "-o", out)
+    assert r.returncode == 2 and "--from needs an input index" in r.stderr
+    r = run("transfer", map_dir, "--from", "0", "--to", "1")
+    assert r.returncode == 2 and "no output file" in r.stderr
+    r = run("transfer", map_dir, "--from", "0", "--to", "1", "--arrays", "-o", out)
+    assert r.returncode == 2 and "--arrays needs at least one array name" in r.stderr
+    r = run("transfer", map_dir, "--from", "0", "--to", "1", "--bogus", "-o", out)
+    assert r.returncode == 2 and "unknown option '--bogus'" in r.stderr
+    blocker = tmp_path / "a_file"
+    blocker.write_text("not a directory")
+    r = run("transfer", map_dir, "--from", "0", "--to", "1", "-o", blocker / "out.vtp")
+    assert r.returncode == 2 and "cannot write" in r.stderr
+    assert not out.exists()
+    r = run("transfer", "--help")
+    assert r.returncode == 0 and "embedding_I.vtp" in r.stdout and "--arrays" in r.stdout
+    assert "transfer" in run("--help").stdout
+    assert not [p for p in os.listdir(tmp_path) if ".tmp." in p]
