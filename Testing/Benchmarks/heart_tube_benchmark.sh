@@ -9,7 +9,9 @@
 #   bash Testing/Benchmarks/heart_tube_benchmark.sh [OUTPUT] [-- EXAMPLE OPTIONS]
 #
 # e.g. `bash Testing/Benchmarks/heart_tube_benchmark.sh /tmp/ht -- --quick` for
-# a check in seconds. Default OUTPUT: build/benchmarks/heart_tube.
+# a check in seconds. Default OUTPUT: build/benchmarks/heart_tube. A run with
+# the default series (no EXAMPLE OPTIONS) also refreshes the README's pictures
+# Testing/Benchmarks/images/heart_tube_{averages,frames}.png.
 # Environment:
 #   SURFACEMAPS_BUILD_DIR   the build directory (default build)
 #   SURFACEMAPS_MPI_RANKS   ranks of the MPI run (default 2; 0 skips it)
@@ -44,6 +46,14 @@ if [ "$ranks" -gt 0 ]; then
   OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMP_NUM_THREADS=1 \
     "${display[@]}" mpirun --oversubscribe -n "$ranks" "$python" "$example" --output-dir "$out/mpi" \
     "${pictures[@]}" "$@"
+fi
+
+if [ $# -eq 0 ]; then
+  for picture in averages frames; do
+    if [ -f "$out/serial/pictures/$picture.png" ]; then
+      cp "$out/serial/pictures/$picture.png" "Testing/Benchmarks/images/heart_tube_$picture.png"
+    fi
+  done
 fi
 
 "$python" - "$out" << 'EOF'
