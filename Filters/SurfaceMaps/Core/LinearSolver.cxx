@@ -5,6 +5,7 @@
 #include <Eigen/CholmodSupport>
 
 #include <dlfcn.h>
+#include <omp.h>
 
 #include <cmath>
 #include <sstream>
@@ -22,10 +23,15 @@ namespace
 // once) share one count of active guards, or one of them would restore the
 // old count while another factorises, with results that change from run to
 // run. Looked up at run time: with another BLAS there is nothing to do.
+// OpenBLAS' OpenMP build sets the calling thread's OpenMP thread count in
+// openblas_set_num_threads, so each guard also restores the count its own
+// thread had (otherwise omp_set_num_threads(1) or a per-rank thread count
+// would be overridden by OpenBLAS' count after the first solve).
 class SingleThreadedBlas
 {
 public:
   SingleThreadedBlas()
+    : OpenMPThreads(omp_get_max_threads())
   {
     std::lock_guard<std::mutex> lock(mutex());
     State& s = state();
@@ -49,9 +55,11 @@ public:
     {
       s.set(s.previous);
     }
+    omp_set_num_threads(this->OpenMPThreads);
   }
 
 private:
+  const int OpenMPThreads;
   struct State
   {
     int active = 0;

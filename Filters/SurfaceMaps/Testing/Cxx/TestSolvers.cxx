@@ -2,6 +2,7 @@
 #include "LinearSolver.h"
 
 #include <gtest/gtest.h>
+#include <omp.h>
 
 #include <cmath>
 #include <vector>
@@ -68,6 +69,25 @@ TEST(LinearSolver, IndefiniteMatrixIsRegularisedAndLogged)
   }
   ASSERT_FALSE(messages.empty());
   EXPECT_NE(messages[0].find("Cholesky factorisation failed"), std::string::npos);
+}
+
+// The solver runs BLAS single-threaded during factorisations; with OpenBLAS'
+// OpenMP build that changes the calling thread's OpenMP thread count, which
+// must be the caller's again afterwards (a program that asked for 1 thread,
+// or more threads than cores, keeps its choice).
+TEST(LinearSolver, KeepsTheCallersOpenMPThreadCount)
+{
+  const int before = omp_get_max_threads();
+  LinearSolver solver;
+  const Eigen::SparseMatrix<double> H = laplacian(300, 0.1);
+  Eigen::VectorXd x;
+  for (int threads : { 1, omp_get_num_procs() + 1 })
+  {
+    omp_set_num_threads(threads);
+    ASSERT_TRUE(solver.solve(H, Eigen::VectorXd::Ones(300), x, true).success);
+    EXPECT_EQ(omp_get_max_threads(), threads);
+  }
+  omp_set_num_threads(before);
 }
 
 TEST(LineSearch, ArmijoBacktracking)
