@@ -8,6 +8,7 @@
 #include "MeshValidation.h"
 #include "SphereEmbedding.h"
 #include "SphericalTriangulation.h"
+#include "ThreadCount.h"
 #include "SurfaceMap.h"
 
 #include "vtkCellArray.h"
@@ -92,7 +93,8 @@ std::string inputName(vtkPolyData* input, int index)
   return name == plain ? plain : plain + " (" + name + ")";
 }
 
-// Every setting that changes the map (all but OutputMode and MappedInput), to
+// Every setting that changes the map (all but OutputMode, MappedInput and
+// NumberOfThreads, which change only what is shown or how fast), to
 // decide whether the kept map can be reused.
 std::vector<double> mapSettings(vtkSurfaceMapFilter* f)
 {
@@ -684,6 +686,7 @@ int vtkSurfaceMapFilter::RequestData(vtkInformation*,
     return 0;
   }
 
+  const surfacemaps::ScopedThreadCount threads(this->NumberOfThreads);
   try
   {
     if (static_cast<int>(outputs.size()) != n)
@@ -920,4 +923,5 @@ void vtkSurfaceMapFilter::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "DecrementTolerance: " << this->DecrementTolerance << "\n";
   os << indent << "OutputMode: " << this->OutputMode << "\n";
   os << indent << "MappedInput: " << this->MappedInput << "\n";
+  os << indent << "NumberOfThreads: " << this->NumberOfThreads << "\n";
 }

@@ -355,6 +355,19 @@ public:
 
   ///@{
   /**
+   * OpenMP threads for this filter's updates (sphere embeddings and map).
+   * Default 0: OpenMP's default (OMP_NUM_THREADS, else all cores). The map
+   * does not depend on it (deterministic for any thread count), only the
+   * time does; e.g. an MPI rank that started with one thread can use the
+   * cores of ranks that have finished. Changing it does not recompute the
+   * map. Range [0, 1024].
+   */
+  vtkSetClampMacro(NumberOfThreads, int, 0, 1024);
+  vtkGetMacro(NumberOfThreads, int);
+  ///@}
+
+  ///@{
+  /**
    * COMMON_TRIANGULATION (default): output i is T lifted onto input i.
    * MAPPED_INPUT: output j is input MappedInput mapped onto input j
    * (SetOutputModeToMappedFirstInput() also sets MappedInput to 0).
@@ -430,6 +443,7 @@ protected:
   double DecrementTolerance = 1e-4;
   int OutputMode = COMMON_TRIANGULATION;
   int MappedInput = 0;
+  int NumberOfThreads = 0;
 
 private:
   vtkSurfaceMapFilter(const vtkSurfaceMapFilter&) = delete;

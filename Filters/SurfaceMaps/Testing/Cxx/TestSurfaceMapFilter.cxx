@@ -6,6 +6,7 @@
 
 #include "Primitives.h"
 #include "SphericalTriangulation.h"
+#include "ThreadCount.h"
 
 #include "vtkAlgorithmOutput.h"
 #include "vtkCallbackCommand.h"
@@ -447,6 +448,45 @@ TEST(SurfaceMapFilter, MappedFirstInputReusesTheMap)
   EXPECT_TRUE(events.Errors.empty());
 }
 
+// NumberOfThreads changes how fast, not what: the same map bit for bit with
+// one and two threads, and the caller's OpenMP thread count is its own again
+// after the update.
+TEST(SurfaceMapFilter, NumberOfThreadsGivesTheSameMapAndIsRestored)
+{
+  vtkSmartPointer<vtkPolyData> a = ellipsoid(2, 1.0, 0.8, 0.6);
+  vtkSmartPointer<vtkPolyData> b = ellipsoid(2, 1.0, 1.0, 0.5, 0.2);
+  const int callers = surfacemaps::ScopedThreadCount::current() + 2;
+  const surfacemaps::ScopedThreadCount caller(callers);
+  std::vector<std::vector<double>> points;
+  for (int threads : { 1, 2 })
+  {
+    SCOPED_TRACE("threads " + std::to_string(threads));
+    vtkNew<vtkSurfaceMapFilter> filter;
+    useShortSchedule(filter);
+    filter->SetNumberOfThreads(threads);
+    Events events;
+    watch(filter, events);
+    filter->AddInputData(a);
+    filter->AddInputData(b);
+    filter->Update();
+    ASSERT_TRUE(events.Errors.empty()) << events.Errors.front();
+    EXPECT_EQ(surfacemaps::ScopedThreadCount::current(), callers);
+    std::vector<double> xyz;
+    for (int i = 0; i < 2; ++i)
+    {
+      vtkPolyData* out = filter->GetOutput(i);
+      ASSERT_GT(out->GetNumberOfPoints(), 0);
+      for (vtkIdType v = 0; v < out->GetNumberOfPoints(); ++v)
+      {
+        const double* p = out->GetPoint(v);
+        xyz.insert(xyz.end(), p, p + 3);
+      }
+    }
+    points.push_back(xyz);
+  }
+  EXPECT_EQ(points[0], points[1]);
+}
+
 TEST(SurfaceMapFilter, GivenSpherePositionIsUsed)
 {
   vtkNew<vtkSphereEmbeddingFilter> embedding;
@@ -629,6 +669,7 @@ TEST(SurfaceMapFilter, SettingsDefaultsAndPrintSelf)
   EXPECT_EQ(filter->GetOutputMode(), vtkSurfaceMapFilter::COMMON_TRIANGULATION);
   EXPECT_EQ(filter->GetMaxError(), 0.0);
   EXPECT_EQ(filter->GetBoundIterations(), 20);
+  EXPECT_EQ(filter->GetNumberOfThreads(), 0);
   filter->SetPairModeToCycle();
   EXPECT_EQ(filter->GetPairMode(), vtkSurfaceMapFilter::PAIRS_CYCLE);
   filter->SetPairMode(17);
@@ -643,6 +684,7 @@ TEST(SurfaceMapFilter, SettingsDefaultsAndPrintSelf)
          "PairMode: 3",
          "KeepLandmarks: 1",
          "OutputMode: 0",
+         "NumberOfThreads: 0",
          "SizingMode: 0",
          "ApproximationSamples: 50000" })
   {
