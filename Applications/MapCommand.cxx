@@ -30,7 +30,7 @@ namespace surfacemap
 
 const char* const MapHelp =
   "usage: surfacemap map A B [C ...] --output-dir DIR [--landmarks FA FB ...]\n"
-  "                      [--target-error E] [--coarse-error E]\n"
+  "                      [--target-error E] [--coarse-error E] [--max-error F]\n"
   "                      [--pairs star|sequence|cycle|all]\n"
   "                      [--keep-landmarks | --release-landmarks]\n"
   "                      [--landmark-iterations N] [--coarse-iterations N]\n"
@@ -65,6 +65,13 @@ const char* const MapHelp =
   "  --target-error E         approximation error of the fine phase, unit-area\n"
   "                           units (default 1e-3)\n"
   "  --coarse-error E         the same for the coarse phase (default 1e-2)\n"
+  "  --max-error F            error-bounded remeshing: after the fine phase,\n"
+  "                           refine T until every input vertex is within F\n"
+  "                           times its input's bounding-box diagonal of its\n"
+  "                           base point on T, then optimise with that bound as\n"
+  "                           a barrier; certified on every input vertex, and\n"
+  "                           a bound that cannot be met is exit code 3\n"
+  "                           (default 0: off; 0 < F <= 1)\n"
   "  --pairs MODE             pairs whose distortion is minimised with 3 or more\n"
   "                           meshes: star (0-i, default), sequence (i-(i+1)),\n"
   "                           cycle, all\n"
@@ -189,6 +196,7 @@ int runMap(const std::vector<std::string>& args)
   {
     const std::string& a = args[i];
     const bool takesValue = a == "--output-dir" || a == "--target-error" || a == "--coarse-error" ||
+      a == "--max-error" ||
       a == "--pairs" || a == "--landmark-iterations" || a == "--coarse-iterations" ||
       a == "--fine-iterations";
     if (takesValue && i + 1 >= args.size())
@@ -222,6 +230,15 @@ int runMap(const std::vector<std::string>& args)
       {
         map->SetCoarseError(e);
       }
+    }
+    else if (a == "--max-error")
+    {
+      const double f = parseNumber(a, args[++i]);
+      if (!(f > 0.0 && f <= 1.0))
+      {
+        throw UsageError{ "--max-error must be in (0, 1] (a fraction of the bounding-box diagonal)" };
+      }
+      map->SetMaxError(f);
     }
     else if (a == "--pairs")
     {
@@ -412,6 +429,7 @@ int runMap(const std::vector<std::string>& args)
        << ", \"map\": " << jsonNumber(field(first, "MapSeconds")) << " },\n";
   json << "  \"settings\": { \"target_error\": " << jsonNumber(map->GetTargetError())
        << ", \"coarse_error\": " << jsonNumber(map->GetCoarseError())
+       << ", \"max_error\": " << jsonNumber(map->GetMaxError())
        << ", \"pairs\": " << jsonString(pairs)
        << ", \"keep_landmarks\": " << (map->GetKeepLandmarks() ? "true" : "false")
        << ", \"landmark_iterations\": " << map->GetLandmarkIterations()
@@ -457,6 +475,26 @@ int runMap(const std::vector<std::string>& args)
   if (phaseNames && phaseNames->GetNumberOfValues() > 0 && phaseNames->GetValue(0) == "landmarks")
   {
     std::printf("  landmark error %.3g (input units)\n", field(first, "LandmarkError"));
+  }
+  // The error bound, certified on every input vertex (input units).
+  if (map->GetMaxError() > 0.0)
+  {
+    json << "  \"error_bound\": [";
+    for (int i = 0; i < n; ++i)
+    {
+      const double distance = field(map->GetOutput(i), "BaseDistance");
+      const double bound = field(map->GetOutput(i), "ErrorBound");
+      json << (i ? ", " : "") << "{ \"input\": " << i
+           << ", \"base_distance\": " << jsonNumber(distance)
+           << ", \"bound\": " << jsonNumber(bound) << " }";
+      std::printf("  error bound on input %d: every vertex within %.4g of its base point on T "
+                  "(bound %.4g = %g x bbox diagonal)\n",
+        i,
+        distance,
+        bound,
+        map->GetMaxError());
+    }
+    json << "],\n";
   }
 
   // Outputs and metrics: the approximating map while the outputs are T...

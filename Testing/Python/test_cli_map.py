@@ -56,6 +56,35 @@ def test_map_writes_common_and_mapped_meshes_and_a_report(tmp_path):
     assert run("check", out / "common_1.vtp").returncode == 0
 
 
+def test_max_error_bounds_every_input_vertex(tmp_path):
+    out = tmp_path / "bounded"
+    r = run("map", data("ellipsoid.obj"), data("blob.off"), "--landmarks", data("ellipsoid.pinned"),
+            data("blob.vts"), *SHORT, "--target-error", "1e-2", "--max-error", "2e-3", "--output-dir", out)
+    assert r.returncode == 0, r.stderr
+    report = json.loads((out / "report.json").read_text())
+    assert report["settings"]["max_error"] == 2e-3
+    assert [p["name"] for p in report["phases"]][-1] == "bound"
+    assert len(report["error_bound"]) == 2
+    for entry, name in zip(report["error_bound"], ("ellipsoid.obj", "blob.off")):
+        mesh = surfacemaps_read(data(name))
+        assert abs(entry["bound"] - 2e-3 * mesh.GetLength()) < 1e-9 * entry["bound"]  # JSON keeps 10 digits
+        assert 0.0 < entry["base_distance"] <= entry["bound"]
+    assert r.stdout.count("error bound on input") == 2
+    # The two-sided sampled distance is reported beside it.
+    assert report["approximating_map"][0]["TwoSidedDistanceTarget"] > 0.0
+
+
+def test_max_error_must_be_a_fraction(tmp_path):
+    for value in ("0", "1.5", "x"):
+        r = run("map", data("ellipsoid.obj"), "--max-error", value, "--output-dir", tmp_path / "o")
+        assert r.returncode == 2 and "--max-error" in r.stderr, (value, r.stderr)
+
+
+def surfacemaps_read(path):
+    import surfacemaps
+    return surfacemaps.read_mesh(path)
+
+
 def test_report_records_absolute_input_paths(tmp_path):
     # Relative names, run from Data/: `surfacemap evaluate DIR` must find the inputs from anywhere.
     out = tmp_path / "out"

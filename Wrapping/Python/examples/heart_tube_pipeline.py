@@ -492,6 +492,25 @@ def main(argv=None):
     except surfacemaps.MapError as e:
         print(f"heart_tube_pipeline: no certified map: {e}", file=sys.stderr)
         return 3
+    finally:
+        finish(comm)
+
+
+def finish(comm):
+    """Ranks other than 0 wait here, asleep, until rank 0 is done.
+
+    A rank that went straight on to MPI_Finalize would busy-poll there and
+    take a core away from rank 0's final map.
+    """
+    if comm.size <= 1:
+        return
+    # Blocking and nonblocking collectives do not match: Ibarrier on every rank.
+    request = comm.Ibarrier()
+    if comm.rank == 0:
+        request.Wait()
+        return
+    while not request.Test():
+        time.sleep(0.05)
 
 
 if __name__ == "__main__":
