@@ -196,9 +196,8 @@ int runMap(const std::vector<std::string>& args)
   {
     const std::string& a = args[i];
     const bool takesValue = a == "--output-dir" || a == "--target-error" || a == "--coarse-error" ||
-      a == "--max-error" ||
-      a == "--pairs" || a == "--landmark-iterations" || a == "--coarse-iterations" ||
-      a == "--fine-iterations";
+      a == "--max-error" || a == "--pairs" || a == "--landmark-iterations" ||
+      a == "--coarse-iterations" || a == "--fine-iterations";
     if (takesValue && i + 1 >= args.size())
     {
       throw UsageError{ a + " needs a value" };
@@ -236,7 +235,9 @@ int runMap(const std::vector<std::string>& args)
       const double f = parseNumber(a, args[++i]);
       if (!(f > 0.0 && f <= 1.0))
       {
-        throw UsageError{ "--max-error must be in (0, 1] (a fraction of the bounding-box diagonal)" };
+        throw UsageError{
+          "--max-error must be in (0, 1] (a fraction of the bounding-box diagonal)"
+        };
       }
       map->SetMaxError(f);
     }

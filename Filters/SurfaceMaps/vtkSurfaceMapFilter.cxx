@@ -8,8 +8,8 @@
 #include "MeshValidation.h"
 #include "SphereEmbedding.h"
 #include "SphericalTriangulation.h"
-#include "ThreadCount.h"
 #include "SurfaceMap.h"
+#include "ThreadCount.h"
 
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
@@ -49,7 +49,7 @@ struct vtkSurfaceMapFilter::vtkInternals
   bool HasMap = false;
   std::vector<vtkWeakPointer<vtkPolyData>> Inputs;
   std::vector<vtkMTimeType> InputTimes;
-  std::vector<double> Settings;
+  std::string Settings;
   /// The inputs as the engine saw them (meshes, embeddings f_i, landmarks).
   std::vector<surfacemaps::MapInput> MapInputs;
   std::vector<double> EmbeddingSeconds;
@@ -59,7 +59,19 @@ struct vtkSurfaceMapFilter::vtkInternals
 
   void Clear() { *this = vtkInternals(); }
 
-  bool Matches(const std::vector<vtkPolyData*>& inputs, const std::vector<double>& settings) const
+  // Every setting that changes the map (all but OutputMode, MappedInput and
+  // NumberOfThreads, which change only what is shown or how fast), in full
+  // precision: the key that decides whether the kept map can be reused. One
+  // list with PrintSelf, so a new setting cannot be printed but forgotten here.
+  static std::string SettingsKey(vtkSurfaceMapFilter* filter)
+  {
+    std::ostringstream key;
+    key.precision(17);
+    filter->PrintSettings(key, vtkIndent(), false);
+    return key.str();
+  }
+
+  bool Matches(const std::vector<vtkPolyData*>& inputs, const std::string& settings) const
   {
     if (!this->HasMap || inputs.size() != this->Inputs.size() || settings != this->Settings)
     {
@@ -91,36 +103,6 @@ std::string inputName(vtkPolyData* input, int index)
   const std::string plain = "input " + std::to_string(index);
   const std::string name = vtkSurfaceMapsConversion::InputName(input, index);
   return name == plain ? plain : plain + " (" + name + ")";
-}
-
-// Every setting that changes the map (all but OutputMode, MappedInput and
-// NumberOfThreads, which change only what is shown or how fast), to
-// decide whether the kept map can be reused.
-std::vector<double> mapSettings(vtkSurfaceMapFilter* f)
-{
-  return { f->GetTargetError(),
-    f->GetCoarseError(),
-    static_cast<double>(f->GetLandmarkIterations()),
-    static_cast<double>(f->GetCoarseIterations()),
-    static_cast<double>(f->GetFineIterations()),
-    f->GetLandmarkBarrierWeight(),
-    f->GetCoarseBarrierWeight(),
-    f->GetFineBarrierWeight(),
-    f->GetMeshWeight(),
-    f->GetMapWeight(),
-    f->GetApproximationWeight(),
-    f->GetLandmarkWeight(),
-    f->GetLandmarkTolerance(),
-    f->GetRelaxLandmarkPhase() ? 1.0 : 0.0,
-    f->GetKeepLandmarks() ? 1.0 : 0.0,
-    static_cast<double>(f->GetPairMode()),
-    f->GetMaxError(),
-    static_cast<double>(f->GetBoundIterations()),
-    static_cast<double>(f->GetApproximationSamples()),
-    static_cast<double>(f->GetSizingMode()),
-    f->GetMinEdgeLength(),
-    f->GetMaxEdgeLength(),
-    f->GetDecrementTolerance() };
 }
 
 surfacemaps::SurfaceMapOptions mapOptions(vtkSurfaceMapFilter* f)
@@ -694,7 +676,7 @@ int vtkSurfaceMapFilter::RequestData(vtkInformation*,
       throw std::logic_error(
         std::to_string(n) + " inputs but " + std::to_string(outputs.size()) + " output ports");
     }
-    const std::vector<double> settings = mapSettings(this);
+    const std::string settings = vtkInternals::SettingsKey(this);
     if (!internals.Matches(inputs, settings))
     {
       internals.Clear();
@@ -898,6 +880,11 @@ int vtkSurfaceMapFilter::RequestData(vtkInformation*,
 void vtkSurfaceMapFilter::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
+  this->PrintSettings(os, indent, true);
+}
+
+void vtkSurfaceMapFilter::PrintSettings(ostream& os, vtkIndent indent, bool all)
+{
   os << indent << "TargetError: " << this->TargetError << "\n";
   os << indent << "CoarseError: " << this->CoarseError << "\n";
   os << indent << "LandmarkIterations: " << this->LandmarkIterations << "\n";
@@ -921,7 +908,10 @@ void vtkSurfaceMapFilter::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "MinEdgeLength: " << this->MinEdgeLength << "\n";
   os << indent << "MaxEdgeLength: " << this->MaxEdgeLength << "\n";
   os << indent << "DecrementTolerance: " << this->DecrementTolerance << "\n";
-  os << indent << "OutputMode: " << this->OutputMode << "\n";
-  os << indent << "MappedInput: " << this->MappedInput << "\n";
-  os << indent << "NumberOfThreads: " << this->NumberOfThreads << "\n";
+  if (all)
+  {
+    os << indent << "OutputMode: " << this->OutputMode << "\n";
+    os << indent << "MappedInput: " << this->MappedInput << "\n";
+    os << indent << "NumberOfThreads: " << this->NumberOfThreads << "\n";
+  }
 }

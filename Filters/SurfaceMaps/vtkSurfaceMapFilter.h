@@ -446,6 +446,10 @@ protected:
   int NumberOfThreads = 0;
 
 private:
+  /// Prints the settings (with `all` false only those that change the map,
+  /// the key of the kept map).
+  void PrintSettings(ostream& os, vtkIndent indent, bool all);
+
   vtkSurfaceMapFilter(const vtkSurfaceMapFilter&) = delete;
   void operator=(const vtkSurfaceMapFilter&) = delete;
 

@@ -446,6 +446,17 @@ TEST(SurfaceMapFilter, MappedFirstInputReusesTheMap)
   filter->Update();
   EXPECT_TRUE(computedTheMap(events));
   EXPECT_TRUE(events.Errors.empty());
+
+  // The thread count changes only the time: reused. A change in the ninth
+  // digit of a setting changes the map: recomputed.
+  events.Texts.clear();
+  filter->SetNumberOfThreads(1);
+  filter->Update();
+  EXPECT_FALSE(computedTheMap(events));
+  filter->SetTargetError(filter->GetTargetError() * (1.0 + 1e-9));
+  filter->Update();
+  EXPECT_TRUE(computedTheMap(events));
+  EXPECT_TRUE(events.Errors.empty());
 }
 
 // NumberOfThreads changes how fast, not what: the same map bit for bit with
