@@ -1,3 +1,4 @@
+#include "FilterTestData.h"
 #include "vtkSphereEmbeddingFilter.h"
 #include "vtkSurfaceMapEvaluation.h"
 #include "vtkSurfaceMapFilter.h"
@@ -34,16 +35,11 @@
 
 namespace
 {
-const std::string Data = SURFACEMAPS_DATA_DIR;
+using filtertest::connectivity;
+using filtertest::read;
+using filtertest::triangles;
 
-vtkSmartPointer<vtkPolyData> read(const std::string& file)
-{
-  vtkNew<vtkSurfaceMeshReader> reader;
-  reader->SetFileName((Data + "/" + file).c_str());
-  reader->Update();
-  vtkSmartPointer<vtkPolyData> output = reader->GetOutput();
-  return output;
-}
+const std::string Data = SURFACEMAPS_DATA_DIR;
 
 // An icosphere scaled to an ellipsoid with semi-axes a, b, c, with a smooth
 // radial bump of the given height around +z.
@@ -134,29 +130,6 @@ double fieldValue(vtkPolyData* data, const char* name, vtkIdType k = 0)
 {
   vtkDataArray* a = data->GetFieldData()->GetArray(name);
   return a && k < a->GetNumberOfTuples() ? a->GetTuple1(k) : std::nan("");
-}
-
-std::vector<vtkIdType> connectivity(vtkPolyData* data)
-{
-  std::vector<vtkIdType> ids;
-  vtkDataArray* c = data->GetPolys()->GetConnectivityArray();
-  for (vtkIdType k = 0; k < c->GetNumberOfTuples(); ++k)
-  {
-    ids.push_back(static_cast<vtkIdType>(c->GetTuple1(k)));
-  }
-  return ids;
-}
-
-std::vector<std::array<int, 3>> triangles(vtkPolyData* data)
-{
-  const std::vector<vtkIdType> ids = connectivity(data);
-  std::vector<std::array<int, 3>> result;
-  for (std::size_t k = 0; k + 2 < ids.size(); k += 3)
-  {
-    result.push_back(
-      { static_cast<int>(ids[k]), static_cast<int>(ids[k + 1]), static_cast<int>(ids[k + 2]) });
-  }
-  return result;
 }
 
 // Every output point equals the barycentric combination its SourceCellId and

@@ -1,5 +1,6 @@
 // Data carried between the inputs of a map: vtkSurfaceMapFilter's
 // MAPPED_INPUT and INPUT_EMBEDDINGS outputs, and vtkSurfaceMapTransfer on them.
+#include "FilterTestData.h"
 #include "vtkSurfaceMapFilter.h"
 #include "vtkSurfaceMapTransfer.h"
 #include "vtkSurfaceMapsConversion.h"
@@ -34,20 +35,9 @@
 
 namespace
 {
-const std::string Data = SURFACEMAPS_DATA_DIR;
-
-vtkSmartPointer<vtkPolyData> read(const std::string& file, const std::string& landmarks = "")
-{
-  vtkNew<vtkSurfaceMeshReader> reader;
-  reader->SetFileName((Data + "/" + file).c_str());
-  if (!landmarks.empty())
-  {
-    reader->SetLandmarkFileName((Data + "/" + landmarks).c_str());
-  }
-  reader->Update();
-  vtkSmartPointer<vtkPolyData> output = reader->GetOutput();
-  return output;
-}
+using filtertest::connectivity;
+using filtertest::read;
+using filtertest::triangles;
 
 // An icosphere scaled to an ellipsoid, with a smooth bump around +z.
 vtkSmartPointer<vtkPolyData> ellipsoid(int level, double a, double b, double c, double bump = 0.0)
@@ -119,29 +109,6 @@ vtkSmartPointer<vtkPolyData> copyOf(vtkPolyData* data)
   auto copy = vtkSmartPointer<vtkPolyData>::New();
   copy->ShallowCopy(data);
   return copy;
-}
-
-std::vector<vtkIdType> connectivity(vtkPolyData* data)
-{
-  std::vector<vtkIdType> ids;
-  vtkDataArray* c = data->GetPolys()->GetConnectivityArray();
-  for (vtkIdType k = 0; k < c->GetNumberOfTuples(); ++k)
-  {
-    ids.push_back(static_cast<vtkIdType>(c->GetTuple1(k)));
-  }
-  return ids;
-}
-
-std::vector<std::array<int, 3>> triangles(vtkPolyData* data)
-{
-  const std::vector<vtkIdType> ids = connectivity(data);
-  std::vector<std::array<int, 3>> result;
-  for (std::size_t k = 0; k + 2 < ids.size(); k += 3)
-  {
-    result.push_back(
-      { static_cast<int>(ids[k]), static_cast<int>(ids[k + 1]), static_cast<int>(ids[k + 2]) });
-  }
-  return result;
 }
 
 std::vector<Eigen::Vector3d> vectors(vtkPolyData* data, const char* name)

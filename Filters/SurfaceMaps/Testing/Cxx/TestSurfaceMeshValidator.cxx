@@ -1,3 +1,4 @@
+#include "FilterTestData.h"
 #include "vtkSurfaceMeshReader.h"
 #include "vtkSurfaceMeshValidator.h"
 
@@ -12,20 +13,10 @@
 
 namespace
 {
+using filtertest::read;
+
 const std::string Data = SURFACEMAPS_DATA_DIR;
 
-vtkSmartPointer<vtkPolyData> read(const std::string& file, const std::string& landmarks = "")
-{
-  vtkNew<vtkSurfaceMeshReader> reader;
-  reader->SetFileName((Data + "/" + file).c_str());
-  if (!landmarks.empty())
-  {
-    reader->SetLandmarkFileName((Data + "/" + landmarks).c_str());
-  }
-  reader->Update();
-  vtkSmartPointer<vtkPolyData> output = reader->GetOutput();
-  return output;
-}
 } // namespace
 
 TEST(SurfaceMeshValidator, OneRowPerInput)
