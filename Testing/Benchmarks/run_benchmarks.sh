@@ -96,7 +96,11 @@ map_case() {
   echo "$(date -u '+%Y-%m-%d %H:%M UTC'), $(nproc) cores, $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | xargs), commit $(git rev-parse --short HEAD 2>/dev/null || echo unknown), cases: $cases"
   if wanted engine; then
     echo
-    "$bin/BenchmarkEngine" --repeat 10
+    "$bin/BenchmarkEngine" --repeat 40
+    echo
+    echo "With nested-dissection ordering (\`--nested-dissection\`):"
+    echo
+    "$bin/BenchmarkEngine" --repeat 40 --nested-dissection | grep -E "^\| (full|of which)"
   fi
   if wanted embedding; then
     echo
