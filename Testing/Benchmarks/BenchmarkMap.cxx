@@ -88,6 +88,14 @@ int main(int argc, char* argv[])
     {
       options.fine.barrierWeight = std::atof(value());
     }
+    else if (arg == "--coarse-barrier")
+    {
+      options.coarse.barrierWeight = std::atof(value());
+    }
+    else if (arg == "--map-weight")
+    {
+      options.mapWeight = std::atof(value());
+    }
     else if (arg == "--max-error")
     {
       options.maxError = std::atof(value());
@@ -114,7 +122,8 @@ int main(int argc, char* argv[])
     std::fprintf(stderr,
       "usage: BenchmarkMap A B [C...] [--landmarks FA FB ...] "
       "[--landmark-iterations N] [--coarse N] [--fine N] [--target-error E] "
-      "[-v]\n");
+      "[--fine-barrier W] [--coarse-barrier W] [--map-weight W] [--max-error F] "
+      "[--max-point-step S] [--no-landmark-relaxation] [-v]\n");
     return 2;
   }
   if (verbose)
