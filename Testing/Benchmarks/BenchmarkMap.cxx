@@ -88,6 +88,10 @@ int main(int argc, char* argv[])
     {
       options.fine.barrierWeight = std::atof(value());
     }
+    else if (arg == "--coarse-error")
+    {
+      options.coarse.targetError = std::atof(value());
+    }
     else if (arg == "--coarse-barrier")
     {
       options.coarse.barrierWeight = std::atof(value());
@@ -122,7 +126,7 @@ int main(int argc, char* argv[])
     std::fprintf(stderr,
       "usage: BenchmarkMap A B [C...] [--landmarks FA FB ...] "
       "[--landmark-iterations N] [--coarse N] [--fine N] [--target-error E] "
-      "[--fine-barrier W] [--coarse-barrier W] [--map-weight W] [--max-error F] "
+      "[--coarse-error E] [--fine-barrier W] [--coarse-barrier W] [--map-weight W] [--max-error F] "
       "[--max-point-step S] [--no-landmark-relaxation] [-v]\n");
     return 2;
   }
