@@ -18,7 +18,6 @@
 #include <Eigen/Dense>
 
 #include <cmath>
-#include <map>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -28,7 +27,7 @@ vtkStandardNewMacro(vtkSurfaceAverage);
 
 struct vtkSurfaceAverage::vtkInternals
 {
-  std::map<int, double> Weights; // explicitly set weights; 1 elsewhere
+  vtkSurfaceMapsCombination::IndexedValues Weights; // explicitly set weights; 1 elsewhere
 };
 
 namespace
@@ -169,26 +168,21 @@ void vtkSurfaceAverage::SetInputWeight(int i, double weight)
     vtkErrorMacro(<< "input weight index " << i << " is negative");
     return;
   }
-  auto found = this->Internals->Weights.find(i);
-  if (found != this->Internals->Weights.end() && found->second == weight)
+  if (this->Internals->Weights.Set(i, weight))
   {
-    return;
+    this->Modified();
   }
-  this->Internals->Weights[i] = weight;
-  this->Modified();
 }
 
 double vtkSurfaceAverage::GetInputWeight(int i)
 {
-  auto found = this->Internals->Weights.find(i);
-  return found != this->Internals->Weights.end() ? found->second : 1.0;
+  return this->Internals->Weights.Get(i, 1.0);
 }
 
 void vtkSurfaceAverage::RemoveAllInputWeights()
 {
-  if (!this->Internals->Weights.empty())
+  if (this->Internals->Weights.Clear())
   {
-    this->Internals->Weights.clear();
     this->Modified();
   }
 }
@@ -327,13 +321,6 @@ void vtkSurfaceAverage::PrintSelf(ostream& os, vtkIndent indent)
   this->Superclass::PrintSelf(os, indent);
   os << indent << "AlignMode: " << this->AlignMode << "\n";
   os << indent << "InputWeights:";
-  if (this->Internals->Weights.empty())
-  {
-    os << " (all 1)";
-  }
-  for (const auto& w : this->Internals->Weights)
-  {
-    os << " " << w.first << ": " << w.second;
-  }
+  this->Internals->Weights.Print(os, "(all 1)");
   os << "\n";
 }

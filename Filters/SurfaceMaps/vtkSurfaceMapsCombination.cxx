@@ -297,3 +297,39 @@ void vtkSurfaceMapsCombination::Combine(const std::vector<vtkPolyData*>& meshes,
     }
   }
 }
+
+bool vtkSurfaceMapsCombination::IndexedValues::Set(int i, double value)
+{
+  auto found = this->Values.find(i);
+  if (found != this->Values.end() && found->second == value)
+  {
+    return false;
+  }
+  this->Values[i] = value;
+  return true;
+}
+
+double vtkSurfaceMapsCombination::IndexedValues::Get(int i, double fallback) const
+{
+  auto found = this->Values.find(i);
+  return found != this->Values.end() ? found->second : fallback;
+}
+
+bool vtkSurfaceMapsCombination::IndexedValues::Clear()
+{
+  const bool changed = !this->Values.empty();
+  this->Values.clear();
+  return changed;
+}
+
+void vtkSurfaceMapsCombination::IndexedValues::Print(ostream& os, const char* whenEmpty) const
+{
+  if (this->Values.empty())
+  {
+    os << " " << whenEmpty;
+  }
+  for (const auto& v : this->Values)
+  {
+    os << " " << v.first << ": " << v.second;
+  }
+}

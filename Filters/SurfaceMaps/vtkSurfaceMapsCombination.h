@@ -26,6 +26,9 @@
 
 #include <Eigen/Core>
 
+#include "vtkIOStream.h"
+
+#include <map>
 #include <string>
 #include <vector>
 
@@ -34,6 +37,24 @@ class vtkPolyData;
 class vtkSurfaceMapsCombination
 {
 public:
+  /// Values set per index (input weights, keyframe times); an index that was
+  /// not set takes a default its owner supplies.
+  class IndexedValues
+  {
+  public:
+    /// Sets value i; false when it already had this value (nothing changed).
+    bool Set(int i, double value);
+    /// Value i, or `fallback` when it was not set.
+    double Get(int i, double fallback) const;
+    /// Removes every value; false when there were none.
+    bool Clear();
+    /// " i: v" for every value set, or " " + `whenEmpty`.
+    void Print(ostream& os, const char* whenEmpty) const;
+
+  private:
+    std::map<int, double> Values;
+  };
+
   /// x -> Scale * Rotation * x + Translation.
   struct Similarity
   {

@@ -15,7 +15,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <map>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -26,7 +25,7 @@ vtkStandardNewMacro(vtkSurfaceSequenceInterpolator);
 
 struct vtkSurfaceSequenceInterpolator::vtkInternals
 {
-  std::map<int, double> Times; // explicitly set times; t_k = k elsewhere
+  vtkSurfaceMapsCombination::IndexedValues Times; // explicitly set times; t_k = k elsewhere
 };
 
 namespace
@@ -123,26 +122,21 @@ void vtkSurfaceSequenceInterpolator::SetKeyframeTime(int k, double time)
     vtkErrorMacro(<< "keyframe index " << k << " is negative");
     return;
   }
-  auto found = this->Internals->Times.find(k);
-  if (found != this->Internals->Times.end() && found->second == time)
+  if (this->Internals->Times.Set(k, time))
   {
-    return;
+    this->Modified();
   }
-  this->Internals->Times[k] = time;
-  this->Modified();
 }
 
 double vtkSurfaceSequenceInterpolator::GetKeyframeTime(int k)
 {
-  auto found = this->Internals->Times.find(k);
-  return found != this->Internals->Times.end() ? found->second : static_cast<double>(k);
+  return this->Internals->Times.Get(k, static_cast<double>(k));
 }
 
 void vtkSurfaceSequenceInterpolator::RemoveAllKeyframeTimes()
 {
-  if (!this->Internals->Times.empty())
+  if (this->Internals->Times.Clear())
   {
-    this->Internals->Times.clear();
     this->Modified();
   }
 }
@@ -310,13 +304,6 @@ void vtkSurfaceSequenceInterpolator::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "StepsPerInterval: " << this->StepsPerInterval << "\n";
   os << indent << "TimeValue: " << this->TimeValue << "\n";
   os << indent << "KeyframeTimes:";
-  if (this->Internals->Times.empty())
-  {
-    os << " (t_k = k)";
-  }
-  for (const auto& t : this->Internals->Times)
-  {
-    os << " " << t.first << ": " << t.second;
-  }
+  this->Internals->Times.Print(os, "(t_k = k)");
   os << "\n";
 }
