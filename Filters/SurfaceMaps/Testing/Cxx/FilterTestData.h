@@ -2,14 +2,19 @@
 // a vtkPolyData's triangles.
 #pragma once
 
+#include "vtkSurfaceMapFilter.h"
 #include "vtkSurfaceMeshReader.h"
 
+#include "vtkAlgorithm.h"
+#include "vtkCallbackCommand.h"
 #include "vtkCellArray.h"
+#include "vtkCommand.h"
 #include "vtkDataArray.h"
 #include "vtkNew.h"
 #include "vtkPolyData.h"
 #include "vtkSmartPointer.h"
 
+#include <algorithm>
 #include <array>
 #include <string>
 #include <vector>
@@ -55,6 +60,58 @@ inline std::vector<std::array<int, 3>> triangles(vtkPolyData* data)
       { static_cast<int>(ids[k]), static_cast<int>(ids[k + 1]), static_cast<int>(ids[k + 2]) });
   }
   return result;
+}
+
+/// What a filter reported during updates: error messages, progress values
+/// and texts; progress above AbortAbove aborts the update.
+struct Events
+{
+  std::vector<std::string> Errors;
+  std::vector<double> Progress;
+  std::vector<std::string> Texts;
+  double AbortAbove = 2.0;
+};
+
+/// Records a filter's errors and progress into `events`.
+inline void watch(vtkAlgorithm* filter, Events& events)
+{
+  vtkNew<vtkCallbackCommand> onError;
+  onError->SetClientData(&events);
+  onError->SetCallback([](vtkObject*, unsigned long, void* client, void* text)
+    { static_cast<Events*>(client)->Errors.emplace_back(static_cast<const char*>(text)); });
+  filter->AddObserver(vtkCommand::ErrorEvent, onError);
+  vtkNew<vtkCallbackCommand> onProgress;
+  onProgress->SetClientData(&events);
+  onProgress->SetCallback(
+    [](vtkObject* object, unsigned long, void* client, void*)
+    {
+      auto* e = static_cast<Events*>(client);
+      auto* f = static_cast<vtkAlgorithm*>(object);
+      e->Progress.push_back(f->GetProgress());
+      e->Texts.emplace_back(f->GetProgressText() ? f->GetProgressText() : "");
+      if (f->GetProgress() > e->AbortAbove)
+      {
+        f->AbortExecuteOn();
+      }
+    });
+  filter->AddObserver(vtkCommand::ProgressEvent, onProgress);
+}
+
+/// Whether the watched vtkSurfaceMapFilter computed a map (rather than
+/// reusing the kept one) during the recorded updates.
+inline bool computedTheMap(const Events& events)
+{
+  return std::any_of(events.Texts.begin(),
+    events.Texts.end(),
+    [](const std::string& t) { return t.find(" phase, iteration ") != std::string::npos; });
+}
+
+/// A schedule short enough for tests (about a second for 642-vertex meshes).
+inline void useShortSchedule(vtkSurfaceMapFilter* filter)
+{
+  filter->SetLandmarkIterations(10);
+  filter->SetCoarseIterations(3);
+  filter->SetFineIterations(3);
 }
 
 } // namespace filtertest

@@ -1,3 +1,4 @@
+#include "FilterTestData.h"
 #include "vtkSurfaceAverage.h"
 #include "vtkSurfaceMapsConversion.h"
 
@@ -111,20 +112,6 @@ vtkSmartPointer<Array> pointArray(vtkPolyData* mesh,
   }
   mesh->GetPointData()->AddArray(array);
   return array;
-}
-
-struct Errors
-{
-  std::vector<std::string> Messages;
-};
-
-void watchErrors(vtkObject* object, Errors& errors)
-{
-  vtkNew<vtkCallbackCommand> onError;
-  onError->SetClientData(&errors);
-  onError->SetCallback([](vtkObject*, unsigned long, void* client, void* text)
-    { static_cast<Errors*>(client)->Messages.emplace_back(static_cast<const char*>(text)); });
-  object->AddObserver(vtkCommand::ErrorEvent, onError);
 }
 
 bool contains(const std::string& text, const std::string& part)
@@ -255,41 +242,41 @@ TEST(SurfaceAverage, BadWeightsAreErrors)
 {
   vtkSmartPointer<vtkPolyData> mesh = shape();
   vtkNew<vtkSurfaceAverage> average;
-  Errors errors;
-  watchErrors(average, errors);
+  filtertest::Events errors;
+  filtertest::watch(average, errors);
   average->AddInputData(mesh);
   average->AddInputData(mesh);
   average->SetInputWeight(1, -2.0);
   average->Update();
-  ASSERT_EQ(errors.Messages.size(), 1u);
-  EXPECT_TRUE(contains(errors.Messages[0], "weight of input 1 is -2")) << errors.Messages[0];
+  ASSERT_EQ(errors.Errors.size(), 1u);
+  EXPECT_TRUE(contains(errors.Errors[0], "weight of input 1 is -2")) << errors.Errors[0];
   EXPECT_EQ(average->GetOutput()->GetNumberOfPoints(), 0);
 
   average->SetInputWeight(0, 0.0);
   average->SetInputWeight(1, 0.0);
   average->Update();
-  ASSERT_EQ(errors.Messages.size(), 2u);
-  EXPECT_TRUE(contains(errors.Messages[1], "sum to 0")) << errors.Messages[1];
+  ASSERT_EQ(errors.Errors.size(), 2u);
+  EXPECT_TRUE(contains(errors.Errors[1], "sum to 0")) << errors.Errors[1];
   EXPECT_EQ(average->GetOutput()->GetNumberOfPoints(), 0);
 
   average->SetInputWeight(-1, 1.0); // ignored, with an error
-  EXPECT_EQ(errors.Messages.size(), 3u);
+  EXPECT_EQ(errors.Errors.size(), 3u);
 }
 
 TEST(SurfaceAverage, DifferentConnectivityNamesTheInput)
 {
   vtkSmartPointer<vtkPolyData> mesh = shape();
-  Errors errors;
+  filtertest::Events errors;
   vtkNew<vtkSurfaceAverage> average;
-  watchErrors(average, errors);
+  filtertest::watch(average, errors);
   average->AddInputData(mesh);
   average->AddInputData(mesh);
   average->AddInputData(vtkSurfaceMapsConversion::ToPolyData(surfacemaps::makeIcosphere(1)));
   average->Update();
-  ASSERT_EQ(errors.Messages.size(), 1u);
-  EXPECT_TRUE(contains(errors.Messages[0], "input 2 does not have the connectivity of input 0"))
-    << errors.Messages[0];
-  EXPECT_TRUE(contains(errors.Messages[0], "42 points instead of 162")) << errors.Messages[0];
+  ASSERT_EQ(errors.Errors.size(), 1u);
+  EXPECT_TRUE(contains(errors.Errors[0], "input 2 does not have the connectivity of input 0"))
+    << errors.Errors[0];
+  EXPECT_TRUE(contains(errors.Errors[0], "42 points instead of 162")) << errors.Errors[0];
   EXPECT_EQ(average->GetOutput()->GetNumberOfPoints(), 0);
   EXPECT_EQ(average->GetOutput()->GetNumberOfCells(), 0);
 
@@ -308,13 +295,13 @@ TEST(SurfaceAverage, DifferentConnectivityNamesTheInput)
   average->AddInputData(mesh);
   average->AddInputData(twisted);
   average->Update();
-  ASSERT_EQ(errors.Messages.size(), 2u);
+  ASSERT_EQ(errors.Errors.size(), 2u);
   std::ostringstream expected;
   expected
     << "input 1 (twisted.obj) does not have the connectivity of input 0: cell 5 has the points ("
     << turned[0] << " " << turned[1] << " " << turned[2] << ") instead of (" << ids->GetId(0) << " "
     << ids->GetId(1) << " " << ids->GetId(2) << ")";
-  EXPECT_TRUE(contains(errors.Messages[1], expected.str())) << errors.Messages[1];
+  EXPECT_TRUE(contains(errors.Errors[1], expected.str())) << errors.Errors[1];
   EXPECT_EQ(average->GetOutput()->GetNumberOfPoints(), 0);
 
   // Back to good inputs: a result again.
@@ -322,7 +309,7 @@ TEST(SurfaceAverage, DifferentConnectivityNamesTheInput)
   average->AddInputData(mesh);
   average->AddInputData(mesh);
   average->Update();
-  EXPECT_EQ(errors.Messages.size(), 2u);
+  EXPECT_EQ(errors.Errors.size(), 2u);
   EXPECT_EQ(average->GetOutput()->GetNumberOfPoints(), mesh->GetNumberOfPoints());
 }
 
@@ -411,8 +398,8 @@ TEST(SurfaceAverage, AbortLeavesAnEmptyOutputWithoutError)
 {
   vtkSmartPointer<vtkPolyData> mesh = shape();
   vtkNew<vtkSurfaceAverage> average;
-  Errors errors;
-  watchErrors(average, errors);
+  filtertest::Events errors;
+  filtertest::watch(average, errors);
   std::vector<double> progress;
   vtkNew<vtkCallbackCommand> onProgress;
   onProgress->SetClientData(&progress);
@@ -432,7 +419,7 @@ TEST(SurfaceAverage, AbortLeavesAnEmptyOutputWithoutError)
     average->AddInputData(mesh);
   }
   average->Update();
-  EXPECT_TRUE(errors.Messages.empty());
+  EXPECT_TRUE(errors.Errors.empty());
   EXPECT_EQ(average->GetOutput()->GetNumberOfPoints(), 0);
   ASSERT_FALSE(progress.empty());
   EXPECT_LT(progress.back(), 1.0);

@@ -35,9 +35,13 @@
 
 namespace
 {
+using filtertest::computedTheMap;
 using filtertest::connectivity;
+using filtertest::Events;
 using filtertest::read;
 using filtertest::triangles;
+using filtertest::useShortSchedule;
+using filtertest::watch;
 
 const std::string Data = SURFACEMAPS_DATA_DIR;
 
@@ -80,52 +84,6 @@ void addExtremeLandmarks(vtkPolyData* mesh)
 }
 
 // Short schedules: small meshes, a few iterations per phase.
-void useShortSchedule(vtkSurfaceMapFilter* filter)
-{
-  filter->SetLandmarkIterations(10);
-  filter->SetCoarseIterations(3);
-  filter->SetFineIterations(3);
-}
-
-struct Events
-{
-  std::vector<std::string> Errors;
-  std::vector<double> Progress;
-  std::vector<std::string> Texts;
-  double AbortAbove = 2.0;
-};
-
-void watch(vtkSurfaceMapFilter* filter, Events& events)
-{
-  vtkNew<vtkCallbackCommand> onError;
-  onError->SetClientData(&events);
-  onError->SetCallback([](vtkObject*, unsigned long, void* client, void* text)
-    { static_cast<Events*>(client)->Errors.emplace_back(static_cast<const char*>(text)); });
-  filter->AddObserver(vtkCommand::ErrorEvent, onError);
-  vtkNew<vtkCallbackCommand> onProgress;
-  onProgress->SetClientData(&events);
-  onProgress->SetCallback(
-    [](vtkObject* object, unsigned long, void* client, void*)
-    {
-      auto* e = static_cast<Events*>(client);
-      auto* f = static_cast<vtkSurfaceMapFilter*>(object);
-      e->Progress.push_back(f->GetProgress());
-      e->Texts.emplace_back(f->GetProgressText() ? f->GetProgressText() : "");
-      if (f->GetProgress() > e->AbortAbove)
-      {
-        f->AbortExecuteOn();
-      }
-    });
-  filter->AddObserver(vtkCommand::ProgressEvent, onProgress);
-}
-
-bool computedTheMap(const Events& events)
-{
-  return std::any_of(events.Texts.begin(),
-    events.Texts.end(),
-    [](const std::string& t) { return t.find(" phase, iteration ") != std::string::npos; });
-}
-
 double fieldValue(vtkPolyData* data, const char* name, vtkIdType k = 0)
 {
   vtkDataArray* a = data->GetFieldData()->GetArray(name);

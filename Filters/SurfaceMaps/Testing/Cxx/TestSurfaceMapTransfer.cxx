@@ -35,9 +35,13 @@
 
 namespace
 {
+using filtertest::computedTheMap;
 using filtertest::connectivity;
+using filtertest::Events;
 using filtertest::read;
 using filtertest::triangles;
+using filtertest::useShortSchedule;
+using filtertest::watch;
 
 // An icosphere scaled to an ellipsoid, with a smooth bump around +z.
 vtkSmartPointer<vtkPolyData> ellipsoid(int level, double a, double b, double c, double bump = 0.0)
@@ -63,45 +67,6 @@ void addHeight(vtkPolyData* mesh, const char* name = "Height")
     height->SetValue(v, mesh->GetPoint(v)[2]);
   }
   mesh->GetPointData()->AddArray(height);
-}
-
-struct Events
-{
-  std::vector<std::string> Errors;
-  std::vector<std::string> Texts;
-};
-
-void watch(vtkAlgorithm* filter, Events& events)
-{
-  vtkNew<vtkCallbackCommand> onError;
-  onError->SetClientData(&events);
-  onError->SetCallback([](vtkObject*, unsigned long, void* client, void* text)
-    { static_cast<Events*>(client)->Errors.emplace_back(static_cast<const char*>(text)); });
-  filter->AddObserver(vtkCommand::ErrorEvent, onError);
-  vtkNew<vtkCallbackCommand> onProgress;
-  onProgress->SetClientData(&events);
-  onProgress->SetCallback(
-    [](vtkObject* object, unsigned long, void* client, void*)
-    {
-      auto* f = static_cast<vtkAlgorithm*>(object);
-      static_cast<Events*>(client)->Texts.emplace_back(
-        f->GetProgressText() ? f->GetProgressText() : "");
-    });
-  filter->AddObserver(vtkCommand::ProgressEvent, onProgress);
-}
-
-bool computedTheMap(const Events& events)
-{
-  return std::any_of(events.Texts.begin(),
-    events.Texts.end(),
-    [](const std::string& t) { return t.find(" phase, iteration ") != std::string::npos; });
-}
-
-void useShortSchedule(vtkSurfaceMapFilter* filter)
-{
-  filter->SetLandmarkIterations(10);
-  filter->SetCoarseIterations(3);
-  filter->SetFineIterations(3);
 }
 
 vtkSmartPointer<vtkPolyData> copyOf(vtkPolyData* data)
