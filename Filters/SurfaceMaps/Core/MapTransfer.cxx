@@ -32,9 +32,9 @@ void checkTriangles(const std::vector<std::array<int, 3>>& triangles,
   }
 }
 
-/// Where sphere point p lies on the input, exactly at a corner when p is that
-/// corner's sphere point.
-SurfacePoint locateOnInput(const SphereLocator& locator,
+} // namespace
+
+SurfacePoint locateSurfacePoint(const SphereLocator& locator,
   const std::vector<Eigen::Vector3d>& sphere,
   const std::vector<std::array<int, 3>>& triangles,
   const Eigen::Vector3d& p,
@@ -55,8 +55,6 @@ SurfacePoint locateOnInput(const SphereLocator& locator,
   return point;
 }
 
-} // namespace
-
 std::vector<SurfacePoint> transferPoints(const std::vector<Eigen::Vector3d>& points,
   const std::vector<std::array<int, 3>>& commonTriangles,
   const std::vector<Eigen::Vector3d>& gFrom,
@@ -72,7 +70,7 @@ std::vector<SurfacePoint> transferPoints(const std::vector<Eigen::Vector3d>& poi
   {
     for (std::size_t w = 0; w < points.size(); ++w)
     {
-      result[w] = locateOnInput(onInput, fTo, toTriangles, points[w], -1);
+      result[w] = locateSurfacePoint(onInput, fTo, toTriangles, points[w], -1);
     }
     return result;
   }
@@ -105,7 +103,8 @@ std::vector<SurfacePoint> transferPoints(const std::vector<Eigen::Vector3d>& poi
     const auto& tri = commonTriangles[loc.triangle];
     const Eigen::Vector3d q =
       (loc.alpha * gTo[tri[0]] + loc.beta * gTo[tri[1]] + loc.gamma * gTo[tri[2]]).normalized();
-    result[w] = locateOnInput(onInput, fTo, toTriangles, q, start.empty() ? -1 : start[tri[0]]);
+    result[w] =
+      locateSurfacePoint(onInput, fTo, toTriangles, q, start.empty() ? -1 : start[tri[0]]);
   }
   return result;
 }

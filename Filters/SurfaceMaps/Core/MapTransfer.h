@@ -3,6 +3,7 @@
 // (DESIGN.md sections 1.2 and 3).
 #pragma once
 
+#include "SphereLocator.h"
 #include "SurfaceMap.h"
 
 #include <Eigen/Core>
@@ -57,6 +58,16 @@ std::vector<SurfacePoint> transferVertices(const SurfaceMapResult& map,
   const std::vector<MapInput>& inputs,
   int from,
   int to);
+
+/// Where sphere point p lies on an input, given the input's embedding
+/// (`sphere`, `triangles`) and a locator built on it, walking from triangle
+/// `start` (< 0: a search from scratch); exactly at a corner when p is that
+/// corner's sphere point.
+SurfacePoint locateSurfacePoint(const SphereLocator& locator,
+  const std::vector<Eigen::Vector3d>& sphere,
+  const std::vector<std::array<int, 3>>& triangles,
+  const Eigen::Vector3d& p,
+  int start);
 
 /// The position of a surface point on the mesh it refers to.
 Eigen::Vector3d evaluateSurfacePoint(const std::vector<Eigen::Vector3d>& points,

@@ -555,32 +555,6 @@ private:
   int Done = 0;
 };
 
-/// Where sphere point p of input i lies on the input, exactly at a vertex when
-/// p is that vertex's sphere point.
-SurfacePoint surfacePoint(const MapSurface& s, const Eigen::Vector3d& p, int start)
-{
-  const SphereLocation loc = start >= 0 ? s.locator->locateFrom(p, start) : s.locator->locate(p);
-  SurfacePoint point;
-  point.triangle = loc.triangle;
-  point.barycentric = Eigen::Vector3d(loc.alpha, loc.beta, loc.gamma);
-  const auto& tri = s.triangles[loc.triangle];
-  for (int k = 0; k < 3; ++k)
-  {
-    if (s.sphere[tri[k]] == p)
-    {
-      point.barycentric = Eigen::Vector3d::Unit(k);
-    }
-  }
-  return point;
-}
-
-Eigen::Vector3d evaluatePoint(const PolygonMesh& mesh, const MapSurface& s, const SurfacePoint& p)
-{
-  const auto& tri = s.triangles[p.triangle];
-  return p.barycentric[0] * mesh.points[tri[0]] + p.barycentric[1] * mesh.points[tri[1]] +
-    p.barycentric[2] * mesh.points[tri[2]];
-}
-
 } // namespace
 
 std::vector<MapSurface> prepareMapSurfaces(const std::vector<MapInput>& inputs,
@@ -798,9 +772,14 @@ SurfaceMapResult computeSurfaceMap(const std::vector<MapInput>& inputs,
     }
     for (auto v : mesh.vertices())
     {
-      const SurfacePoint p = surfacePoint(surfaces[i], T.g(v, i), T.liftTriangle(v, i));
+      const SurfacePoint p = locateSurfacePoint(*surfaces[i].locator,
+        surfaces[i].sphere,
+        surfaces[i].triangles,
+        T.g(v, i),
+        T.liftTriangle(v, i));
       result.sourcePoints[i][v.idx()] = p;
-      result.lifted[i][v.idx()] = evaluatePoint(inputs[i].mesh, surfaces[i], p);
+      result.lifted[i][v.idx()] =
+        evaluateSurfacePoint(inputs[i].mesh.points, surfaces[i].triangles, p);
     }
   }
   for (auto v : mesh.vertices())
