@@ -16,3 +16,16 @@ def run(*args, timeout=300, cwd=None):
 def data(name):
     """Path of a file in Data/."""
     return os.path.join(DATA, name)
+
+
+# Short schedules for `surfacemap map`: two 642-vertex meshes map in about a second.
+SHORT = ("--landmark-iterations", "10", "--coarse-iterations", "3", "--fine-iterations", "3")
+
+
+def read_vtp(path):
+    """A .vtp file as vtkPolyData."""
+    from vtkmodules.vtkIOXML import vtkXMLPolyDataReader
+    reader = vtkXMLPolyDataReader()
+    reader.SetFileName(str(path))
+    reader.Update()
+    return reader.GetOutput()

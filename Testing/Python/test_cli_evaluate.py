@@ -6,7 +6,7 @@ import shutil
 
 import pytest
 
-from cli import data, run
+from cli import SHORT, data, read_vtp, run
 
 
 def test_evaluate_writes_summary_and_tables(tmp_path):
@@ -38,9 +38,6 @@ def test_usage():
 
 
 # The directory form: every map of a `surfacemap map` output directory.
-SHORT = ("--landmark-iterations", "10", "--coarse-iterations", "3", "--fine-iterations", "3")
-
-
 @pytest.fixture(scope="module")
 def map_dir(tmp_path_factory):
     """A map of ellipsoid <-> blob with a short schedule (about a second)."""
@@ -49,14 +46,6 @@ def map_dir(tmp_path_factory):
             data("blob.vts"), *SHORT, "--output-dir", out)
     assert r.returncode == 0, r.stderr
     return out
-
-
-def read_vtp(path):
-    from vtkmodules.vtkIOXML import vtkXMLPolyDataReader
-    reader = vtkXMLPolyDataReader()
-    reader.SetFileName(str(path))
-    reader.Update()
-    return reader.GetOutput()
 
 
 def test_evaluate_map_directory(map_dir, tmp_path):

@@ -3,18 +3,7 @@
 import json
 import os
 
-from cli import data, run
-
-# Short schedules: the map of two 642-vertex meshes takes about a second.
-SHORT = ("--landmark-iterations", "10", "--coarse-iterations", "3", "--fine-iterations", "3")
-
-
-def read_vtp(path):
-    from vtkmodules.vtkIOXML import vtkXMLPolyDataReader
-    reader = vtkXMLPolyDataReader()
-    reader.SetFileName(str(path))
-    reader.Update()
-    return reader.GetOutput()
+from cli import SHORT, data, read_vtp, run
 
 
 def test_map_writes_common_and_mapped_meshes_and_a_report(tmp_path):

@@ -5,18 +5,7 @@ import shutil
 
 import pytest
 
-from cli import data, run
-
-# Short schedules: the map of two 642-vertex meshes takes about a second.
-SHORT = ("--landmark-iterations", "10", "--coarse-iterations", "3", "--fine-iterations", "3")
-
-
-def read_vtp(path):
-    from vtkmodules.vtkIOXML import vtkXMLPolyDataReader
-    reader = vtkXMLPolyDataReader()
-    reader.SetFileName(str(path))
-    reader.Update()
-    return reader.GetOutput()
+from cli import SHORT, data, read_vtp, run
 
 
 def write_vtp(mesh, path):
