@@ -95,7 +95,6 @@ const char* const SizingName = "Sizing";
 const char* const SpherePositionName = "SpherePosition";
 const char* const SourceCellIdName = "SourceCellId";
 const char* const SourceBarycentricName = "SourceBarycentric";
-const char* const TCoordsName = "TCoords";
 
 // "input 1" or "input 1 (a.obj)" when the input carries a file name.
 std::string inputName(vtkPolyData* input, int index)
@@ -383,13 +382,6 @@ void setSourcePointData(vtkPolyData* output,
     to->CopyFieldOff(skip);
   }
   to->InterpolateAllocate(from, n);
-  auto cellIds = vtkSmartPointer<vtkIdTypeArray>::New();
-  cellIds->SetName(SourceCellIdName);
-  cellIds->SetNumberOfValues(n);
-  auto barycentric = vtkSmartPointer<vtkDoubleArray>::New();
-  barycentric->SetName(SourceBarycentricName);
-  barycentric->SetNumberOfComponents(3);
-  barycentric->SetNumberOfTuples(n);
   vtkNew<vtkIdList> corners;
   corners->SetNumberOfIds(3);
   for (vtkIdType v = 0; v < n; ++v)
@@ -406,33 +398,8 @@ void setSourcePointData(vtkPolyData* output,
     }
     double w[3] = { p.barycentric[0], p.barycentric[1], p.barycentric[2] };
     to->InterpolatePoint(from, v, corners, w);
-    cellIds->SetValue(v, p.triangle);
-    barycentric->SetTypedTuple(v, w);
   }
-  to->AddArray(cellIds);
-  to->AddArray(barycentric);
-}
-
-// Active point texture coordinates "TCoords" from an input's per-corner ones,
-// evaluated in the input triangle each output point lies in (none without).
-void setCornerTCoords(vtkPolyData* output,
-  const std::vector<Eigen::Vector2d>& corners,
-  const std::vector<surfacemaps::SurfacePoint>& points)
-{
-  if (corners.empty())
-  {
-    return;
-  }
-  auto array = vtkSmartPointer<vtkDoubleArray>::New();
-  array->SetName(TCoordsName);
-  array->SetNumberOfComponents(2);
-  array->SetNumberOfTuples(static_cast<vtkIdType>(points.size()));
-  for (std::size_t v = 0; v < points.size(); ++v)
-  {
-    const Eigen::Vector2d t = surfacemaps::evaluateCornerValues(corners, points[v]);
-    array->SetTypedTuple(static_cast<vtkIdType>(v), t.data());
-  }
-  output->GetPointData()->SetTCoords(array);
+  vtkSurfaceMapsConversion::AddSourcePoints(to, points);
 }
 
 // Input i itself with its sphere embedding f_i as "SpherePosition".
@@ -809,7 +776,8 @@ int vtkSurfaceMapFilter::RequestData(vtkInformation*,
       vtkPolyData* output = outputs[i];
       setGeometry(output, points[i], triangles);
       setSourcePointData(output, inputs[i], mapInputs[i].mesh, sources[i]);
-      setCornerTCoords(output, mapInputs[i].mesh.cornerTexCoords, sources[i]);
+      vtkSurfaceMapsConversion::SetCornerTCoords(
+        output->GetPointData(), mapInputs[i].mesh.cornerTexCoords, sources[i]);
       if (common)
       {
         output->GetPointData()->AddArray(vectorArray(SpherePositionName, map.spherePositions[i]));

@@ -39,7 +39,6 @@ namespace
 const char* const SpherePositionName = "SpherePosition";
 const char* const SourceCellIdName = "SourceCellId";
 const char* const SourceBarycentricName = "SourceBarycentric";
-const char* const TCoordsName = "TCoords";
 
 // Largest deviation of a SpherePosition's length from 1 (the map writes
 // normalised doubles; anything further off is not a sphere embedding). The
@@ -392,34 +391,8 @@ int vtkSurfaceMapTransfer::RequestData(vtkInformation*,
         to->SetActiveAttribute(array->GetName(), attribute);
       }
     }
-    auto cellIds = vtkSmartPointer<vtkIdTypeArray>::New();
-    cellIds->SetName(SourceCellIdName);
-    cellIds->SetNumberOfValues(static_cast<vtkIdType>(points.size()));
-    auto barycentric = vtkSmartPointer<vtkDoubleArray>::New();
-    barycentric->SetName(SourceBarycentricName);
-    barycentric->SetNumberOfComponents(3);
-    barycentric->SetNumberOfTuples(static_cast<vtkIdType>(points.size()));
-    for (std::size_t v = 0; v < points.size(); ++v)
-    {
-      cellIds->SetValue(static_cast<vtkIdType>(v), points[v].triangle);
-      barycentric->SetTypedTuple(static_cast<vtkIdType>(v), points[v].barycentric.data());
-    }
-    to->AddArray(cellIds);
-    to->AddArray(barycentric);
-    if (cornerTCoords)
-    {
-      auto tcoords = vtkSmartPointer<vtkDoubleArray>::New();
-      tcoords->SetName(TCoordsName);
-      tcoords->SetNumberOfComponents(2);
-      tcoords->SetNumberOfTuples(static_cast<vtkIdType>(points.size()));
-      for (std::size_t v = 0; v < points.size(); ++v)
-      {
-        const Eigen::Vector2d t =
-          surfacemaps::evaluateCornerValues(ports[1].mesh.cornerTexCoords, points[v]);
-        tcoords->SetTypedTuple(static_cast<vtkIdType>(v), t.data());
-      }
-      to->SetTCoords(tcoords);
-    }
+    vtkSurfaceMapsConversion::AddSourcePoints(to, points);
+    vtkSurfaceMapsConversion::SetCornerTCoords(to, ports[1].mesh.cornerTexCoords, points);
     this->UpdateProgress(1.0);
   }
   catch (const surfacemaps::InputError& e)

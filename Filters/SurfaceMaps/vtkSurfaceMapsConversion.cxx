@@ -1,5 +1,7 @@
 #include "vtkSurfaceMapsConversion.h"
 
+#include "MapTransfer.h"
+
 #include "vtkCellArray.h"
 #include "vtkCellArrayIterator.h"
 #include "vtkCellData.h"
@@ -180,4 +182,44 @@ std::string vtkSurfaceMapsConversion::InputName(vtkPolyData* input, int index)
     }
   }
   return "input " + std::to_string(index);
+}
+
+void vtkSurfaceMapsConversion::AddSourcePoints(vtkPointData* pointData,
+  const std::vector<surfacemaps::SurfacePoint>& points)
+{
+  const vtkIdType n = static_cast<vtkIdType>(points.size());
+  auto cellIds = vtkSmartPointer<vtkIdTypeArray>::New();
+  cellIds->SetName("SourceCellId");
+  cellIds->SetNumberOfValues(n);
+  auto barycentric = vtkSmartPointer<vtkDoubleArray>::New();
+  barycentric->SetName("SourceBarycentric");
+  barycentric->SetNumberOfComponents(3);
+  barycentric->SetNumberOfTuples(n);
+  for (vtkIdType v = 0; v < n; ++v)
+  {
+    cellIds->SetValue(v, points[v].triangle);
+    barycentric->SetTypedTuple(v, points[v].barycentric.data());
+  }
+  pointData->AddArray(cellIds);
+  pointData->AddArray(barycentric);
+}
+
+void vtkSurfaceMapsConversion::SetCornerTCoords(vtkPointData* pointData,
+  const std::vector<Eigen::Vector2d>& corners,
+  const std::vector<surfacemaps::SurfacePoint>& points)
+{
+  if (corners.empty())
+  {
+    return;
+  }
+  auto array = vtkSmartPointer<vtkDoubleArray>::New();
+  array->SetName("TCoords");
+  array->SetNumberOfComponents(2);
+  array->SetNumberOfTuples(static_cast<vtkIdType>(points.size()));
+  for (std::size_t v = 0; v < points.size(); ++v)
+  {
+    const Eigen::Vector2d t = surfacemaps::evaluateCornerValues(corners, points[v]);
+    array->SetTypedTuple(static_cast<vtkIdType>(v), t.data());
+  }
+  pointData->SetTCoords(array);
 }

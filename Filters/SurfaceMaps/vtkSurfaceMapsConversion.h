@@ -11,6 +11,7 @@
 #define vtkSurfaceMapsConversion_h
 
 #include "PolygonMesh.h"
+#include "SurfaceMap.h"
 #include "SurfaceMesh.h"
 
 #include "vtkSmartPointer.h"
@@ -18,6 +19,7 @@
 #include <string>
 #include <vector>
 
+class vtkPointData;
 class vtkPolyData;
 
 class vtkSurfaceMapsConversion
@@ -39,6 +41,18 @@ public:
 
   /// The "Landmarks" point array as ids per vertex (-1 none); empty if absent.
   static std::vector<int> LandmarkIds(vtkPolyData* input);
+
+  /// Adds "SourceCellId" (the input triangle) and "SourceBarycentric" (the
+  /// barycentric coordinates in it) of every surface point, one per point.
+  static void AddSourcePoints(vtkPointData* pointData,
+    const std::vector<surfacemaps::SurfacePoint>& points);
+
+  /// Sets "TCoords", the active texture coordinates: per-corner values
+  /// (three per input triangle) evaluated at every surface point inside its
+  /// triangle, so seams stay sharp. Nothing when `corners` is empty.
+  static void SetCornerTCoords(vtkPointData* pointData,
+    const std::vector<Eigen::Vector2d>& corners,
+    const std::vector<surfacemaps::SurfacePoint>& points);
 
   /// Name for messages: the "FileName" field-data string if present, else "input <index>".
   static std::string InputName(vtkPolyData* input, int index);
