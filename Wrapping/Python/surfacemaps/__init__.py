@@ -58,8 +58,10 @@ class MapError(RuntimeError):
     """No certified bijective map was found (or the computation failed otherwise)."""
 
 
-def _collect_errors(algorithm):
-    """Turn the algorithm's ErrorEvents into a list of messages (instead of VTK's output window)."""
+def _error_observer(algorithm):
+    """Turn the algorithm's ErrorEvents into a list of messages (instead of VTK's output window).
+
+    Returns the list and the observer's tag (for RemoveObserver)."""
     from vtkmodules.vtkCommonCore import vtkCommand
     messages = []
 
@@ -67,8 +69,12 @@ def _collect_errors(algorithm):
         messages.append(text.split("): ", 1)[-1].strip() if text else "unknown error")
 
     on_error.CallDataType = "string0"
-    algorithm.AddObserver(vtkCommand.ErrorEvent, on_error)
-    return messages
+    return messages, algorithm.AddObserver(vtkCommand.ErrorEvent, on_error)
+
+
+def _collect_errors(algorithm):
+    """The algorithm's error messages from now on, as a list that fills as they come."""
+    return _error_observer(algorithm)[0]
 
 
 _SUMMARY = ("SymmetricDirichlet", "AreaBelow1.5", "AreaBelow2", "MaxDistortion", "DegenerateTriangles",
@@ -365,20 +371,13 @@ def write_time_series(source, times, directory, name="surface"):
     """
     import os
     from xml.sax.saxutils import quoteattr
-    from vtkmodules.vtkCommonCore import vtkCommand
     from vtkmodules.vtkIOXML import vtkXMLPolyDataWriter
 
     times = [float(t) for t in times]
     directory = os.fspath(directory)
     os.makedirs(directory, exist_ok=True)
     digits = max(4, len(str(max(len(times) - 1, 0))))
-    messages = []
-
-    def on_error(obj, event, text=None):
-        messages.append(text.split("): ", 1)[-1].strip() if text else "unknown error")
-
-    on_error.CallDataType = "string0"
-    tag = source.AddObserver(vtkCommand.ErrorEvent, on_error)
+    messages, tag = _error_observer(source)
     paths = []
     try:
         for k, t in enumerate(times):
