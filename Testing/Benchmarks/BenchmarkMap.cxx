@@ -100,6 +100,14 @@ int main(int argc, char* argv[])
     {
       options.mapWeight = std::atof(value());
     }
+    else if (arg == "--mesh-weight")
+    {
+      options.meshWeight = std::atof(value());
+    }
+    else if (arg == "--approximation-weight")
+    {
+      options.approximationWeight = std::atof(value());
+    }
     else if (arg == "--max-error")
     {
       options.maxError = std::atof(value());
@@ -126,7 +134,8 @@ int main(int argc, char* argv[])
     std::fprintf(stderr,
       "usage: BenchmarkMap A B [C...] [--landmarks FA FB ...] "
       "[--landmark-iterations N] [--coarse N] [--fine N] [--target-error E] "
-      "[--coarse-error E] [--fine-barrier W] [--coarse-barrier W] [--map-weight W] [--max-error F] "
+      "[--coarse-error E] [--fine-barrier W] [--coarse-barrier W] [--map-weight W] "
+      "[--mesh-weight W] [--approximation-weight W] [--max-error F] "
       "[--max-point-step S] [--no-landmark-relaxation] [-v]\n");
     return 2;
   }
@@ -209,6 +218,13 @@ int main(int argc, char* argv[])
     certified = certified && c.bijective;
   }
   std::printf("certified: %s; landmark error %.3g\n", certified ? "yes" : "NO", r.landmarkError);
+  std::printf(
+    "final energy %.5g: barrier %.5g, mesh %.5g, approximation %.5g, map %.5g (unweighted)\n",
+    r.energy,
+    r.barrierEnergy,
+    r.meshEnergy,
+    r.approximationEnergy,
+    r.mapEnergy);
   for (std::size_t i = 0; i < r.baseDistance.size(); ++i)
   {
     std::printf("input %zu: largest base-point distance %.4g (bound %.4g)\n",
