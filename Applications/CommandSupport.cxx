@@ -197,6 +197,20 @@ void checkWritable(const std::string& path)
   std::remove(temporary.c_str());
 }
 
+bool canWrite(const std::string& path)
+{
+  try
+  {
+    checkWritable(path);
+    return true;
+  }
+  catch (const std::runtime_error& e)
+  {
+    printError(e.what());
+    return false;
+  }
+}
+
 void writeFileAtomically(const std::string& path, const std::string& content)
 {
   const std::string temporary = temporaryName(path);

@@ -75,6 +75,10 @@ vtkSmartPointer<vtkPolyData> readValidMesh(const std::string& path, const std::s
 /// Throws std::runtime_error naming `path` if no file can be created there
 /// (checked before long computations whose result would be lost).
 void checkWritable(const std::string& path);
+/// True if a file can be created at `path`; otherwise prints why (as
+/// checkWritable's message) and returns false, for the caller to exit with
+/// ExitBadInput.
+bool canWrite(const std::string& path);
 
 /// `value` as a JSON number (10 significant digits); null if not finite,
 /// since JSON has no infinity or NaN.

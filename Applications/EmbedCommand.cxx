@@ -82,13 +82,8 @@ int runEmbed(const std::vector<std::string>& args)
   {
     return ExitBadInput;
   }
-  try
+  if (!canWrite(output))
   {
-    checkWritable(output);
-  }
-  catch (const std::runtime_error& e)
-  {
-    printError(e.what());
     return ExitBadInput;
   }
 

@@ -166,13 +166,8 @@ int runTransfer(const std::vector<std::string>& args)
       " (written by 'surfacemap map' for each input; is the input index right?)");
     return ExitBadInput;
   }
-  try
+  if (!canWrite(output))
   {
-    checkWritable(output);
-  }
-  catch (const std::runtime_error& e)
-  {
-    printError(e.what());
     return ExitBadInput;
   }
 
