@@ -35,6 +35,8 @@ const char* const MapHelp =
   "                      [--keep-landmarks | --release-landmarks]\n"
   "                      [--landmark-iterations N] [--coarse-iterations N]\n"
   "                      [--fine-iterations N] [--no-landmark-relaxation]\n"
+  "                      [--mesh-weight W] [--map-weight W]\n"
+  "                      [--approximation-weight W]\n"
   "\n"
   "Computes a bijective map between the meshes A, B, ... (closed, manifold,\n"
   "genus 0) through one adaptive common triangulation T (Schmidt, Pieper,\n"
@@ -84,6 +86,11 @@ const char* const MapHelp =
   "  --no-landmark-relaxation end the landmark phase as soon as the landmarks\n"
   "                           are reached (default: relax T's embeddings around\n"
   "                           them first, with Newton steps and flips)\n"
+  "  --mesh-weight W          weights of the energy's mesh-quality, map-\n"
+  "  --map-weight W           distortion and surface-approximation terms\n"
+  "  --approximation-weight W (defaults 0.5, 1, 0.25; >= 0): more map\n"
+  "                           weight, a lower distortion; more approximation\n"
+  "                           weight, a closer T and exact map\n"
   "\n"
   "Exit code 0 with a certified map, 2 for bad usage or input (also an output\n"
   "directory that cannot be written), 3 if no certified map was found, 1 for\n"
@@ -197,7 +204,8 @@ int runMap(const std::vector<std::string>& args)
     const std::string& a = args[i];
     const bool takesValue = a == "--output-dir" || a == "--target-error" || a == "--coarse-error" ||
       a == "--max-error" || a == "--pairs" || a == "--landmark-iterations" ||
-      a == "--coarse-iterations" || a == "--fine-iterations";
+      a == "--coarse-iterations" || a == "--fine-iterations" || a == "--mesh-weight" ||
+      a == "--map-weight" || a == "--approximation-weight";
     if (takesValue && i + 1 >= args.size())
     {
       throw UsageError{ a + " needs a value" };
@@ -240,6 +248,26 @@ int runMap(const std::vector<std::string>& args)
         };
       }
       map->SetMaxError(f);
+    }
+    else if (a == "--mesh-weight" || a == "--map-weight" || a == "--approximation-weight")
+    {
+      const double w = parseNumber(a, args[++i]);
+      if (!(w >= 0.0 && w <= 1e6))
+      {
+        throw UsageError{ a + " must be between 0 and 1e6" };
+      }
+      if (a == "--mesh-weight")
+      {
+        map->SetMeshWeight(w);
+      }
+      else if (a == "--map-weight")
+      {
+        map->SetMapWeight(w);
+      }
+      else
+      {
+        map->SetApproximationWeight(w);
+      }
     }
     else if (a == "--pairs")
     {
@@ -436,7 +464,10 @@ int runMap(const std::vector<std::string>& args)
        << ", \"landmark_iterations\": " << map->GetLandmarkIterations()
        << ", \"relax_landmark_phase\": " << (map->GetRelaxLandmarkPhase() ? "true" : "false")
        << ", \"coarse_iterations\": " << map->GetCoarseIterations()
-       << ", \"fine_iterations\": " << map->GetFineIterations() << " },\n";
+       << ", \"fine_iterations\": " << map->GetFineIterations()
+       << ", \"mesh_weight\": " << jsonNumber(map->GetMeshWeight())
+       << ", \"map_weight\": " << jsonNumber(map->GetMapWeight())
+       << ", \"approximation_weight\": " << jsonNumber(map->GetApproximationWeight()) << " },\n";
   json << "  \"phases\": [";
   auto* phaseNames =
     vtkStringArray::SafeDownCast(first->GetFieldData()->GetAbstractArray("PhaseName"));

@@ -112,6 +112,10 @@ int main(int argc, char* argv[])
     {
       options.maxError = std::atof(value());
     }
+    else if (arg == "--kink-retries")
+    {
+      options.kinkRetries = std::atoi(value());
+    }
     else if (arg == "--max-point-step")
     {
       options.maxPointStep = std::atof(value());

@@ -69,6 +69,20 @@ def test_max_error_must_be_a_fraction(tmp_path):
         assert r.returncode == 2 and "--max-error" in r.stderr, (value, r.stderr)
 
 
+def test_term_weights_are_settings(tmp_path):
+    out = tmp_path / "weighted"
+    r = run("map", data("ellipsoid.obj"), data("blob.off"), "--landmarks", data("ellipsoid.pinned"),
+            data("blob.vts"), *SHORT, "--mesh-weight", "1", "--map-weight", "2", "--approximation-weight", "4",
+            "--output-dir", out)
+    assert r.returncode == 0, r.stderr
+    settings = json.loads((out / "report.json").read_text())["settings"]
+    assert (settings["mesh_weight"], settings["map_weight"], settings["approximation_weight"]) == (1, 2, 4)
+    for option in ("--mesh-weight", "--map-weight", "--approximation-weight"):
+        for value in ("-1", "x", "2e6"):
+            r = run("map", data("ellipsoid.obj"), option, value, "--output-dir", tmp_path / "o")
+            assert r.returncode == 2 and option in r.stderr, (option, value, r.stderr)
+
+
 def surfacemaps_read(path):
     import surfacemaps
     return surfacemaps.read_mesh(path)

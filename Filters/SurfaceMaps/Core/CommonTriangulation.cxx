@@ -11,6 +11,7 @@
 #include <cmath>
 #include <limits>
 #include <stdexcept>
+#include <stdexcept>
 
 namespace surfacemaps
 {
@@ -502,37 +503,59 @@ bool CommonTriangulation::update(Snapshot& s, const SpherePoints& points) const
       return false;
     }
   }
+  // A walk that does not end means the embedding is not bijective after all
+  // (a triangle positive in floating point but not exactly): reject the
+  // trial. Exceptions must not leave the parallel loops.
+  bool walked = true;
   const long long np = static_cast<long long>(positions.size());
-#pragma omp parallel for schedule(static) if (np > 2000)
+#pragma omp parallel for schedule(static) reduction(&& : walked) if (np > 2000)
   for (long long k = 0; k < np; ++k)
   {
     const int i = static_cast<int>(k / nv);
     const MapSurface& surface = this->Surfaces[i];
-    const int t = walkOnSphere(positions[k],
-      s.liftTriangle[k],
-      surface.triangles,
-      this->SurfaceNeighbours[i],
-      surface.sphere.data())
-                    .triangle;
-    s.liftTriangle[k] = t;
-    s.lifts[k] = &surface.lifts[t];
+    try
+    {
+      const int t = walkOnSphere(positions[k],
+        s.liftTriangle[k],
+        surface.triangles,
+        this->SurfaceNeighbours[i],
+        surface.sphere.data())
+                      .triangle;
+      s.liftTriangle[k] = t;
+      s.lifts[k] = &surface.lifts[t];
+    }
+    catch (const std::runtime_error&)
+    {
+      walked = false;
+    }
   }
   if (this->TrackSamples)
   {
-    for (int i = 0; i < n; ++i)
+    for (int i = 0; i < n && walked; ++i)
     {
       const ApproximationSamples& samples = this->Surfaces[i].samples;
       std::vector<int>& triangleOf = s.sampleTriangle[i];
       const Eigen::Vector3d* corners = positions.data() + static_cast<std::size_t>(i) * nv;
       const long long ns = static_cast<long long>(triangleOf.size());
-#pragma omp parallel for schedule(static) if (ns > 2000)
+#pragma omp parallel for schedule(static) reduction(&& : walked) if (ns > 2000)
       for (long long k = 0; k < ns; ++k)
       {
-        triangleOf[k] =
-          walkOnSphere(samples.spherePoints[k], triangleOf[k], s.triangles, s.neighbours, corners)
-            .triangle;
+        try
+        {
+          triangleOf[k] =
+            walkOnSphere(samples.spherePoints[k], triangleOf[k], s.triangles, s.neighbours, corners)
+              .triangle;
+        }
+        catch (const std::runtime_error&)
+        {
+          walked = false;
+        }
       }
     }
+  }
+  if (!walked)
+  {
+    return false;
   }
   return true;
 }

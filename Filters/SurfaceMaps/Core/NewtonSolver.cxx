@@ -59,29 +59,26 @@ NewtonStepResult newtonStep(Objective& objective,
     return result; // zero gradient: nothing to do
   }
 
-  double initialStep = 1.0;
-  if (options.maxPointStep > 0.0)
+  // The first trial step: 1, or less where a point would move farther than the cap.
+  auto firstStep = [&](const Eigen::VectorXd& direction)
   {
     double largest = 0.0;
-    for (int i = 0; i < points.size(); ++i)
+    for (int i = 0; options.maxPointStep > 0.0 && i < points.size(); ++i)
     {
       const int v = points.variable(i);
       if (v >= 0)
       {
-        largest = std::max(largest, std::hypot(d[v], d[v + 1]));
+        largest = std::max(largest, std::hypot(direction[v], direction[v + 1]));
       }
     }
-    if (largest > options.maxPointStep)
-    {
-      initialStep = options.maxPointStep / largest;
-    }
-  }
+    return largest > options.maxPointStep ? options.maxPointStep / largest : 1.0;
+  };
 
   const std::vector<Eigen::Vector3d> start = points.positions();
-  auto energyAt = [&](double t)
+  auto energyAlong = [&](const Eigen::VectorXd& direction, double t)
   {
     points.setPositions(start);
-    points.retract(d, t);
+    points.retract(direction, t);
     if (options.acceptTrial && !options.acceptTrial(points))
     {
       return std::numeric_limits<double>::infinity();
@@ -89,9 +86,93 @@ NewtonStepResult newtonStep(Objective& objective,
     return objective.value(points);
   };
   clock = std::chrono::steady_clock::now();
-  const LineSearchResult ls =
-    armijoBacktracking(energyAt, result.energyBefore, slope, initialStep, options.lineSearch);
+  double initialStep = firstStep(d);
+  LineSearchResult ls = armijoBacktracking([&](double t) { return energyAlong(d, t); },
+    result.energyBefore,
+    slope,
+    initialStep,
+    options.lineSearch);
   result.lineSearchTrials = ls.trials;
+
+  // Kinks: hold the points of the elements that leave their model at the last
+  // rejected trial, solve again with those points (nearly) fixed by a heavy
+  // diagonal (same sparsity pattern: the factorisation's analysis is kept).
+  // The latest direction tried, its slope, first step and line search.
+  Eigen::VectorXd triedD = d;
+  double triedSlope = slope, triedStep = initialStep;
+  LineSearchResult tried = ls;
+  std::vector<char> held;
+  Eigen::SparseMatrix<double> heldH;
+  for (int retry = 0; retry < options.kinkRetries &&
+       (!tried.success || tried.step < options.kinkStep * triedStep);
+       ++retry)
+  {
+    const double probe = tried.success ? tried.step / options.lineSearch.shrink
+                                       : triedStep * std::pow(options.lineSearch.shrink, 40);
+    energyAlong(triedD, probe);
+    const std::vector<int> off = objective.pointsOffModel(
+      points, probe * triedD, options.kinkShare * probe * -triedSlope);
+    held.resize(points.size(), 0);
+    int added = 0;
+    for (int i : off)
+    {
+      if (!held[i] && points.variable(i) >= 0)
+      {
+        held[i] = 1;
+        ++added;
+      }
+    }
+    if (added == 0)
+    {
+      break;
+    }
+    if (heldH.size() == 0)
+    {
+      heldH = H;
+    }
+    double heavy = 1.0;
+    for (int k = 0; k < heldH.outerSize(); ++k)
+    {
+      heavy = std::max(heavy, std::abs(heldH.coeff(k, k)));
+    }
+    heavy *= 1e8;
+    int count = 0;
+    for (int i = 0; i < points.size(); ++i)
+    {
+      const int v = points.variable(i);
+      if (held[i] && v >= 0)
+      {
+        heldH.coeffRef(v, v) += heavy;
+        heldH.coeffRef(v + 1, v + 1) += heavy;
+        ++count;
+      }
+    }
+    Eigen::VectorXd heldD;
+    const auto solveClock = std::chrono::steady_clock::now();
+    const LinearSolveResult heldSolve = solver.solve(heldH, -g, heldD, false, options.log);
+    result.solveSeconds += secondsSince(solveClock);
+    const double heldSlope = heldSolve.success ? heldD.dot(g) : 0.0;
+    if (!(heldSlope < 0.0))
+    {
+      break;
+    }
+    triedD = heldD;
+    triedSlope = heldSlope;
+    triedStep = firstStep(heldD);
+    tried = armijoBacktracking([&](double t) { return energyAlong(triedD, t); },
+      result.energyBefore,
+      triedSlope,
+      triedStep,
+      options.lineSearch);
+    result.lineSearchTrials += tried.trials;
+    result.kinkRetries = retry + 1;
+    if (tried.success && (!ls.success || tried.energy < ls.energy))
+    {
+      ls = tried;
+      d = triedD;
+      result.heldPoints = count;
+    }
+  }
   points.setPositions(start);
   if (ls.success)
   {

@@ -118,18 +118,90 @@ double Objective::assembleGradient(const SpherePoints& points, Eigen::VectorXd& 
   return total;
 }
 
-double Objective::gradient(const SpherePoints& points, Eigen::VectorXd& gradient)
+void Objective::evaluateDerivatives(
+  const SpherePoints& points, double projectionEps, bool withHessian)
 {
   for (Entry& entry : this->Terms)
   {
-    const std::size_t ne = entry.Term->numberOfElements();
-    const std::size_t n = 2 * entry.Term->pointsPerElement();
+    const int ne = entry.Term->numberOfElements();
+    const int nv = entry.Term->pointsPerElement();
+    const std::size_t n = 2 * nv;
     entry.Values.resize(ne);
     entry.Gradients.resize(ne * n);
-    entry.Term->evaluateDerivatives(
-      points, 0.0, entry.Values.data(), entry.Gradients.data(), nullptr);
+    if (withHessian)
+    {
+      entry.Hessians.resize(ne * n * n);
+    }
+    entry.Term->evaluateDerivatives(points,
+      projectionEps,
+      entry.Values.data(),
+      entry.Gradients.data(),
+      withHessian ? entry.Hessians.data() : nullptr);
+    entry.Points.resize(static_cast<std::size_t>(ne) * nv);
+    for (int e = 0; e < ne; ++e)
+    {
+      entry.Term->elementPoints(e, entry.Points.data() + static_cast<std::size_t>(e) * nv);
+    }
   }
+}
+
+double Objective::gradient(const SpherePoints& points, Eigen::VectorXd& gradient)
+{
+  this->evaluateDerivatives(points, 0.0, false);
   return this->assembleGradient(points, gradient);
+}
+
+std::vector<int> Objective::pointsOffModel(
+  const SpherePoints& points, const Eigen::VectorXd& step, double threshold) const
+{
+  std::vector<char> off(points.size(), 0);
+  std::vector<double> values;
+  std::vector<int> now;
+  for (const Entry& entry : this->Terms)
+  {
+    const int ne = entry.Term->numberOfElements();
+    const int nv = entry.Term->pointsPerElement();
+    if (entry.Weight == 0.0 || entry.Values.size() != static_cast<std::size_t>(ne))
+    {
+      continue;
+    }
+    values.resize(ne);
+    entry.Term->evaluateValues(points, values.data());
+    now.resize(nv);
+    for (int e = 0; e < ne; ++e)
+    {
+      const int* before = entry.Points.data() + static_cast<std::size_t>(e) * nv;
+      const double* g = entry.Gradients.data() + static_cast<std::size_t>(e) * 2 * nv;
+      double model = entry.Values[e];
+      for (int k = 0; k < nv; ++k)
+      {
+        const int var = points.variable(before[k]);
+        if (var >= 0)
+        {
+          model += g[2 * k] * step[var] + g[2 * k + 1] * step[var + 1];
+        }
+      }
+      // Also an element that became invalid (+inf) is off its model.
+      if (!(entry.Weight * (values[e] - model) <= threshold))
+      {
+        entry.Term->elementPoints(e, now.data());
+        for (int k = 0; k < nv; ++k)
+        {
+          off[before[k]] = 1;
+          off[now[k]] = 1;
+        }
+      }
+    }
+  }
+  std::vector<int> result;
+  for (int i = 0; i < points.size(); ++i)
+  {
+    if (off[i])
+    {
+      result.push_back(i);
+    }
+  }
+  return result;
 }
 
 void Objective::buildPattern(const SpherePoints& points)
@@ -282,16 +354,7 @@ double Objective::hessian(const SpherePoints& points,
   {
     *patternChanged = rebuild && !this->PatternUnchanged;
   }
-  for (Entry& entry : this->Terms)
-  {
-    const std::size_t ne = entry.Term->numberOfElements();
-    const std::size_t n = 2 * entry.Term->pointsPerElement();
-    entry.Values.resize(ne);
-    entry.Gradients.resize(ne * n);
-    entry.Hessians.resize(ne * n * n);
-    entry.Term->evaluateDerivatives(
-      points, projectionEps, entry.Values.data(), entry.Gradients.data(), entry.Hessians.data());
-  }
+  this->evaluateDerivatives(points, projectionEps, true);
   const double total = this->assembleGradient(points, gradient);
 
   hessian = this->Pattern; // same structure, zero values

@@ -187,6 +187,16 @@ public:
     Eigen::SparseMatrix<double>& hessian,
     bool* patternChanged = nullptr);
 
+  /// After hessian() or gradient(): the points of the elements whose
+  /// weighted value at `points` exceeds the linear model of that call by more
+  /// than `threshold`, where `step` holds the variables' tangent displacement
+  /// from there. Such elements are not smooth between the two positions (an
+  /// approximation sample that crossed into another T triangle: a kink of the
+  /// piecewise linear lift). The points of both element versions are listed
+  /// (an element may have other points at `points`), each point once.
+  std::vector<int> pointsOffModel(
+    const SpherePoints& points, const Eigen::VectorXd& step, double threshold) const;
+
 private:
   struct Entry
   {
@@ -194,12 +204,15 @@ private:
     double Weight = 1.0;
     // Per-element evaluation buffers, reused between calls.
     std::vector<double> Values, Gradients, Hessians;
+    // Each element's points at the last derivative evaluation.
+    std::vector<int> Points;
     // For each element, n*n indices into the Hessian's value array (-1: lower
     // triangle or locked variable).
     std::vector<int> Scatter;
   };
   void buildPattern(const SpherePoints& points);
   double assembleGradient(const SpherePoints& points, Eigen::VectorXd& gradient);
+  void evaluateDerivatives(const SpherePoints& points, double projectionEps, bool withHessian);
 
   std::vector<Entry> Terms;
   bool PatternValid = false;

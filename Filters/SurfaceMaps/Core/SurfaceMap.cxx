@@ -1,6 +1,7 @@
 #include "SurfaceMap.h"
 
 #include "CommonTriangulation.h"
+#include "MapMetrics.h"
 #include "MapTransfer.h"
 #include "MeshValidation.h"
 #include "NewtonSolver.h"
@@ -330,6 +331,25 @@ BoundViolations boundViolations(const CommonTriangulation& T,
 /// edge length squared, so by sqrt(margin / ratio), at least by 0.7 and at
 /// most by 0.25) so that the mesh-quality term asks for smaller triangles
 /// there, and weights those samples 4 times more in the soft term.
+/// Multiplies each input vertex's sizing by the smallest factor on its
+/// one-ring (factor: per vertex, 1 = unchanged).
+void scaleSizingAround(MapSurface& s, const std::vector<double>& factor)
+{
+  std::vector<double> ring(factor);
+  for (const auto& t : s.triangles)
+  {
+    const double f = std::min({ factor[t[0]], factor[t[1]], factor[t[2]] });
+    for (int k = 0; k < 3; ++k)
+    {
+      ring[t[k]] = std::min(ring[t[k]], f);
+    }
+  }
+  for (std::size_t v = 0; v < ring.size(); ++v)
+  {
+    s.sizing[v] *= ring[v];
+  }
+}
+
 void refineAround(std::vector<MapSurface>& surfaces,
   const BoundViolations& violations,
   double margin)
@@ -344,20 +364,64 @@ void refineAround(std::vector<MapSurface>& surfaces,
       const int v = s.samples.vertices[sample];
       factor[v] = std::min(factor[v], std::clamp(std::sqrt(margin / ratio), 0.25, 0.7));
     }
-    std::vector<double> ring(factor);
-    for (const auto& t : s.triangles)
+    scaleSizingAround(s, factor);
+  }
+}
+
+/// Where T hides a distorted exact map: for every pair (i, j) of the map
+/// term, the triangles of input i whose exact-map distortion (input i ->
+/// input j through T) exceeds `threshold`. T's own map only sees T's
+/// vertices; inside a T triangle the exact map follows the two sphere
+/// embeddings, which can squeeze a whole input triangle where they differ.
+/// Sets `factor` to 0.5 at their corners on input i and at the corners of the
+/// input-j triangles those land in. Returns the number of triangles found
+/// and the largest distortion.
+std::pair<int, double> markExactMapDistortion(CommonTriangulation& T,
+  const std::vector<MapSurface>& surfaces,
+  const std::vector<std::array<int, 2>>& pairs,
+  double threshold,
+  std::vector<std::vector<double>>& factor)
+{
+  SurfaceMesh& mesh = T.mesh();
+  mesh.garbage_collection();
+  const std::vector<std::array<int, 3>> triangles = faceTriangles(mesh);
+  int count = 0;
+  double worst = 0.0;
+  for (const auto& [i, j] : pairs)
+  {
+    std::vector<Eigen::Vector3d> gi(mesh.n_vertices()), gj(mesh.n_vertices());
+    for (auto v : mesh.vertices())
     {
-      const double f = std::min({ factor[t[0]], factor[t[1]], factor[t[2]] });
-      for (int k = 0; k < 3; ++k)
+      gi[v.idx()] = T.g(v, i);
+      gj[v.idx()] = T.g(v, j);
+    }
+    const std::vector<SurfacePoint> images = transferPoints(
+      surfaces[i].sphere, triangles, gi, gj, surfaces[j].sphere, surfaces[j].triangles);
+    std::vector<Eigen::Vector3d> mapped(images.size());
+    for (std::size_t v = 0; v < images.size(); ++v)
+    {
+      mapped[v] = evaluateSurfacePoint(surfaces[j].points, surfaces[j].triangles, images[v]);
+    }
+    const MapMetrics metrics = measureMap(surfaces[i].points, mapped, surfaces[i].triangles);
+    for (std::size_t t = 0; t < surfaces[i].triangles.size(); ++t)
+    {
+      if (metrics.distortion[t] <= threshold)
       {
-        ring[t[k]] = std::min(ring[t[k]], f);
+        continue;
+      }
+      ++count;
+      worst = std::max(worst, metrics.distortion[t]);
+      for (const int v : surfaces[i].triangles[t])
+      {
+        factor[i][v] = 0.5;
+        for (const int w : surfaces[j].triangles[images[v].triangle])
+        {
+          factor[j][w] = 0.5;
+        }
       }
     }
-    for (std::size_t v = 0; v < ring.size(); ++v)
-    {
-      s.sizing[v] *= ring[v];
-    }
   }
+  return { count, worst };
 }
 
 class Schedule
@@ -437,6 +501,7 @@ public:
       newton.maxPointStep = snapshot.vertices >= this->Options.largeMeshVertices
         ? this->Options.maxPointStepLarge
         : this->Options.maxPointStep;
+      newton.kinkRetries = untilLandmarks ? 0 : this->Options.kinkRetries;
       newton.acceptTrial = [&](const SpherePoints& trial)
       { return this->T.update(snapshot, trial); };
       newton.log = this->Options.log;
@@ -461,7 +526,12 @@ public:
       message << name << " iteration " << it + 1 << ": " << snapshot.vertices << " vertices, E "
               << step.energyAfter << ", decrement " << step.decrement << ", step " << step.step
               << " (" << step.lineSearchTrials << " trials"
-              << (step.gradientFallback ? ", gradient" : "") << "), edits " << edits.splits << "/"
+              << (step.gradientFallback ? ", gradient" : "");
+      if (step.kinkRetries > 0)
+      {
+        message << ", " << step.kinkRetries << " kink retries, " << step.heldPoints << " held";
+      }
+      message << "), edits " << edits.splits << "/"
               << edits.collapses << "/" << edits.flips;
       this->Options.log(Logger::Detail, message.str());
       if (this->Options.progress)
@@ -672,6 +742,38 @@ SurfaceMapResult computeSurfaceMap(const std::vector<MapInput>& inputs,
   };
   runPhase("coarse", options.coarse);
   runPhase("fine", options.fine);
+  // Refinement where the fine phase left the exact map squeezed.
+  for (int round = 0; !pairs.empty() && options.fine.enabled && options.fine.maxIterations > 0 &&
+       round < options.refinementRounds;
+       ++round)
+  {
+    std::vector<std::vector<double>> factor;
+    for (const MapSurface& s : surfaces)
+    {
+      factor.emplace_back(s.points.size(), 1.0);
+    }
+    const auto [distorted, worst] =
+      markExactMapDistortion(T, surfaces, pairs, options.refinementDistortion, factor);
+    std::ostringstream message;
+    message << "exact map: " << distorted << " input triangles with distortion above "
+            << options.refinementDistortion;
+    if (distorted > 0)
+    {
+      message << " (largest " << worst << "): refining around them";
+    }
+    options.log(Logger::Info, message.str());
+    if (distorted == 0)
+    {
+      break;
+    }
+    for (std::size_t k = 0; k < surfaces.size(); ++k)
+    {
+      scaleSizingAround(surfaces[k], factor[k]);
+    }
+    T.invalidateFaceEnergies();
+    result.phases.push_back(
+      schedule.run("refine", options.refinementIterations, lockLandmarks, false));
+  }
 
   std::vector<double> bounds;
   if (options.maxError > 0.0)

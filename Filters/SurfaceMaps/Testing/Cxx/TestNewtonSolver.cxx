@@ -76,7 +76,100 @@ struct Problem
   }
 };
 
+// weight |p - target|^2 for one point: smooth.
+struct PullEnergy
+{
+  std::vector<Eigen::Vector3d> targets;
+  double weight = 10.0;
+  int numberOfElements() const { return static_cast<int>(this->targets.size()); }
+  std::array<int, 1> points(int e) const { return { e }; }
+  template<typename T>
+  T operator()(int e, const std::array<Eigen::Matrix<T, 3, 1>, 1>& p) const
+  {
+    const Eigen::Matrix<T, 3, 1> d = p[0] - this->targets[e].template cast<T>();
+    return this->weight * d.squaredNorm();
+  }
+};
+
+// A cliff at point 0's start: flat behind it, slope `steepness` along `up`
+// in front of it, so the gradient at the start (the flat side) says nothing
+// of it: a kink like an approximation sample crossing into a small triangle.
+struct CliffEnergy
+{
+  Eigen::Vector3d start, up;
+  double steepness = 1e4;
+  int numberOfElements() const { return 1; }
+  std::array<int, 1> points(int) const { return { 0 }; }
+  template<typename T>
+  T operator()(int, const std::array<Eigen::Matrix<T, 3, 1>, 1>& p) const
+  {
+    const T x = (p[0] - this->start.template cast<T>()).dot(this->up.template cast<T>());
+    return x > 0.0 ? this->steepness * x : T(0.0) * x;
+  }
+};
+
+// Two points pulled along +y and +z, the first against a cliff along +y.
+struct CliffProblem
+{
+  SpherePoints points{ { Eigen::Vector3d(1, 0, 0), Eigen::Vector3d(0, 1, 0) } };
+  Objective objective;
+
+  CliffProblem()
+  {
+    PullEnergy pull;
+    pull.targets = { Eigen::Vector3d(1, 0.3, 0).normalized(), Eigen::Vector3d(0, 1, 0.3).normalized() };
+    CliffEnergy cliff;
+    cliff.start = Eigen::Vector3d(1, 0, 0);
+    cliff.up = Eigen::Vector3d(0, 1, 0);
+    this->objective.addTerm(std::make_shared<ElementTerm<1, PullEnergy>>("pull", pull));
+    this->objective.addTerm(std::make_shared<ElementTerm<1, CliffEnergy>>("cliff", cliff));
+  }
+};
+
 } // namespace
+
+TEST(NewtonSolver, PointsOffModelAreTheKinkedOnes)
+{
+  CliffProblem problem;
+  Eigen::VectorXd g;
+  Eigen::SparseMatrix<double> H;
+  problem.objective.hessian(problem.points, 1e-9, g, H);
+  EXPECT_GT(g.head<2>().norm(), 0.0);
+  // Both points move 1e-3 along their pulls: the pull leaves its linear model
+  // by about 1e-5 (quadratic), the cliff by about 10.
+  Eigen::VectorXd step = -g;
+  step.segment<2>(0) *= 1e-3 / step.segment<2>(0).norm();
+  step.segment<2>(2) *= 1e-3 / step.segment<2>(2).norm();
+  SpherePoints moved = problem.points;
+  moved.retract(step, 1.0);
+  EXPECT_EQ(problem.objective.pointsOffModel(moved, step, 1e-3), std::vector<int>{ 0 });
+  EXPECT_EQ(problem.objective.pointsOffModel(moved, step, 1e3), std::vector<int>{});
+  EXPECT_EQ(problem.objective.pointsOffModel(moved, step, 1e-7), (std::vector<int>{ 0, 1 }));
+}
+
+TEST(NewtonSolver, KinkRetryHoldsTheBlockingPoint)
+{
+  // Without retries every trial along the Newton direction runs into the
+  // cliff: no step. With one retry point 0 is held and point 1 moves.
+  CliffProblem blocked;
+  LinearSolver solver;
+  NewtonOptions options;
+  const NewtonStepResult none = newtonStep(blocked.objective, blocked.points, solver, options);
+  EXPECT_FALSE(none.moved);
+  EXPECT_EQ(none.kinkRetries, 0);
+
+  CliffProblem problem;
+  LinearSolver solver2;
+  options.kinkRetries = 1;
+  const Eigen::Vector3d p0 = problem.points.position(0), p1 = problem.points.position(1);
+  const NewtonStepResult step = newtonStep(problem.objective, problem.points, solver2, options);
+  EXPECT_TRUE(step.moved);
+  EXPECT_EQ(step.kinkRetries, 1);
+  EXPECT_EQ(step.heldPoints, 1);
+  EXPECT_LT(step.energyAfter, step.energyBefore - 0.1);
+  EXPECT_LT((problem.points.position(0) - p0).norm(), 1e-6);
+  EXPECT_GT((problem.points.position(1) - p1).norm(), 0.1);
+}
 
 TEST(NewtonSolver, EqualAreasUnderTheBarrier)
 {

@@ -195,6 +195,25 @@ TEST(SurfaceMap, InconsistentInputIsRejected)
   EXPECT_THROW(computeSurfaceMap({}), std::invalid_argument);
 }
 
+TEST(SurfaceMap, RefinementRunsWhereTheExactMapIsDistorted)
+{
+  const std::vector<MapInput> inputs = landmarkPair();
+  SurfaceMapOptions options = shortSchedule(3, 4);
+  options.refinementRounds = 1;
+  options.refinementIterations = 3;
+  options.refinementDistortion = 1e9; // nothing that distorted: no refinement
+  const SurfaceMapResult plain = computeSurfaceMap(inputs, options);
+  EXPECT_EQ(plain.phases.back().name, "fine");
+  // Every input triangle is distorted beyond 1 + 1e-9: the sizing is halved
+  // everywhere, so the refinement adds vertices, and the map stays certified.
+  options.refinementDistortion = 1.0 + 1e-9;
+  const SurfaceMapResult refined = computeSurfaceMap(inputs, options);
+  expectCertified(refined);
+  ASSERT_EQ(refined.phases.back().name, "refine");
+  EXPECT_GE(refined.phases.back().iterations, 1);
+  EXPECT_GT(refined.phases.back().vertices, plain.phases.back().vertices);
+}
+
 TEST(SurfaceMap, ErrorBoundHoldsAtEveryInputVertex)
 {
   const std::vector<MapInput> inputs = landmarkPair();
