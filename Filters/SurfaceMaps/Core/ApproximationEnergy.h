@@ -2,6 +2,7 @@
 #pragma once
 
 #include "LiftedPoint.h"
+#include "Objective.h"
 
 #include <array>
 #include <cmath>
@@ -14,10 +15,9 @@ namespace surfacemaps
 /// One input vertex x with sphere point q, inside the T triangle whose
 /// corners are (ga, gb, gc) on that input's sphere and (La, Lb, Lc) lifted:
 /// its base point is alpha La + beta Lb + gamma Lc with q's barycentric
-/// coordinates in (ga, gb, gc) (DESIGN.md section 1.3). Returns the squared
-/// distance x - base point.
+/// coordinates in (ga, gb, gc) (DESIGN.md section 1.3). Returns x - base point.
 template<typename T>
-T squaredBaseDistance(const Eigen::Vector3d& q,
+Eigen::Matrix<T, 3, 1> baseResidual(const Eigen::Vector3d& q,
   const Eigen::Vector3d& x,
   const std::array<Eigen::Matrix<T, 3, 1>, 3>& g,
   const std::array<Eigen::Matrix<T, 3, 1>, 3>& L)
@@ -40,14 +40,23 @@ T squaredBaseDistance(const Eigen::Vector3d& q,
   const T den = da + db + dc;
   const T alpha = da / den;
   const T beta = db / den;
-  T distance2(0.0);
-  for (int r = 0; r < 3; ++r)
+  Eigen::Matrix<T, 3, 1> r;
+  for (int k = 0; k < 3; ++k)
   {
-    const T base = L[2][r] + alpha * (L[0][r] - L[2][r]) + beta * (L[1][r] - L[2][r]);
-    const T d = x[r] - base;
-    distance2 += d * d;
+    r[k] = x[k] - (L[2][k] + alpha * (L[0][k] - L[2][k]) + beta * (L[1][k] - L[2][k]));
   }
-  return distance2;
+  return r;
+}
+
+/// The squared distance x - base point (see baseResidual).
+template<typename T>
+T squaredBaseDistance(const Eigen::Vector3d& q,
+  const Eigen::Vector3d& x,
+  const std::array<Eigen::Matrix<T, 3, 1>, 3>& g,
+  const std::array<Eigen::Matrix<T, 3, 1>, 3>& L)
+{
+  const Eigen::Matrix<T, 3, 1> r = baseResidual<T>(q, x, g, L);
+  return r[0] * r[0] + r[1] * r[1] + r[2] * r[2];
 }
 
 /// The approximation energy of one input vertex: weight * d^2 (soft term,
@@ -106,17 +115,78 @@ struct ApproximationEnergy
     const auto& t = (*this->triangles)[(*this->sampleTriangle)[e]];
     return { t[0] + this->offset, t[1] + this->offset, t[2] + this->offset };
   }
+  /// Sample e's residual x - base point.
   template<typename T>
-  T operator()(int e, const std::array<Eigen::Matrix<T, 3, 1>, 3>& p) const
+  Eigen::Matrix<T, 3, 1> residual(int e, const std::array<Eigen::Matrix<T, 3, 1>, 3>& p) const
   {
     const std::array<int, 3> idx = this->points(e);
     const auto& L = *this->lifts;
     // For derivatives T has six variables: the lifts' own form is T's.
     const std::array<Eigen::Matrix<T, 3, 1>, 3> lifted =
       liftTriangle<T>({ L[idx[0]], L[idx[1]], L[idx[2]] }, p, 0);
-    const T d2 = squaredBaseDistance<T>(
-      this->samples->spherePoints[e], this->samples->positions[e], p, lifted);
-    return approximationEnergy<T>(d2, this->scale * this->samples->weights[e], this->bound);
+    return baseResidual<T>(this->samples->spherePoints[e], this->samples->positions[e], p, lifted);
+  }
+  /// Weight of sample e's squared distance (soft term).
+  double weight(int e) const { return this->scale * this->samples->weights[e]; }
+  template<typename T>
+  T operator()(int e, const std::array<Eigen::Matrix<T, 3, 1>, 3>& p) const
+  {
+    const Eigen::Matrix<T, 3, 1> r = this->residual<T>(e, p);
+    return approximationEnergy<T>(
+      r[0] * r[0] + r[1] * r[1] + r[2] * r[2], this->weight(e), this->bound);
+  }
+};
+
+/// The ApproximationEnergy term whose projected Hessian, for the soft term,
+/// is the Gauss-Newton part 2 w J^T J (J the Jacobian of the base point; + eps
+/// I) instead of an eigenvalue clamp of the exact Hessian: positive
+/// semi-definite by construction, without an eigendecomposition per sample,
+/// and exact where the base point fits (the residual's curvature term is
+/// what it drops). The hard bound, values, gradients alone and the exact
+/// Hessian (projectionEps < 0) are ElementTerm's.
+class ApproximationTerm : public ElementTerm<3, ApproximationEnergy>
+{
+public:
+  explicit ApproximationTerm(ApproximationEnergy energy)
+    : ElementTerm<3, ApproximationEnergy>("approximation", std::move(energy))
+  {
+  }
+
+  void evaluateDerivatives(const SpherePoints& points,
+    double projectionEps,
+    double* values,
+    double* gradients,
+    double* hessians) const override
+  {
+    const ApproximationEnergy& approximation = this->energy();
+    if (!hessians || projectionEps < 0.0 || approximation.bound > 0.0)
+    {
+      ElementTerm<3, ApproximationEnergy>::evaluateDerivatives(
+        points, projectionEps, values, gradients, hessians);
+      return;
+    }
+    const int ne = this->numberOfElements();
+#pragma omp parallel for schedule(static) if (ne > ParallelDerivativeThreshold)
+    for (int e = 0; e < ne; ++e)
+    {
+      using D = Dual<6, false>;
+      const std::array<int, 3> t = approximation.points(e);
+      std::array<Eigen::Matrix<D, 3, 1>, 3> p;
+      for (int k = 0; k < 3; ++k)
+      {
+        p[k] = points.seeded<D>(t[k], 2 * k);
+      }
+      const Eigen::Matrix<D, 3, 1> r = approximation.residual<D>(e, p);
+      const double w = approximation.weight(e);
+      Eigen::Map<Eigen::Matrix<double, 6, 1>> gradient(gradients + static_cast<std::size_t>(e) * 6);
+      Eigen::Map<Eigen::Matrix<double, 6, 6>> H(hessians + static_cast<std::size_t>(e) * 36);
+      values[e] = w * (r[0].val * r[0].val + r[1].val * r[1].val + r[2].val * r[2].val);
+      gradient = 2.0 * w * (r[0].val * r[0].grad + r[1].val * r[1].grad + r[2].val * r[2].grad);
+      H.noalias() = 2.0 * w *
+        (r[0].grad * r[0].grad.transpose() + r[1].grad * r[1].grad.transpose() +
+          r[2].grad * r[2].grad.transpose());
+      H.diagonal().array() += projectionEps;
+    }
   }
 };
 

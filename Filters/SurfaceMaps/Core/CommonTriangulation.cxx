@@ -633,9 +633,7 @@ void CommonTriangulation::buildObjective(const Snapshot& s,
       approximation.lifts = &s.lifts;
       approximation.offset = i * nv;
       approximation.bound = w.bound(i);
-      objective.addTerm(
-        std::make_shared<ElementTerm<3, ApproximationEnergy>>("approximation", approximation),
-        w.approximation);
+      objective.addTerm(std::make_shared<ApproximationTerm>(approximation), w.approximation);
     }
     if (w.landmark > 0.0 && i < static_cast<int>(landmarkTargets.size()))
     {

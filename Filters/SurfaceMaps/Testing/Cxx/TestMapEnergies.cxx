@@ -1,4 +1,5 @@
 // The surface map's energy terms: derivatives against finite differences.
+#include "ApproximationEnergy.h"
 #include "CommonTriangulation.h"
 #include "FiniteDifferences.h"
 #include "MapDistortionEnergy.h"
@@ -98,6 +99,75 @@ TEST(MapEnergies, HardApproximationBoundMatchesFiniteDifferences)
   w.bounds = { 0.5, 0.5 };
   EnergyCase c(w);
   c.expectDerivativesMatch();
+}
+
+TEST(MapEnergies, ApproximationGaussNewtonHessian)
+{
+  // Values and gradients are the exact ones; the Hessian is 2 w J^T J:
+  // positive semi-definite, and the exact Hessian where every sample sits on
+  // its base point (zero residual).
+  MapEnergyWeights w;
+  w.approximation = 10.0;
+  EnergyCase c(w);
+  Objective objective;
+  c.T->buildObjective(c.snapshot, landmarkTargets(c.surfaces), objective);
+  const ApproximationTerm* term = nullptr;
+  for (std::size_t k = 0; k < objective.numberOfTerms() && !term; ++k)
+  {
+    term = dynamic_cast<const ApproximationTerm*>(&objective.term(k));
+  }
+  ASSERT_NE(term, nullptr);
+  const int ne = term->numberOfElements();
+  ASSERT_GT(ne, 10);
+  auto derivatives = [&](double projectionEps, std::vector<double>& v, std::vector<double>& g,
+                       std::vector<double>& h)
+  {
+    v.assign(ne, 0.0);
+    g.assign(ne * 6, 0.0);
+    h.assign(ne * 36, 0.0);
+    term->evaluateDerivatives(c.points, projectionEps, v.data(), g.data(), h.data());
+  };
+  std::vector<double> v0, g0, h0, v1, g1, h1;
+  derivatives(-1.0, v0, g0, h0); // exact, not projected
+  derivatives(0.0, v1, g1, h1);  // Gauss-Newton
+  for (int e = 0; e < ne; ++e)
+  {
+    EXPECT_NEAR(v1[e], v0[e], 1e-12 * (1.0 + std::abs(v0[e])));
+    const Eigen::Map<const Eigen::Matrix<double, 6, 1>> a(g0.data() + 6 * e), b(g1.data() + 6 * e);
+    EXPECT_LE((a - b).norm(), 1e-10 * (1.0 + a.norm()));
+    const Eigen::Map<const Eigen::Matrix<double, 6, 6>> H(h1.data() + 36 * e);
+    EXPECT_LE((H - H.transpose()).norm(), 1e-12 * (1.0 + H.norm()));
+    using Solver = Eigen::SelfAdjointEigenSolver<Eigen::Matrix<double, 6, 6>>;
+    EXPECT_GE(Solver(H).eigenvalues().minCoeff(), -1e-10 * (1.0 + H.norm()));
+  }
+  // They differ where the residual is not zero (the test can tell them apart).
+  double largest = 0.0;
+  for (int e = 0; e < ne; ++e)
+  {
+    const Eigen::Map<const Eigen::Matrix<double, 6, 6>> exact(h0.data() + 36 * e);
+    const Eigen::Map<const Eigen::Matrix<double, 6, 6>> gaussNewton(h1.data() + 36 * e);
+    largest = std::max(largest, (exact - gaussNewton).norm() / (1.0 + exact.norm()));
+  }
+  EXPECT_GT(largest, 1e-6);
+  // Every sample onto its base point: then both Hessians agree.
+  const ApproximationEnergy& energy = term->energy();
+  ApproximationSamples& samples = c.T->surface(energy.offset == 0 ? 0 : 1).samples;
+  for (int e = 0; e < ne; ++e)
+  {
+    const std::array<int, 3> idx = energy.points(e);
+    const std::array<Eigen::Vector3d, 3> p{ c.points.position(idx[0]), c.points.position(idx[1]),
+      c.points.position(idx[2]) };
+    samples.positions[e] -= energy.residual<double>(e, p);
+  }
+  derivatives(-1.0, v0, g0, h0);
+  derivatives(0.0, v1, g1, h1);
+  for (int e = 0; e < ne; ++e)
+  {
+    EXPECT_NEAR(v1[e], 0.0, 1e-20);
+    const Eigen::Map<const Eigen::Matrix<double, 6, 6>> exact(h0.data() + 36 * e);
+    const Eigen::Map<const Eigen::Matrix<double, 6, 6>> gaussNewton(h1.data() + 36 * e);
+    EXPECT_LE((exact - gaussNewton).norm(), 1e-8 * (1.0 + exact.norm()));
+  }
 }
 
 TEST(MapEnergies, TermsVanishOrAreMinimalWhereTheyShould)
