@@ -137,9 +137,12 @@ struct SurfaceMapOptions
   /// to less than a tenth are retried with the points held that make the
   /// energy leave its model (kinks of the approximation term where a sample
   /// crosses into a T triangle much smaller on the sphere than on the
-  /// surface), up to this many times per iteration (0: off). Without it the
-  /// hands pair's fine phase stopped moving at iteration 40 of 50.
-  int kinkRetries = 1;
+  /// surface), up to this many times per iteration (0: off). With the old
+  /// approximation Hessian (eigenvalue clamp) the hands pair's fine phase
+  /// stopped moving at iteration 40 of 50 without it; with the Gauss-Newton
+  /// one the phase keeps moving, and one retry per step cost the hands 3-4 s
+  /// for no better map (README, "Surface map"), hence off by default.
+  int kinkRetries = 0;
   /// After the fine phase, up to refinementRounds rounds (0: off) of
   /// refinementIterations more iterations with the fine phase's settings,
   /// each after halving the sizing around the input triangles whose
