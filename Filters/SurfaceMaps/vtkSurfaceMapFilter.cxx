@@ -131,6 +131,10 @@ surfacemaps::SurfaceMapOptions mapOptions(vtkSurfaceMapFilter* f)
   options.approximationWeight = f->GetApproximationWeight();
   options.maxError = f->GetMaxError();
   options.boundIterations = f->GetBoundIterations();
+  options.refinementRounds = f->GetRefinementRounds();
+  options.refinementIterations = f->GetRefinementIterations();
+  options.refinementDistortion = f->GetRefinementDistortion();
+  options.kinkRetries = f->GetKinkRetries();
   options.approximationSamples = f->GetApproximationSamples();
   options.minEdgeLength = f->GetMinEdgeLength();
   options.maxEdgeLength = f->GetMaxEdgeLength();
@@ -871,6 +875,10 @@ void vtkSurfaceMapFilter::PrintSettings(ostream& os, vtkIndent indent, bool all)
   os << indent << "PairMode: " << this->PairMode << "\n";
   os << indent << "MaxError: " << this->MaxError << "\n";
   os << indent << "BoundIterations: " << this->BoundIterations << "\n";
+  os << indent << "RefinementRounds: " << this->RefinementRounds << "\n";
+  os << indent << "RefinementIterations: " << this->RefinementIterations << "\n";
+  os << indent << "RefinementDistortion: " << this->RefinementDistortion << "\n";
+  os << indent << "KinkRetries: " << this->KinkRetries << "\n";
   os << indent << "ApproximationSamples: " << this->ApproximationSamples << "\n";
   os << indent << "SizingMode: " << this->SizingMode << "\n";
   os << indent << "MinEdgeLength: " << this->MinEdgeLength << "\n";

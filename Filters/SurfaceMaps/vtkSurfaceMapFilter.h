@@ -320,6 +320,37 @@ public:
 
   ///@{
   /**
+   * Refinement where the exact map squeezes an input triangle: after the fine
+   * phase, up to RefinementRounds rounds (default 2, range [0, 100]; 0 off)
+   * of RefinementIterations more iterations (default 10, range [1, 100000])
+   * with the fine phase's settings, each after halving the sizing around the
+   * input triangles whose exact-map distortion exceeds RefinementDistortion
+   * (default 10, range [1, 1e12]). Inside a T triangle the exact map follows
+   * the two sphere embeddings, which T's own map cannot see. No round runs
+   * when no triangle is that distorted.
+   */
+  vtkSetClampMacro(RefinementRounds, int, 0, 100);
+  vtkGetMacro(RefinementRounds, int);
+  vtkSetClampMacro(RefinementIterations, int, 1, 100000);
+  vtkGetMacro(RefinementIterations, int);
+  vtkSetClampMacro(RefinementDistortion, double, 1.0, 1e12);
+  vtkGetMacro(RefinementDistortion, double);
+  ///@}
+
+  ///@{
+  /**
+   * Newton steps of the coarse and fine phases that the line search cuts
+   * below a tenth are solved again up to KinkRetries times with the points
+   * held that make the energy leave its model (an approximation sample
+   * crossing into a T triangle that is tiny on the sphere). Default 0 (off),
+   * range [0, 10]; each retry costs a factorisation.
+   */
+  vtkSetClampMacro(KinkRetries, int, 0, 10);
+  vtkGetMacro(KinkRetries, int);
+  ///@}
+
+  ///@{
+  /**
    * Input vertices per input the approximation term uses at most (an evenly
    * spread subsample of larger inputs). Default 50000, range [1, 1e9].
    */
@@ -442,6 +473,10 @@ protected:
   int PairMode = PAIRS_STAR;
   double MaxError = 0.0;
   int BoundIterations = 20;
+  int RefinementRounds = 2;
+  int RefinementIterations = 10;
+  double RefinementDistortion = 10.0;
+  int KinkRetries = 0;
   int ApproximationSamples = 50000;
   int SizingMode = SIZING_ARRAY_OR_CURVATURE;
   double MinEdgeLength = 1e-3;

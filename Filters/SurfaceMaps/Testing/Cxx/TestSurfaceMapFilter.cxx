@@ -429,6 +429,33 @@ TEST(SurfaceMapFilter, NumberOfThreadsGivesTheSameMapAndIsRestored)
   EXPECT_EQ(points[0], points[1]);
 }
 
+TEST(SurfaceMapFilter, RefinementSettingsReachTheEngine)
+{
+  // Every input triangle is distorted beyond 1 + 1e-9: one refinement round
+  // of two iterations runs after the fine phase.
+  vtkNew<vtkSurfaceMapFilter> filter;
+  useShortSchedule(filter);
+  filter->SetRefinementRounds(1);
+  filter->SetRefinementIterations(2);
+  filter->SetRefinementDistortion(1.0 + 1e-9);
+  filter->SetKinkRetries(1);
+  Events events;
+  watch(filter, events);
+  filter->AddInputData(ellipsoid(2, 1.0, 0.8, 0.6));
+  filter->AddInputData(ellipsoid(2, 1.0, 1.0, 0.5, 0.2));
+  filter->Update();
+  ASSERT_TRUE(events.Errors.empty()) << events.Errors.front();
+  vtkPolyData* out = filter->GetOutput(1);
+  auto* phases = vtkStringArray::SafeDownCast(out->GetFieldData()->GetAbstractArray("PhaseName"));
+  ASSERT_NE(phases, nullptr);
+  ASSERT_GE(phases->GetNumberOfValues(), 3);
+  const vtkIdType last = phases->GetNumberOfValues() - 1;
+  EXPECT_EQ(phases->GetValue(last), "refine");
+  EXPECT_EQ(phases->GetValue(last - 1), "fine");
+  EXPECT_LE(fieldValue(out, "PhaseIterations", static_cast<int>(last)), 2);
+  EXPECT_EQ(fieldValue(out, "Bijective"), 1.0);
+}
+
 TEST(SurfaceMapFilter, GivenSpherePositionIsUsed)
 {
   vtkNew<vtkSphereEmbeddingFilter> embedding;
@@ -611,6 +638,17 @@ TEST(SurfaceMapFilter, SettingsDefaultsAndPrintSelf)
   EXPECT_EQ(filter->GetOutputMode(), vtkSurfaceMapFilter::COMMON_TRIANGULATION);
   EXPECT_EQ(filter->GetMaxError(), 0.0);
   EXPECT_EQ(filter->GetBoundIterations(), 20);
+  EXPECT_EQ(filter->GetMeshWeight(), 0.5);
+  EXPECT_EQ(filter->GetMapWeight(), 1.0);
+  EXPECT_EQ(filter->GetApproximationWeight(), 0.25);
+  EXPECT_EQ(filter->GetRefinementRounds(), 2);
+  EXPECT_EQ(filter->GetRefinementIterations(), 10);
+  EXPECT_EQ(filter->GetRefinementDistortion(), 10.0);
+  EXPECT_EQ(filter->GetKinkRetries(), 0);
+  filter->SetRefinementDistortion(0.5);
+  EXPECT_EQ(filter->GetRefinementDistortion(), 1.0);
+  filter->SetKinkRetries(99);
+  EXPECT_EQ(filter->GetKinkRetries(), 10);
   EXPECT_EQ(filter->GetNumberOfThreads(), 0);
   filter->SetPairModeToCycle();
   EXPECT_EQ(filter->GetPairMode(), vtkSurfaceMapFilter::PAIRS_CYCLE);
@@ -628,7 +666,11 @@ TEST(SurfaceMapFilter, SettingsDefaultsAndPrintSelf)
          "OutputMode: 0",
          "NumberOfThreads: 0",
          "SizingMode: 0",
-         "ApproximationSamples: 50000" })
+         "ApproximationSamples: 50000",
+         "RefinementRounds: 2",
+         "RefinementIterations: 10",
+         "RefinementDistortion: 1\n",
+         "KinkRetries: 10" })
   {
     EXPECT_NE(print.str().find(name), std::string::npos) << name;
   }
