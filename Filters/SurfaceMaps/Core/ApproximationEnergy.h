@@ -170,13 +170,8 @@ public:
     for (int e = 0; e < ne; ++e)
     {
       using D = Dual<6, false>;
-      const std::array<int, 3> t = approximation.points(e);
-      std::array<Eigen::Matrix<D, 3, 1>, 3> p;
-      for (int k = 0; k < 3; ++k)
-      {
-        p[k] = points.seeded<D>(t[k], 2 * k);
-      }
-      const Eigen::Matrix<D, 3, 1> r = approximation.residual<D>(e, p);
+      const Eigen::Matrix<D, 3, 1> r =
+        approximation.residual<D>(e, this->template seededPoints<D>(points, e));
       const double w = approximation.weight(e);
       Eigen::Map<Eigen::Matrix<double, 6, 1>> gradient(gradients + static_cast<std::size_t>(e) * 6);
       Eigen::Map<Eigen::Matrix<double, 6, 6>> H(hessians + static_cast<std::size_t>(e) * 36);

@@ -18,18 +18,12 @@ void BijectivityBarrierTerm::evaluateDerivatives(const SpherePoints& points,
       points, projectionEps, values, gradients, hessians);
     return;
   }
-  const BarrierEnergy& barrier = this->energy();
   const int ne = this->numberOfElements();
 #pragma omp parallel for schedule(static) if (ne > ParallelDerivativeThreshold)
   for (int e = 0; e < ne; ++e)
   {
     using D = Dual<6, false>;
-    const std::array<int, 3> t = barrier.points(e);
-    std::array<Eigen::Matrix<D, 3, 1>, 3> p;
-    for (int k = 0; k < 3; ++k)
-    {
-      p[k] = points.seeded<D>(t[k], 2 * k);
-    }
+    const std::array<Eigen::Matrix<D, 3, 1>, 3> p = this->seededPoints<D>(points, e);
     const D volume = p[0].dot(p[1].cross(p[2])) / 6.0;
     Eigen::Map<Eigen::Matrix<double, 6, 1>> gradient(gradients + static_cast<std::size_t>(e) * 6);
     Eigen::Map<Eigen::Matrix<double, 6, 6>> H(hessians + static_cast<std::size_t>(e) * 36);

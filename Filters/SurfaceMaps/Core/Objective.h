@@ -82,6 +82,18 @@ public:
   }
   Energy& energy() { return this->Functor; }
   const Energy& energy() const { return this->Functor; }
+  /// Element e's points seeded with T's variables (2 per point, in order).
+  template<typename T>
+  std::array<Eigen::Matrix<T, 3, 1>, NV> seededPoints(const SpherePoints& points, int e) const
+  {
+    const std::array<int, NV> idx = this->Functor.points(e);
+    std::array<Eigen::Matrix<T, 3, 1>, NV> p;
+    for (int k = 0; k < NV; ++k)
+    {
+      p[k] = points.seeded<T>(idx[k], 2 * k);
+    }
+    return p;
+  }
 
   void evaluateValues(const SpherePoints& points, double* values) const override
   {
@@ -129,13 +141,7 @@ private:
 #pragma omp parallel for schedule(static) if (ne > ParallelDerivativeThreshold)
     for (int e = 0; e < ne; ++e)
     {
-      const std::array<int, NV> idx = this->Functor.points(e);
-      std::array<Eigen::Matrix<T, 3, 1>, NV> p;
-      for (int k = 0; k < NV; ++k)
-      {
-        p[k] = points.seeded<T>(idx[k], 2 * k);
-      }
-      const T energy = this->Functor(e, p);
+      const T energy = this->Functor(e, this->template seededPoints<T>(points, e));
       values[e] = energy.val;
       Eigen::Map<Eigen::Matrix<double, N, 1>>(gradients + static_cast<std::size_t>(e) * N) =
         energy.grad;
