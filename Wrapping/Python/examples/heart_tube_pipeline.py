@@ -196,18 +196,6 @@ def from_portable(data, time=None):
     return synthetic.polydata(data["points"], data["triangles"], landmarks=data["landmarks"], time=time)
 
 
-def write_vtp(mesh, path):
-    from vtkmodules.vtkIOXML import vtkXMLPolyDataWriter
-    os.makedirs(os.path.dirname(path), exist_ok=True)
-    writer = vtkXMLPolyDataWriter()
-    writer.SetFileName(path + ".tmp.vtp")
-    writer.SetInputData(mesh)
-    writer.SetDataModeToBinary()
-    if not writer.Write():
-        raise OSError(f"cannot write {path}")
-    os.replace(path + ".tmp.vtp", path)
-
-
 def stage_directories(input_dir):
     stages = sorted(e.path for e in os.scandir(input_dir) if e.is_dir())
     if not stages:
@@ -279,7 +267,8 @@ def average_stage(stages, k, args):
     generated = time.perf_counter()
     if args.write_specimens:
         for i, mesh in enumerate(meshes):
-            write_vtp(mesh, os.path.join(args.output_dir, "specimens", stages.name(k), f"specimen_{i:02d}.vtp"))
+            surfacemaps.write_mesh(
+                mesh, os.path.join(args.output_dir, "specimens", stages.name(k), f"specimen_{i:02d}.vtp"))
     lifted = surfacemaps.map_surfaces(meshes, pairs="star", **map_settings(args))
     mapped = time.perf_counter()
     average = surfacemaps.average_surfaces(lifted, align=args.align)
@@ -416,7 +405,7 @@ def run(args, comm):
         raise surfacemaps.InputError(f"the stage times must increase: {times}")
     averages = [from_portable(r, time=t) for r, t in zip(results, times)]
     for r, average in zip(results, averages):
-        write_vtp(average, os.path.join(args.output_dir, "averages", r["name"] + ".vtp"))
+        surfacemaps.write_mesh(average, os.path.join(args.output_dir, "averages", r["name"] + ".vtp"))
 
     timings = dict(ranks=comm.size, omp_num_threads=os.environ.get("OMP_NUM_THREADS"),
                    stages=[{key: r[key] for key in ("stage", "name", "time", "rank", "specimens", "specimen_vertices",
@@ -433,7 +422,7 @@ def run(args, comm):
     timings["final_map_s"] = time.perf_counter() - step
     timings["final_map_threads"] = final_threads or None
     for k, keyframe in enumerate(keyframes):
-        write_vtp(keyframe, os.path.join(args.output_dir, "keyframes", f"keyframe_{k:02d}.vtp"))
+        surfacemaps.write_mesh(keyframe, os.path.join(args.output_dir, "keyframes", f"keyframe_{k:02d}.vtp"))
     timings["common_vertices"] = keyframes[0].GetNumberOfPoints()
 
     step = time.perf_counter()

@@ -354,6 +354,32 @@ def _replace_atomically(path, write):
         raise
 
 
+def write_mesh(mesh, path):
+    """Write vtkPolyData to a VTK XML .vtp file atomically (temporary name, then rename).
+
+    The directory is created if needed; readers never see a partial file.
+    Raises ValueError for another suffix, OSError when the file cannot be written.
+    """
+    import os
+    from vtkmodules.vtkIOXML import vtkXMLPolyDataWriter
+
+    path = os.fspath(path)
+    if not path.lower().endswith(".vtp"):
+        raise ValueError(f"{path}: write_mesh writes VTK XML PolyData (.vtp)")
+    directory = os.path.dirname(path)
+    if directory:
+        os.makedirs(directory, exist_ok=True)
+
+    def write(temporary):
+        writer = vtkXMLPolyDataWriter()
+        writer.SetInputData(mesh)
+        writer.SetFileName(temporary)
+        if writer.Write() != 1:
+            raise OSError(f"cannot write {path}")
+
+    _replace_atomically(path, write)
+
+
 def write_time_series(source, times, directory, name="surface"):
     """Write a temporal source's output at each time as VTK XML files plus a ParaView collection.
 
@@ -371,7 +397,6 @@ def write_time_series(source, times, directory, name="surface"):
     """
     import os
     from xml.sax.saxutils import quoteattr
-    from vtkmodules.vtkIOXML import vtkXMLPolyDataWriter
 
     times = [float(t) for t in times]
     directory = os.fspath(directory)
@@ -386,15 +411,7 @@ def write_time_series(source, times, directory, name="surface"):
             if messages or output is None or output.GetNumberOfPoints() == 0:
                 raise InputError("; ".join(messages) or f"no surface at time {t!r}")
             path = os.path.join(directory, f"{name}_{k:0{digits}d}.vtp")
-
-            def write(temporary, output=output):
-                writer = vtkXMLPolyDataWriter()
-                writer.SetInputData(output)
-                writer.SetFileName(temporary)
-                if writer.Write() != 1:
-                    raise OSError(f"cannot write {path}")
-
-            _replace_atomically(path, write)
+            write_mesh(output, path)
             paths.append(path)
     finally:
         source.RemoveObserver(tag)

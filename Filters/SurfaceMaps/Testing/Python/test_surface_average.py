@@ -207,3 +207,20 @@ def test_settings_round_trip():
     assert s.GetInterpolationMode() == s.INTERPOLATE_SMOOTH and s.GetStepsPerInterval() == 1
     s.SetKeyframeTime(1, 2.5)
     assert s.GetKeyframeTime(1) == 2.5 and s.GetKeyframeTime(3) == 3.0
+
+
+def test_write_mesh(copies, tmp_path):
+    _, common = copies
+    path = tmp_path / "new" / "mesh.vtp"  # directory created
+    surfacemaps.write_mesh(common[0], path)
+    assert os.listdir(tmp_path / "new") == ["mesh.vtp"]  # no temporary left
+    reader = vtkXMLPolyDataReader()
+    reader.SetFileName(str(path))
+    reader.Update()
+    assert np.array_equal(points(reader.GetOutput()), points(common[0]))
+    assert np.array_equal(triangles(reader.GetOutput()), triangles(common[0]))
+    with pytest.raises(ValueError, match="vtp"):
+        surfacemaps.write_mesh(common[0], tmp_path / "mesh.obj")
+    (tmp_path / "file").write_text("not a directory")
+    with pytest.raises(OSError):
+        surfacemaps.write_mesh(common[0], tmp_path / "file" / "mesh.vtp")
