@@ -144,44 +144,31 @@ struct ApproximationEnergy
 /// and exact where the base point fits (the residual's curvature term is
 /// what it drops). The hard bound, values, gradients alone and the exact
 /// Hessian (projectionEps < 0) are ElementTerm's.
-class ApproximationTerm : public ElementTerm<3, ApproximationEnergy>
+class ApproximationTerm : public GaussNewtonTerm<3, ApproximationEnergy>
 {
 public:
   explicit ApproximationTerm(ApproximationEnergy energy)
-    : ElementTerm<3, ApproximationEnergy>("approximation", std::move(energy))
+    : GaussNewtonTerm<3, ApproximationEnergy>("approximation", std::move(energy))
   {
   }
 
-  void evaluateDerivatives(const SpherePoints& points,
-    double projectionEps,
-    double* values,
-    double* gradients,
-    double* hessians) const override
+protected:
+  bool useGaussNewton() const override { return !(this->energy().bound > 0.0); }
+  double gaussNewton(const SpherePoints& points,
+    int e,
+    Eigen::Map<Eigen::Matrix<double, 6, 1>>& gradient,
+    Eigen::Map<Eigen::Matrix<double, 6, 6>>& H) const override
   {
+    using D = Dual<6, false>;
     const ApproximationEnergy& approximation = this->energy();
-    if (!hessians || projectionEps < 0.0 || approximation.bound > 0.0)
-    {
-      ElementTerm<3, ApproximationEnergy>::evaluateDerivatives(
-        points, projectionEps, values, gradients, hessians);
-      return;
-    }
-    const int ne = this->numberOfElements();
-#pragma omp parallel for schedule(static) if (ne > ParallelDerivativeThreshold)
-    for (int e = 0; e < ne; ++e)
-    {
-      using D = Dual<6, false>;
-      const Eigen::Matrix<D, 3, 1> r =
-        approximation.residual<D>(e, this->template seededPoints<D>(points, e));
-      const double w = approximation.weight(e);
-      Eigen::Map<Eigen::Matrix<double, 6, 1>> gradient(gradients + static_cast<std::size_t>(e) * 6);
-      Eigen::Map<Eigen::Matrix<double, 6, 6>> H(hessians + static_cast<std::size_t>(e) * 36);
-      values[e] = w * (r[0].val * r[0].val + r[1].val * r[1].val + r[2].val * r[2].val);
-      gradient = 2.0 * w * (r[0].val * r[0].grad + r[1].val * r[1].grad + r[2].val * r[2].grad);
-      H.noalias() = 2.0 * w *
-        (r[0].grad * r[0].grad.transpose() + r[1].grad * r[1].grad.transpose() +
-          r[2].grad * r[2].grad.transpose());
-      H.diagonal().array() += projectionEps;
-    }
+    const Eigen::Matrix<D, 3, 1> r =
+      approximation.residual<D>(e, this->template seededPoints<D>(points, e));
+    const double w = approximation.weight(e);
+    gradient = 2.0 * w * (r[0].val * r[0].grad + r[1].val * r[1].grad + r[2].val * r[2].grad);
+    H.noalias() = 2.0 * w *
+      (r[0].grad * r[0].grad.transpose() + r[1].grad * r[1].grad.transpose() +
+        r[2].grad * r[2].grad.transpose());
+    return w * (r[0].val * r[0].val + r[1].val * r[1].val + r[2].val * r[2].val);
   }
 };
 

@@ -16,19 +16,19 @@ namespace surfacemaps
 /// where the barrier matters most (vol -> 0), and without an
 /// eigendecomposition per triangle. Values, gradients alone and the exact
 /// Hessian (projectionEps < 0, for derivative checks) are ElementTerm's.
-class BijectivityBarrierTerm : public ElementTerm<3, BarrierEnergy>
+class BijectivityBarrierTerm : public GaussNewtonTerm<3, BarrierEnergy>
 {
 public:
   explicit BijectivityBarrierTerm(BarrierEnergy energy)
-    : ElementTerm<3, BarrierEnergy>("barrier", std::move(energy))
+    : GaussNewtonTerm<3, BarrierEnergy>("barrier", std::move(energy))
   {
   }
 
-  void evaluateDerivatives(const SpherePoints& points,
-    double projectionEps,
-    double* values,
-    double* gradients,
-    double* hessians) const override;
+protected:
+  double gaussNewton(const SpherePoints& points,
+    int e,
+    Eigen::Map<Eigen::Matrix<double, 6, 1>>& gradient,
+    Eigen::Map<Eigen::Matrix<double, 6, 6>>& H) const override;
 };
 
 } // namespace surfacemaps

@@ -161,6 +161,51 @@ private:
   Energy Functor;
 };
 
+/// An ElementTerm whose projected Hessian is a Gauss-Newton one, positive
+/// semi-definite by construction (no eigendecomposition per element):
+/// derived classes compute each element's value, gradient and that Hessian
+/// (without the projection's + eps I) in gaussNewton(). Values, gradients
+/// alone, the exact Hessian (projectionEps < 0) and elements for which
+/// useGaussNewton() is false are ElementTerm's.
+template<int NV, typename Energy>
+class GaussNewtonTerm : public ElementTerm<NV, Energy>
+{
+public:
+  using ElementTerm<NV, Energy>::ElementTerm;
+  static constexpr int N = 2 * NV;
+
+  void evaluateDerivatives(const SpherePoints& points,
+    double projectionEps,
+    double* values,
+    double* gradients,
+    double* hessians) const override
+  {
+    if (!hessians || projectionEps < 0.0 || !this->useGaussNewton())
+    {
+      ElementTerm<NV, Energy>::evaluateDerivatives(
+        points, projectionEps, values, gradients, hessians);
+      return;
+    }
+    const int ne = this->numberOfElements();
+#pragma omp parallel for schedule(static) if (ne > ElementTerm<NV, Energy>::ParallelDerivativeThreshold)
+    for (int e = 0; e < ne; ++e)
+    {
+      Eigen::Map<Eigen::Matrix<double, N, 1>> gradient(gradients + static_cast<std::size_t>(e) * N);
+      Eigen::Map<Eigen::Matrix<double, N, N>> H(hessians + static_cast<std::size_t>(e) * N * N);
+      values[e] = this->gaussNewton(points, e, gradient, H);
+      H.diagonal().array() += projectionEps;
+    }
+  }
+
+protected:
+  virtual bool useGaussNewton() const { return true; }
+  /// Element e's value; its gradient and Gauss-Newton Hessian into the maps.
+  virtual double gaussNewton(const SpherePoints& points,
+    int e,
+    Eigen::Map<Eigen::Matrix<double, N, 1>>& gradient,
+    Eigen::Map<Eigen::Matrix<double, N, N>>& H) const = 0;
+};
+
 /// Value, gradient and projected Hessian of a weighted sum of terms.
 class Objective
 {
