@@ -11,7 +11,6 @@
 #include <cmath>
 #include <limits>
 #include <stdexcept>
-#include <stdexcept>
 
 namespace surfacemaps
 {
@@ -553,11 +552,7 @@ bool CommonTriangulation::update(Snapshot& s, const SpherePoints& points) const
       }
     }
   }
-  if (!walked)
-  {
-    return false;
-  }
-  return true;
+  return walked;
 }
 
 void CommonTriangulation::writeBack(const Snapshot& s, const SpherePoints& points)

@@ -103,6 +103,12 @@ NewtonStepResult newtonStep(Objective& objective,
   LineSearchResult tried = ls;
   std::vector<char> held;
   Eigen::SparseMatrix<double> heldH;
+  double heavy = 0.0;
+  int heldCount = 0;
+  if (options.kinkRetries > 0)
+  {
+    objective.recordElementPoints();
+  }
   for (int retry = 0; retry < options.kinkRetries &&
        (!tried.success || tried.step < options.kinkStep * triedStep);
        ++retry)
@@ -112,13 +118,27 @@ NewtonStepResult newtonStep(Objective& objective,
     energyAlong(triedD, probe);
     const std::vector<int> off = objective.pointsOffModel(
       points, probe * triedD, options.kinkShare * probe * -triedSlope);
-    held.resize(points.size(), 0);
+    if (heldH.size() == 0)
+    {
+      // Far above every diagonal entry of H, added once to each held point.
+      heldH = H;
+      heavy = 1.0;
+      for (int k = 0; k < H.outerSize(); ++k)
+      {
+        heavy = std::max(heavy, std::abs(H.coeff(k, k)));
+      }
+      heavy *= 1e8;
+      held.assign(points.size(), 0);
+    }
     int added = 0;
     for (int i : off)
     {
-      if (!held[i] && points.variable(i) >= 0)
+      const int v = points.variable(i);
+      if (!held[i] && v >= 0)
       {
         held[i] = 1;
+        heldH.coeffRef(v, v) += heavy;
+        heldH.coeffRef(v + 1, v + 1) += heavy;
         ++added;
       }
     }
@@ -126,27 +146,7 @@ NewtonStepResult newtonStep(Objective& objective,
     {
       break;
     }
-    if (heldH.size() == 0)
-    {
-      heldH = H;
-    }
-    double heavy = 1.0;
-    for (int k = 0; k < heldH.outerSize(); ++k)
-    {
-      heavy = std::max(heavy, std::abs(heldH.coeff(k, k)));
-    }
-    heavy *= 1e8;
-    int count = 0;
-    for (int i = 0; i < points.size(); ++i)
-    {
-      const int v = points.variable(i);
-      if (held[i] && v >= 0)
-      {
-        heldH.coeffRef(v, v) += heavy;
-        heldH.coeffRef(v + 1, v + 1) += heavy;
-        ++count;
-      }
-    }
+    heldCount += added;
     Eigen::VectorXd heldD;
     const auto solveClock = std::chrono::steady_clock::now();
     const LinearSolveResult heldSolve = solver.solve(heldH, -g, heldD, false, options.log);
@@ -170,7 +170,7 @@ NewtonStepResult newtonStep(Objective& objective,
     {
       ls = tried;
       d = triedD;
-      result.heldPoints = count;
+      result.heldPoints = heldCount;
     }
   }
   points.setPositions(start);

@@ -124,8 +124,7 @@ void Objective::evaluateDerivatives(
   for (Entry& entry : this->Terms)
   {
     const int ne = entry.Term->numberOfElements();
-    const int nv = entry.Term->pointsPerElement();
-    const std::size_t n = 2 * nv;
+    const std::size_t n = 2 * entry.Term->pointsPerElement();
     entry.Values.resize(ne);
     entry.Gradients.resize(ne * n);
     if (withHessian)
@@ -137,6 +136,15 @@ void Objective::evaluateDerivatives(
       entry.Values.data(),
       entry.Gradients.data(),
       withHessian ? entry.Hessians.data() : nullptr);
+  }
+}
+
+void Objective::recordElementPoints()
+{
+  for (Entry& entry : this->Terms)
+  {
+    const int ne = entry.Term->numberOfElements();
+    const int nv = entry.Term->pointsPerElement();
     entry.Points.resize(static_cast<std::size_t>(ne) * nv);
     for (int e = 0; e < ne; ++e)
     {
@@ -161,7 +169,8 @@ std::vector<int> Objective::pointsOffModel(
   {
     const int ne = entry.Term->numberOfElements();
     const int nv = entry.Term->pointsPerElement();
-    if (entry.Weight == 0.0 || entry.Values.size() != static_cast<std::size_t>(ne))
+    if (entry.Weight == 0.0 || entry.Values.size() != static_cast<std::size_t>(ne) ||
+      entry.Points.size() != static_cast<std::size_t>(ne) * nv)
     {
       continue;
     }

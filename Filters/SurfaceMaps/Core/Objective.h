@@ -238,7 +238,10 @@ public:
     Eigen::SparseMatrix<double>& hessian,
     bool* patternChanged = nullptr);
 
-  /// After hessian() or gradient(): the points of the elements whose
+  /// Records every element's current points, the ones pointsOffModel
+  /// compares against (call after hessian() or gradient(), before moving).
+  void recordElementPoints();
+  /// After hessian() or gradient() and recordElementPoints(): the points of the elements whose
   /// weighted value at `points` exceeds the linear model of that call by more
   /// than `threshold`, where `step` holds the variables' tangent displacement
   /// from there. Such elements are not smooth between the two positions (an
@@ -255,7 +258,7 @@ private:
     double Weight = 1.0;
     // Per-element evaluation buffers, reused between calls.
     std::vector<double> Values, Gradients, Hessians;
-    // Each element's points at the last derivative evaluation.
+    // Each element's points at the last recordElementPoints().
     std::vector<int> Points;
     // For each element, n*n indices into the Hessian's value array (-1: lower
     // triangle or locked variable).

@@ -326,11 +326,6 @@ BoundViolations boundViolations(const CommonTriangulation& T,
   return v;
 }
 
-/// Where input vertices are too far from their base points: shrinks the
-/// sizing around them (the vertex and its one-ring; distance grows like the
-/// edge length squared, so by sqrt(margin / ratio), at least by 0.7 and at
-/// most by 0.25) so that the mesh-quality term asks for smaller triangles
-/// there, and weights those samples 4 times more in the soft term.
 /// Multiplies each input vertex's sizing by the smallest factor on its
 /// one-ring (factor: per vertex, 1 = unchanged).
 void scaleSizingAround(MapSurface& s, const std::vector<double>& factor)
@@ -350,6 +345,11 @@ void scaleSizingAround(MapSurface& s, const std::vector<double>& factor)
   }
 }
 
+/// Where input vertices are too far from their base points: shrinks the
+/// sizing around them (the vertex and its one-ring; distance grows like the
+/// edge length squared, so by sqrt(margin / ratio), at least by 0.7 and at
+/// most by 0.25) so that the mesh-quality term asks for smaller triangles
+/// there, and weights those samples 4 times more in the soft term.
 void refineAround(std::vector<MapSurface>& surfaces,
   const BoundViolations& violations,
   double margin)
@@ -374,8 +374,9 @@ void refineAround(std::vector<MapSurface>& surfaces,
 /// vertices; inside a T triangle the exact map follows the two sphere
 /// embeddings, which can squeeze a whole input triangle where they differ.
 /// Sets `factor` to 0.5 at their corners on input i and at the corners of the
-/// input-j triangles those land in. Returns the number of triangles found
-/// and the largest distortion.
+/// input-j triangles those land in (T is garbage-collected first, for its
+/// flat triangle list). Returns the number of triangles found and the
+/// largest distortion.
 std::pair<int, double> markExactMapDistortion(CommonTriangulation& T,
   const std::vector<MapSurface>& surfaces,
   const std::vector<std::array<int, 2>>& pairs,

@@ -134,6 +134,7 @@ TEST(NewtonSolver, PointsOffModelAreTheKinkedOnes)
   Eigen::VectorXd g;
   Eigen::SparseMatrix<double> H;
   problem.objective.hessian(problem.points, 1e-9, g, H);
+  problem.objective.recordElementPoints();
   EXPECT_GT(g.head<2>().norm(), 0.0);
   // Both points move 1e-3 along their pulls: the pull leaves its linear model
   // by about 1e-5 (quadratic), the cliff by about 10.
