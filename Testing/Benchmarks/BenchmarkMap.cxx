@@ -140,7 +140,7 @@ int main(int argc, char* argv[])
       "[--landmark-iterations N] [--coarse N] [--fine N] [--target-error E] "
       "[--coarse-error E] [--fine-barrier W] [--coarse-barrier W] [--map-weight W] "
       "[--mesh-weight W] [--approximation-weight W] [--max-error F] "
-      "[--max-point-step S] [--no-landmark-relaxation] [-v]\n");
+      "[--kink-retries N] [--max-point-step S] [--no-landmark-relaxation] [-v]\n");
     return 2;
   }
   if (verbose)
