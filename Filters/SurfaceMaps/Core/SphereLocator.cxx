@@ -131,7 +131,18 @@ SphereLocation walkOnSphere(const Eigen::Vector3d& p,
 {
   // Leave the triangle across an edge that has p on its outer side (exact
   // orientation), choosing among several such edges in rotating order so
-  // that the walk cannot cycle.
+  // that the walk rarely circles.
+  auto locationIn = [&](int t)
+  {
+    const auto& tri = triangles[t];
+    SphereLocation location;
+    location.triangle = t;
+    const auto w = SphereLocator::barycentric(p, points[tri[0]], points[tri[1]], points[tri[2]]);
+    location.alpha = w[0];
+    location.beta = w[1];
+    location.gamma = w[2];
+    return location;
+  };
   int t = start;
   int rotate = 0;
   const long long limit = 4 * static_cast<long long>(triangles.size()) + 16;
@@ -154,18 +165,30 @@ SphereLocation walkOnSphere(const Eigen::Vector3d& p,
     }
     if (exit < 0)
     {
-      SphereLocation location;
-      location.triangle = t;
-      const auto w = SphereLocator::barycentric(p, points[tri[0]], points[tri[1]], points[tri[2]]);
-      location.alpha = w[0];
-      location.beta = w[1];
-      location.gamma = w[2];
-      return location;
+      return locationIn(t);
     }
     t = neighbours[t][exit];
     rotate = (rotate + 1) % 3;
   }
-  throw std::runtime_error("walk on the sphere did not end (is the embedding bijective?)");
+  // A visibility walk can circle on a triangulation far from Delaunay (seen
+  // on a strongly compressed embedding); every point lies in some triangle's
+  // cone, so scan them all.
+  for (std::size_t k = 0; k < triangles.size(); ++k)
+  {
+    const auto& tri = triangles[k];
+    if (orient3dOrigin(points[tri[1]], points[tri[2]], p) >= 0 &&
+      orient3dOrigin(points[tri[2]], points[tri[0]], p) >= 0 &&
+      orient3dOrigin(points[tri[0]], points[tri[1]], p) >= 0)
+    {
+      if (visited)
+      {
+        *visited += static_cast<long long>(k) + 1;
+      }
+      return locationIn(static_cast<int>(k));
+    }
+  }
+  throw std::runtime_error("no triangle of the sphere embedding contains the point (is the "
+                           "embedding bijective, the point finite?)");
 }
 
 std::array<double, 3> SphereLocator::barycentric(const Eigen::Vector3d& p,

@@ -29,9 +29,11 @@ std::vector<std::array<int, 3>> triangleNeighbours(
 /// The visibility walk behind SphereLocator, on any bijective spherical
 /// triangulation given by triangles, their neighbours and the corner points
 /// (`points[corner index]`): starts at triangle `start`, crosses edges that
-/// have p on their outer side (exact predicates). `visited`, if given, is
-/// increased by the number of triangles visited. Throws std::runtime_error if
-/// the walk does not end (the triangulation is not bijective).
+/// have p on their outer side (exact predicates); should the walk circle (a
+/// triangulation far from Delaunay), scans all triangles. `visited`, if
+/// given, is increased by the number of triangles visited. Throws
+/// std::runtime_error if no triangle contains p (the triangulation is not
+/// bijective, or p is not finite).
 SphereLocation walkOnSphere(const Eigen::Vector3d& p,
   int start,
   const std::vector<std::array<int, 3>>& triangles,

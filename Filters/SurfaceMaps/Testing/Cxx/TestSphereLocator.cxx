@@ -97,6 +97,81 @@ TEST(SphereLocator, StartingFromTheGridKeepsWalksShort)
   EXPECT_LT(locator.visited(), 10 * static_cast<long long>(points.size()));
 }
 
+TEST(SphereLocator, WalkThatCirclesStillFindsTheTriangle)
+{
+  // Sixteen triangles of a real, certified embedding (the vulcan hand's,
+  // where it is strongly compressed), far from Delaunay: from triangle 0 the
+  // rotating visibility walk towards p circles through triangles 0-14 around
+  // triangle 15, which contains p. Neighbours outside the patch (never
+  // crossed) point back to their own triangle.
+  const std::vector<Eigen::Vector3d> points{
+    { -0.320734287939757, -0.69156867324808724, -0.64719570975220286 },
+    { -0.65499177092611183, -0.54270524053998326, -0.52579159551053578 },
+    { -0.58536831293138925, -0.5681100553635946, -0.57844178895601317 },
+    { -0.53224618964714931, -0.60782177696032413, -0.58929337435515505 },
+    { -0.73587796088758395, -0.48895260090586412, -0.46841112363747534 },
+    { -0.64329070449964665, -0.5238118651005268, -0.55838893209326412 },
+    { -0.75010121289633069, -0.4449849486432686, -0.48922036536963703 },
+    { -0.78578006840987724, -0.41671540897962556, -0.45705355485841281 },
+    { -0.46407769268964838, -0.63075850407730649, -0.62191285939592122 },
+    { -0.66980041748799934, -0.5158255929907043, -0.53412672499013769 },
+    { -0.70159423883523853, -0.49791758082147941, -0.50974857208440305 },
+    { -0.62080121248433395, -0.55698475678084858, -0.55170085670747326 },
+    { -0.37033661523126327, -0.66038279116282306, -0.65325749942503564 },
+    { -0.75541931606003188, -0.46062611217135707, -0.46600991589159801 },
+    { -0.25816022511082859, -0.69606639208223486, -0.66995886141191296 },
+  };
+  const std::vector<std::array<int, 3>> triangles{
+    { 9, 2, 11 },
+    { 5, 2, 9 },
+    { 11, 2, 12 },
+    { 12, 8, 11 },
+    { 14, 8, 12 },
+    { 8, 14, 0 },
+    { 3, 8, 0 },
+    { 4, 8, 3 },
+    { 4, 1, 8 },
+    { 1, 4, 13 },
+    { 7, 1, 13 },
+    { 10, 1, 7 },
+    { 10, 7, 6 },
+    { 10, 6, 9 },
+    { 9, 6, 5 },
+    { 8, 1, 11 },
+  };
+  const std::vector<std::array<int, 3>> neighbours{
+    { 2, 0, 1 },
+    { 0, 14, 1 },
+    { 2, 3, 0 },
+    { 15, 2, 4 },
+    { 3, 4, 5 },
+    { 5, 6, 4 },
+    { 5, 6, 7 },
+    { 6, 7, 8 },
+    { 15, 7, 9 },
+    { 9, 10, 8 },
+    { 9, 10, 11 },
+    { 10, 12, 11 },
+    { 12, 13, 11 },
+    { 14, 13, 12 },
+    { 14, 1, 13 },
+    { 15, 3, 8 },
+  };
+  const Eigen::Vector3d p(-0.56512944909529939, -0.58918163854177374, -0.57748913632247167);
+  long long visited = 0;
+  const SphereLocation location =
+    walkOnSphere(p, 0, triangles, neighbours, points.data(), &visited);
+  EXPECT_EQ(location.triangle, 15);
+  EXPECT_GT(visited, 4 * static_cast<long long>(triangles.size()) + 16); // it did circle
+  for (const double w : { location.alpha, location.beta, location.gamma })
+  {
+    EXPECT_GE(w, 0.0);
+    EXPECT_LE(w, 1.0);
+  }
+  // A point in no triangle of the patch (the opposite side of the sphere).
+  EXPECT_THROW(walkOnSphere(-p, 0, triangles, neighbours, points.data()), std::runtime_error);
+}
+
 TEST(SphereLocator, BarycentricFormulaOfTheDesign)
 {
   const Eigen::Vector3d a(1, 0, 0), b(0, 1, 0), c(0, 0, 1);
