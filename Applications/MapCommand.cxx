@@ -91,6 +91,13 @@ const char* const MapHelp =
   "  --approximation-weight W (defaults 0.5, 1, 0.25; >= 0): more map\n"
   "                           weight, a lower distortion; more approximation\n"
   "                           weight, a closer T and exact map\n"
+  "  --refinement-rounds N    after the fine phase, up to N rounds (default 3;\n"
+  "                           0 off) of 10 more iterations with T refined\n"
+  "                           where the exact map is distorted: first where\n"
+  "                           its distortion exceeds D (--refinement-distortion,\n"
+  "                           default 1.5, >= 1), then only where an input\n"
+  "                           triangle is squeezed (distortion above 10)\n"
+  "  --refinement-distortion D\n"
   "\n"
   "Exit code 0 with a certified map, 2 for bad usage or input (also an output\n"
   "directory that cannot be written), 3 if no certified map was found, 1 for\n"
@@ -205,7 +212,8 @@ int runMap(const std::vector<std::string>& args)
     const bool takesValue = a == "--output-dir" || a == "--target-error" || a == "--coarse-error" ||
       a == "--max-error" || a == "--pairs" || a == "--landmark-iterations" ||
       a == "--coarse-iterations" || a == "--fine-iterations" || a == "--mesh-weight" ||
-      a == "--map-weight" || a == "--approximation-weight";
+      a == "--map-weight" || a == "--approximation-weight" || a == "--refinement-rounds" ||
+      a == "--refinement-distortion";
     if (takesValue && i + 1 >= args.size())
     {
       throw UsageError{ a + " needs a value" };
@@ -268,6 +276,24 @@ int runMap(const std::vector<std::string>& args)
       {
         map->SetApproximationWeight(w);
       }
+    }
+    else if (a == "--refinement-rounds")
+    {
+      const double rounds = parseNumber(a, args[++i]);
+      if (!(rounds >= 0.0 && rounds <= 100.0) || rounds != std::floor(rounds))
+      {
+        throw UsageError{ a + " must be a whole number between 0 and 100" };
+      }
+      map->SetRefinementRounds(static_cast<int>(rounds));
+    }
+    else if (a == "--refinement-distortion")
+    {
+      const double d = parseNumber(a, args[++i]);
+      if (!(d >= 1.0 && d <= 1e12))
+      {
+        throw UsageError{ a + " must be between 1 and 1e12" };
+      }
+      map->SetRefinementDistortion(d);
     }
     else if (a == "--pairs")
     {
@@ -467,7 +493,12 @@ int runMap(const std::vector<std::string>& args)
        << ", \"fine_iterations\": " << map->GetFineIterations()
        << ", \"mesh_weight\": " << jsonNumber(map->GetMeshWeight())
        << ", \"map_weight\": " << jsonNumber(map->GetMapWeight())
-       << ", \"approximation_weight\": " << jsonNumber(map->GetApproximationWeight()) << " },\n";
+       << ", \"approximation_weight\": " << jsonNumber(map->GetApproximationWeight())
+       << ", \"refinement_rounds\": " << map->GetRefinementRounds()
+       << ", \"refinement_iterations\": " << map->GetRefinementIterations()
+       << ", \"refinement_distortion\": " << jsonNumber(map->GetRefinementDistortion())
+       << ", \"refinement_growth\": " << jsonNumber(map->GetRefinementGrowth())
+       << ", \"squeeze_distortion\": " << jsonNumber(map->GetSqueezeDistortion()) << " },\n";
   json << "  \"phases\": [";
   auto* phaseNames =
     vtkStringArray::SafeDownCast(first->GetFieldData()->GetAbstractArray("PhaseName"));

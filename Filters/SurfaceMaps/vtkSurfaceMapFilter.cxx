@@ -134,6 +134,8 @@ surfacemaps::SurfaceMapOptions mapOptions(vtkSurfaceMapFilter* f)
   options.refinementRounds = f->GetRefinementRounds();
   options.refinementIterations = f->GetRefinementIterations();
   options.refinementDistortion = f->GetRefinementDistortion();
+  options.refinementGrowth = f->GetRefinementGrowth();
+  options.squeezeDistortion = f->GetSqueezeDistortion();
   options.kinkRetries = f->GetKinkRetries();
   options.approximationSamples = f->GetApproximationSamples();
   options.minEdgeLength = f->GetMinEdgeLength();
@@ -878,6 +880,8 @@ void vtkSurfaceMapFilter::PrintSettings(ostream& os, vtkIndent indent, bool all)
   os << indent << "RefinementRounds: " << this->RefinementRounds << "\n";
   os << indent << "RefinementIterations: " << this->RefinementIterations << "\n";
   os << indent << "RefinementDistortion: " << this->RefinementDistortion << "\n";
+  os << indent << "RefinementGrowth: " << this->RefinementGrowth << "\n";
+  os << indent << "SqueezeDistortion: " << this->SqueezeDistortion << "\n";
   os << indent << "KinkRetries: " << this->KinkRetries << "\n";
   os << indent << "ApproximationSamples: " << this->ApproximationSamples << "\n";
   os << indent << "SizingMode: " << this->SizingMode << "\n";

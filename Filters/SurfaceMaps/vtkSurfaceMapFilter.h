@@ -320,14 +320,21 @@ public:
 
   ///@{
   /**
-   * Refinement where the exact map squeezes an input triangle: after the fine
-   * phase, up to RefinementRounds rounds (default 2, range [0, 100]; 0 off)
-   * of RefinementIterations more iterations (default 10, range [1, 100000])
-   * with the fine phase's settings, each after halving the sizing around the
-   * input triangles whose exact-map distortion exceeds RefinementDistortion
-   * (default 10, range [1, 1e12]). Inside a T triangle the exact map follows
-   * the two sphere embeddings, which T's own map cannot see. No round runs
-   * when no triangle is that distorted.
+   * Refinement where the exact map is distorted: after the fine phase, up to
+   * RefinementRounds rounds (default 3, range [0, 100]; 0 off) of
+   * RefinementIterations more iterations (default 10, range [1, 100000]; at
+   * most FineIterations) with the fine phase's settings, each after shrinking the sizing around
+   * the input triangles whose exact-map distortion max(s1, 1/s2) exceeds a
+   * threshold. The first round uses RefinementDistortion (default 1.5, range
+   * [1, 1e12]) and gives T more vertices where the map is distorted; with a
+   * fraction `area` of an input above it, the sizing there shrinks by
+   * 1 / sqrt(1 + RefinementGrowth / area), but at most by half
+   * (RefinementGrowth default 0.25, range [0, 1e12]; 0: the round only
+   * iterates). The later rounds use SqueezeDistortion (default 10, range
+   * [1, 1e12]) and halve the sizing: they repair input triangles that the
+   * exact map squeezes inside a T triangle, where it follows the two sphere
+   * embeddings, which T's own map cannot see. No round runs when no
+   * triangle is that distorted.
    */
   vtkSetClampMacro(RefinementRounds, int, 0, 100);
   vtkGetMacro(RefinementRounds, int);
@@ -335,6 +342,10 @@ public:
   vtkGetMacro(RefinementIterations, int);
   vtkSetClampMacro(RefinementDistortion, double, 1.0, 1e12);
   vtkGetMacro(RefinementDistortion, double);
+  vtkSetClampMacro(RefinementGrowth, double, 0.0, 1e12);
+  vtkGetMacro(RefinementGrowth, double);
+  vtkSetClampMacro(SqueezeDistortion, double, 1.0, 1e12);
+  vtkGetMacro(SqueezeDistortion, double);
   ///@}
 
   ///@{
@@ -473,9 +484,11 @@ protected:
   int PairMode = PAIRS_STAR;
   double MaxError = 0.0;
   int BoundIterations = 20;
-  int RefinementRounds = 2;
+  int RefinementRounds = 3;
   int RefinementIterations = 10;
-  double RefinementDistortion = 10.0;
+  double RefinementDistortion = 1.5;
+  double RefinementGrowth = 0.25;
+  double SqueezeDistortion = 10.0;
   int KinkRetries = 0;
   int ApproximationSamples = 50000;
   int SizingMode = SIZING_ARRAY_OR_CURVATURE;

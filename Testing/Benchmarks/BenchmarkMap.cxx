@@ -116,6 +116,26 @@ int main(int argc, char* argv[])
     {
       options.kinkRetries = std::atoi(value());
     }
+    else if (arg == "--refinement-rounds")
+    {
+      options.refinementRounds = std::atoi(value());
+    }
+    else if (arg == "--refinement-iterations")
+    {
+      options.refinementIterations = std::atoi(value());
+    }
+    else if (arg == "--refinement-distortion")
+    {
+      options.refinementDistortion = std::atof(value());
+    }
+    else if (arg == "--squeeze-distortion")
+    {
+      options.squeezeDistortion = std::atof(value());
+    }
+    else if (arg == "--refinement-growth")
+    {
+      options.refinementGrowth = std::atof(value());
+    }
     else if (arg == "--max-point-step")
     {
       options.maxPointStep = std::atof(value());
@@ -140,7 +160,9 @@ int main(int argc, char* argv[])
       "[--landmark-iterations N] [--coarse N] [--fine N] [--target-error E] "
       "[--coarse-error E] [--fine-barrier W] [--coarse-barrier W] [--map-weight W] "
       "[--mesh-weight W] [--approximation-weight W] [--max-error F] "
-      "[--kink-retries N] [--max-point-step S] [--no-landmark-relaxation] [-v]\n");
+      "[--kink-retries N] [--refinement-rounds N] [--refinement-iterations N] "
+      "[--refinement-distortion D] [--squeeze-distortion D] [--max-point-step S] "
+      "[--no-landmark-relaxation] [-v]\n");
     return 2;
   }
   if (verbose)

@@ -19,8 +19,10 @@ def test_map_writes_common_and_mapped_meshes_and_a_report(tmp_path):
     assert report["certificate"]["bijective"] is True
     assert report["certificate"]["spherical_degrees"] == [1.0, 1.0]
     assert [i["vertices"] for i in report["inputs"]] == [642, 642]
-    assert [p["name"] for p in report["phases"]] == ["landmarks", "coarse", "fine"]
-    assert [p["iterations"] <= cap for p, cap in zip(report["phases"], (10, 3, 3))] == [True] * 3
+    names = [p["name"] for p in report["phases"]]
+    # Refinement rounds (at most 3, each at most the fine cap) where the exact map is distorted.
+    assert names[:3] == ["landmarks", "coarse", "fine"] and set(names[3:]) <= {"refine"} and len(names) <= 6
+    assert [p["iterations"] <= cap for p, cap in zip(report["phases"], (10, 3, 3, 3, 3, 3))] == [True] * len(names)
     assert all(p["seconds"] > 0 for p in report["phases"])
     assert report["landmark_error"] < 1e-9  # landmarks kept exactly
     assert report["energy"]["map"] >= 1.0
@@ -79,6 +81,31 @@ def test_term_weights_are_settings(tmp_path):
     assert (settings["mesh_weight"], settings["map_weight"], settings["approximation_weight"]) == (1, 2, 4)
     for option in ("--mesh-weight", "--map-weight", "--approximation-weight"):
         for value in ("-1", "x", "2e6"):
+            r = run("map", data("ellipsoid.obj"), option, value, "--output-dir", tmp_path / "o")
+            assert r.returncode == 2 and option in r.stderr, (option, value, r.stderr)
+
+
+def test_refinement_is_a_setting(tmp_path):
+    out = tmp_path / "unrefined"
+    r = run("map", data("ellipsoid.obj"), data("blob.off"), "--landmarks", data("ellipsoid.pinned"),
+            data("blob.vts"), *SHORT, "--refinement-rounds", "0", "--output-dir", out)
+    assert r.returncode == 0, r.stderr
+    report = json.loads((out / "report.json").read_text())
+    assert [p["name"] for p in report["phases"]] == ["landmarks", "coarse", "fine"]
+    settings = report["settings"]
+    assert (settings["refinement_rounds"], settings["refinement_distortion"]) == (0, 1.5)
+    assert (settings["refinement_growth"], settings["squeeze_distortion"]) == (0.25, 10)
+    out = tmp_path / "refined"
+    r = run("map", data("ellipsoid.obj"), data("blob.off"), "--landmarks", data("ellipsoid.pinned"),
+            data("blob.vts"), *SHORT, "--refinement-rounds", "1", "--refinement-distortion", "1.000001",
+            "--output-dir", out)
+    assert r.returncode == 0, r.stderr
+    report = json.loads((out / "report.json").read_text())
+    assert [p["name"] for p in report["phases"]] == ["landmarks", "coarse", "fine", "refine"]
+    assert report["settings"]["refinement_distortion"] == 1.000001
+    for option, values in (("--refinement-rounds", ("-1", "1.5", "101", "x")),
+                           ("--refinement-distortion", ("0.5", "x", "2e12"))):
+        for value in values:
             r = run("map", data("ellipsoid.obj"), option, value, "--output-dir", tmp_path / "o")
             assert r.returncode == 2 and option in r.stderr, (option, value, r.stderr)
 

@@ -373,14 +373,18 @@ void refineAround(std::vector<MapSurface>& surfaces,
 /// input j through T) exceeds `threshold`. T's own map only sees T's
 /// vertices; inside a T triangle the exact map follows the two sphere
 /// embeddings, which can squeeze a whole input triangle where they differ.
-/// Sets `factor` to 0.5 at their corners on input i and at the corners of the
-/// input-j triangles those land in (T is garbage-collected first, for its
-/// flat triangle list). Returns the number of triangles found and the
-/// largest distortion.
+/// Lowers `factor` at their corners on input i and at the corners of the
+/// input-j triangles those land in, to 1 / sqrt(1 + growth / area) (area:
+/// their unit-area fraction of input i) but at least 0.5: the vertex density
+/// there grows about 1 + growth / area times, at most 4 times (infinite
+/// growth: halved sizing). T is garbage-collected first, for its flat
+/// triangle list. Returns the number of triangles found and the largest
+/// distortion.
 std::pair<int, double> markExactMapDistortion(CommonTriangulation& T,
   const std::vector<MapSurface>& surfaces,
   const std::vector<std::array<int, 2>>& pairs,
   double threshold,
+  double growth,
   std::vector<std::vector<double>>& factor)
 {
   SurfaceMesh& mesh = T.mesh();
@@ -404,20 +408,28 @@ std::pair<int, double> markExactMapDistortion(CommonTriangulation& T,
       mapped[v] = evaluateSurfacePoint(surfaces[j].points, surfaces[j].triangles, images[v]);
     }
     const MapMetrics metrics = measureMap(surfaces[i].points, mapped, surfaces[i].triangles);
+    double area = 0.0;
+    std::vector<int> distorted;
     for (std::size_t t = 0; t < surfaces[i].triangles.size(); ++t)
     {
-      if (metrics.distortion[t] <= threshold)
+      if (metrics.distortion[t] > threshold)
       {
-        continue;
+        distorted.push_back(static_cast<int>(t));
+        area += metrics.areaP[t];
+        worst = std::max(worst, metrics.distortion[t]);
       }
-      ++count;
-      worst = std::max(worst, metrics.distortion[t]);
+    }
+    // Where much of the input is distorted, T must not grow by 4 times there.
+    const double f = std::clamp(1.0 / std::sqrt(1.0 + growth / std::max(area, 1e-12)), 0.5, 1.0);
+    count += static_cast<int>(distorted.size());
+    for (const int t : distorted)
+    {
       for (const int v : surfaces[i].triangles[t])
       {
-        factor[i][v] = 0.5;
+        factor[i][v] = std::min(factor[i][v], f);
         for (const int w : surfaces[j].triangles[images[v].triangle])
         {
-          factor[j][w] = 0.5;
+          factor[j][w] = std::min(factor[j][w], f);
         }
       }
     }
@@ -532,8 +544,7 @@ public:
       {
         message << ", " << step.kinkRetries << " kink retries, " << step.heldPoints << " held";
       }
-      message << "), edits " << edits.splits << "/"
-              << edits.collapses << "/" << edits.flips;
+      message << "), edits " << edits.splits << "/" << edits.collapses << "/" << edits.flips;
       this->Options.log(Logger::Detail, message.str());
       if (this->Options.progress)
       {
@@ -743,7 +754,8 @@ SurfaceMapResult computeSurfaceMap(const std::vector<MapInput>& inputs,
   };
   runPhase("coarse", options.coarse);
   runPhase("fine", options.fine);
-  // Refinement where the fine phase left the exact map squeezed.
+  // Refinement where the fine phase left the exact map distorted, then
+  // where it is still squeezed.
   for (int round = 0; !pairs.empty() && options.fine.enabled && options.fine.maxIterations > 0 &&
        round < options.refinementRounds;
        ++round)
@@ -753,11 +765,15 @@ SurfaceMapResult computeSurfaceMap(const std::vector<MapInput>& inputs,
     {
       factor.emplace_back(s.points.size(), 1.0);
     }
-    const auto [distorted, worst] =
-      markExactMapDistortion(T, surfaces, pairs, options.refinementDistortion, factor);
+    const double threshold = round == 0 ? options.refinementDistortion : options.squeezeDistortion;
+    const auto [distorted, worst] = markExactMapDistortion(T,
+      surfaces,
+      pairs,
+      threshold,
+      round == 0 ? options.refinementGrowth : std::numeric_limits<double>::infinity(),
+      factor);
     std::ostringstream message;
-    message << "exact map: " << distorted << " input triangles with distortion above "
-            << options.refinementDistortion;
+    message << "exact map: " << distorted << " input triangles with distortion above " << threshold;
     if (distorted > 0)
     {
       message << " (largest " << worst << "): refining around them";
@@ -772,8 +788,10 @@ SurfaceMapResult computeSurfaceMap(const std::vector<MapInput>& inputs,
       scaleSizingAround(surfaces[k], factor[k]);
     }
     T.invalidateFaceEnergies();
-    result.phases.push_back(
-      schedule.run("refine", options.refinementIterations, lockLandmarks, false));
+    result.phases.push_back(schedule.run("refine",
+      std::min(options.refinementIterations, options.fine.maxIterations),
+      lockLandmarks,
+      false));
   }
 
   std::vector<double> bounds;

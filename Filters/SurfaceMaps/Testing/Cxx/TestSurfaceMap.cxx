@@ -214,6 +214,50 @@ TEST(SurfaceMap, RefinementRunsWhereTheExactMapIsDistorted)
   EXPECT_GT(refined.phases.back().vertices, plain.phases.back().vertices);
 }
 
+TEST(SurfaceMap, LaterRefinementRoundsOnlyRepairSqueezes)
+{
+  const std::vector<MapInput> inputs = landmarkPair();
+  SurfaceMapOptions options = shortSchedule(3, 4);
+  options.refinementRounds = 3;
+  options.refinementIterations = 2;
+  options.refinementDistortion = 1.0 + 1e-9; // the first round always runs
+  auto refineRounds = [&](const SurfaceMapResult& r)
+  {
+    int rounds = 0;
+    for (const MapPhaseReport& phase : r.phases)
+    {
+      rounds += phase.name == "refine";
+    }
+    return rounds;
+  };
+  options.squeezeDistortion = 1e9; // no squeeze: the later rounds do not run
+  EXPECT_EQ(refineRounds(computeSurfaceMap(inputs, options)), 1);
+  options.squeezeDistortion = 1.0 + 1e-9; // everything counts as squeezed
+  const SurfaceMapResult all = computeSurfaceMap(inputs, options);
+  expectCertified(all);
+  EXPECT_EQ(refineRounds(all), 3);
+}
+
+TEST(SurfaceMap, RefinementGrowthBoundsTheFirstRound)
+{
+  // Every triangle distorted (area fraction 1): growth 1e9 halves the sizing
+  // everywhere, growth 1e-6 leaves it (1 / sqrt(1 + 1e-6)), so only the
+  // former adds many vertices.
+  const std::vector<MapInput> inputs = landmarkPair();
+  SurfaceMapOptions options = shortSchedule(3, 4);
+  options.refinementRounds = 1;
+  options.refinementIterations = 3;
+  options.refinementDistortion = 1.0 + 1e-9;
+  options.refinementGrowth = 1e-6;
+  const SurfaceMapResult kept = computeSurfaceMap(inputs, options);
+  options.refinementGrowth = 1e9;
+  const SurfaceMapResult halved = computeSurfaceMap(inputs, options);
+  expectCertified(halved);
+  ASSERT_EQ(kept.phases.back().name, "refine");
+  ASSERT_EQ(halved.phases.back().name, "refine");
+  EXPECT_GT(halved.phases.back().vertices, 1.5 * kept.phases.back().vertices);
+}
+
 TEST(SurfaceMap, ErrorBoundHoldsAtEveryInputVertex)
 {
   const std::vector<MapInput> inputs = landmarkPair();

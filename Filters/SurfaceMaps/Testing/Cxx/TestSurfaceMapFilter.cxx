@@ -641,12 +641,18 @@ TEST(SurfaceMapFilter, SettingsDefaultsAndPrintSelf)
   EXPECT_EQ(filter->GetMeshWeight(), 0.5);
   EXPECT_EQ(filter->GetMapWeight(), 1.0);
   EXPECT_EQ(filter->GetApproximationWeight(), 0.25);
-  EXPECT_EQ(filter->GetRefinementRounds(), 2);
+  EXPECT_EQ(filter->GetRefinementRounds(), 3);
   EXPECT_EQ(filter->GetRefinementIterations(), 10);
-  EXPECT_EQ(filter->GetRefinementDistortion(), 10.0);
+  EXPECT_EQ(filter->GetRefinementDistortion(), 1.5);
+  EXPECT_EQ(filter->GetRefinementGrowth(), 0.25);
+  EXPECT_EQ(filter->GetSqueezeDistortion(), 10.0);
   EXPECT_EQ(filter->GetKinkRetries(), 0);
   filter->SetRefinementDistortion(0.5);
   EXPECT_EQ(filter->GetRefinementDistortion(), 1.0);
+  filter->SetRefinementGrowth(-1.0);
+  EXPECT_EQ(filter->GetRefinementGrowth(), 0.0);
+  filter->SetSqueezeDistortion(0.5);
+  EXPECT_EQ(filter->GetSqueezeDistortion(), 1.0);
   filter->SetKinkRetries(99);
   EXPECT_EQ(filter->GetKinkRetries(), 10);
   EXPECT_EQ(filter->GetNumberOfThreads(), 0);
@@ -667,9 +673,11 @@ TEST(SurfaceMapFilter, SettingsDefaultsAndPrintSelf)
          "NumberOfThreads: 0",
          "SizingMode: 0",
          "ApproximationSamples: 50000",
-         "RefinementRounds: 2",
+         "RefinementRounds: 3",
          "RefinementIterations: 10",
          "RefinementDistortion: 1\n",
+         "RefinementGrowth: 0\n",
+         "SqueezeDistortion: 1\n",
          "KinkRetries: 10" })
   {
     EXPECT_NE(print.str().find(name), std::string::npos) << name;

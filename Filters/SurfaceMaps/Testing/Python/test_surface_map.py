@@ -95,8 +95,10 @@ def test_three_input_pipeline():
         assert fields.GetAbstractArray("FileName").GetValue(0) == source.GetFieldData().GetAbstractArray(
             "FileName").GetValue(0)
         phases = fields.GetAbstractArray("PhaseName")
-        assert [phases.GetValue(k) for k in range(phases.GetNumberOfValues())] == ["coarse", "fine"]
-        assert fields.GetArray("PhaseIterations").GetValue(1) <= 3
+        names = [phases.GetValue(k) for k in range(phases.GetNumberOfValues())]
+        # Refinement rounds (at most 3) where the exact map is distorted.
+        assert names[:2] == ["coarse", "fine"] and set(names[2:]) <= {"refine"} and len(names) <= 5
+        assert all(fields.GetArray("PhaseIterations").GetValue(k) <= 3 for k in range(1, len(names)))
     assert progress == sorted(progress) and progress[-1] == 1.0
 
 
