@@ -95,7 +95,7 @@ const char* const MapHelp =
   "                           0 off) of 10 more iterations with T refined\n"
   "                           where the exact map is distorted: first where\n"
   "                           its distortion exceeds D (--refinement-distortion,\n"
-  "                           default 1.5, >= 1), then only where an input\n"
+  "                           default 1.4, >= 1), then only where an input\n"
   "                           triangle is squeezed (distortion above 10)\n"
   "  --refinement-distortion D\n"
   "\n"

@@ -325,7 +325,7 @@ public:
    * RefinementIterations more iterations (default 10, range [1, 100000]; at
    * most FineIterations) with the fine phase's settings, each after shrinking the sizing around
    * the input triangles whose exact-map distortion max(s1, 1/s2) exceeds a
-   * threshold. The first round uses RefinementDistortion (default 1.5, range
+   * threshold. The first round uses RefinementDistortion (default 1.4, range
    * [1, 1e12]) and gives T more vertices where the map is distorted; with a
    * fraction `area` of an input above it, the sizing there shrinks by
    * 1 / sqrt(1 + RefinementGrowth / area), but at most by half
@@ -486,7 +486,7 @@ protected:
   int BoundIterations = 20;
   int RefinementRounds = 3;
   int RefinementIterations = 10;
-  double RefinementDistortion = 1.5;
+  double RefinementDistortion = 1.4;
   double RefinementGrowth = 0.25;
   double SqueezeDistortion = 10.0;
   int KinkRetries = 0;

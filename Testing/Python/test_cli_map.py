@@ -93,7 +93,7 @@ def test_refinement_is_a_setting(tmp_path):
     report = json.loads((out / "report.json").read_text())
     assert [p["name"] for p in report["phases"]] == ["landmarks", "coarse", "fine"]
     settings = report["settings"]
-    assert (settings["refinement_rounds"], settings["refinement_distortion"]) == (0, 1.5)
+    assert (settings["refinement_rounds"], settings["refinement_distortion"]) == (0, 1.4)
     assert (settings["refinement_growth"], settings["squeeze_distortion"]) == (0.25, 10)
     out = tmp_path / "refined"
     r = run("map", data("ellipsoid.obj"), data("blob.off"), "--landmarks", data("ellipsoid.pinned"),

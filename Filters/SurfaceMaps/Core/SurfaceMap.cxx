@@ -378,9 +378,15 @@ void refineAround(std::vector<MapSurface>& surfaces,
 /// their unit-area fraction of input i) but at least 0.5: the vertex density
 /// there grows about 1 + growth / area times, at most 4 times (infinite
 /// growth: halved sizing). T is garbage-collected first, for its flat
-/// triangle list. Returns the number of triangles found and the largest
-/// distortion.
-std::pair<int, double> markExactMapDistortion(CommonTriangulation& T,
+/// triangle list.
+struct DistortedTriangles
+{
+  int count = 0;       // over all pairs
+  double worst = 0.0;  // the largest distortion
+  double area = 0.0;   // the largest area fraction of one pair
+  double factor = 1.0; // the smallest sizing factor applied
+};
+DistortedTriangles markExactMapDistortion(CommonTriangulation& T,
   const std::vector<MapSurface>& surfaces,
   const std::vector<std::array<int, 2>>& pairs,
   double threshold,
@@ -390,8 +396,7 @@ std::pair<int, double> markExactMapDistortion(CommonTriangulation& T,
   SurfaceMesh& mesh = T.mesh();
   mesh.garbage_collection();
   const std::vector<std::array<int, 3>> triangles = faceTriangles(mesh);
-  int count = 0;
-  double worst = 0.0;
+  DistortedTriangles found;
   for (const auto& [i, j] : pairs)
   {
     std::vector<Eigen::Vector3d> gi(mesh.n_vertices()), gj(mesh.n_vertices());
@@ -416,12 +421,17 @@ std::pair<int, double> markExactMapDistortion(CommonTriangulation& T,
       {
         distorted.push_back(static_cast<int>(t));
         area += metrics.areaP[t];
-        worst = std::max(worst, metrics.distortion[t]);
+        found.worst = std::max(found.worst, metrics.distortion[t]);
       }
     }
     // Where much of the input is distorted, T must not grow by 4 times there.
     const double f = std::clamp(1.0 / std::sqrt(1.0 + growth / std::max(area, 1e-12)), 0.5, 1.0);
-    count += static_cast<int>(distorted.size());
+    found.count += static_cast<int>(distorted.size());
+    found.area = std::max(found.area, area);
+    if (!distorted.empty())
+    {
+      found.factor = std::min(found.factor, f);
+    }
     for (const int t : distorted)
     {
       for (const int v : surfaces[i].triangles[t])
@@ -434,7 +444,7 @@ std::pair<int, double> markExactMapDistortion(CommonTriangulation& T,
       }
     }
   }
-  return { count, worst };
+  return found;
 }
 
 class Schedule
@@ -766,20 +776,22 @@ SurfaceMapResult computeSurfaceMap(const std::vector<MapInput>& inputs,
       factor.emplace_back(s.points.size(), 1.0);
     }
     const double threshold = round == 0 ? options.refinementDistortion : options.squeezeDistortion;
-    const auto [distorted, worst] = markExactMapDistortion(T,
+    const DistortedTriangles found = markExactMapDistortion(T,
       surfaces,
       pairs,
       threshold,
       round == 0 ? options.refinementGrowth : std::numeric_limits<double>::infinity(),
       factor);
     std::ostringstream message;
-    message << "exact map: " << distorted << " input triangles with distortion above " << threshold;
-    if (distorted > 0)
+    message << "exact map: " << found.count << " input triangles with distortion above "
+            << threshold;
+    if (found.count > 0)
     {
-      message << " (largest " << worst << "): refining around them";
+      message << " (largest " << found.worst << ", area fraction " << found.area
+              << "): sizing around them times " << found.factor;
     }
     options.log(Logger::Info, message.str());
-    if (distorted == 0)
+    if (found.count == 0)
     {
       break;
     }

@@ -150,20 +150,20 @@ struct SurfaceMapOptions
   /// exact-map distortion (input i -> input j, for the map term's pairs)
   /// exceeds a threshold: refinementDistortion in the first round,
   /// squeezeDistortion in the later ones. The first round gives T more
-  /// vertices where the map is distorted (a1.5 0.982 -> 0.990 on the hands,
-  /// 0.776 -> 0.791 on 61 <-> 248, README "Surface map"); the later ones
+  /// vertices where the map is distorted (a1.5 0.982 -> 0.992 on the hands,
+  /// 0.776 -> 0.784 on 61 <-> 248, README "Surface map"); the later ones
   /// only repair squeezes: T's own map cannot see inside its triangles,
   /// where the two sphere embeddings can squeeze a whole input triangle
   /// (hands: one triangle at distortion 65 made the exact map's SD 1.131
   /// instead of about 1.06). Rounds stop when there is none. The first
   /// round halves the sizing only where little of the input is distorted:
   /// with a fraction `area` of it above refinementDistortion the sizing
-  /// shrinks by 1 / sqrt(1 + refinementGrowth / area), at least by half (the
-  /// hands: about 2 % distorted, halved; 61 <-> 248: about 23 %, 0.69); the
-  /// later rounds halve it.
+  /// shrinks by 1 / sqrt(1 + refinementGrowth / area), at most by half (the
+  /// hands: 4 % above 1.4, halved; 61 <-> 248: 34 %, times 0.76); the later
+  /// rounds halve it.
   int refinementRounds = 3;
   int refinementIterations = 10;
-  double refinementDistortion = 1.5;
+  double refinementDistortion = 1.4;
   double squeezeDistortion = 10.0;
   double refinementGrowth = 0.25;
   /// Called once per iteration; return false to abort.

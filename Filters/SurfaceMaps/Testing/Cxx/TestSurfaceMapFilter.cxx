@@ -643,7 +643,7 @@ TEST(SurfaceMapFilter, SettingsDefaultsAndPrintSelf)
   EXPECT_EQ(filter->GetApproximationWeight(), 0.25);
   EXPECT_EQ(filter->GetRefinementRounds(), 3);
   EXPECT_EQ(filter->GetRefinementIterations(), 10);
-  EXPECT_EQ(filter->GetRefinementDistortion(), 1.5);
+  EXPECT_EQ(filter->GetRefinementDistortion(), 1.4);
   EXPECT_EQ(filter->GetRefinementGrowth(), 0.25);
   EXPECT_EQ(filter->GetSqueezeDistortion(), 10.0);
   EXPECT_EQ(filter->GetKinkRetries(), 0);
