@@ -368,6 +368,15 @@ void refineAround(std::vector<MapSurface>& surfaces,
   }
 }
 
+/// What markExactMapDistortion found.
+struct DistortedTriangles
+{
+  int count = 0;       // over all pairs
+  double worst = 0.0;  // the largest distortion
+  double area = 0.0;   // the largest area fraction of one pair
+  double factor = 1.0; // the smallest sizing factor applied
+};
+
 /// Where T hides a distorted exact map: for every pair (i, j) of the map
 /// term, the triangles of input i whose exact-map distortion (input i ->
 /// input j through T) exceeds `threshold`. T's own map only sees T's
@@ -379,13 +388,6 @@ void refineAround(std::vector<MapSurface>& surfaces,
 /// there grows about 1 + growth / area times, at most 4 times (infinite
 /// growth: halved sizing). T is garbage-collected first, for its flat
 /// triangle list.
-struct DistortedTriangles
-{
-  int count = 0;       // over all pairs
-  double worst = 0.0;  // the largest distortion
-  double area = 0.0;   // the largest area fraction of one pair
-  double factor = 1.0; // the smallest sizing factor applied
-};
 DistortedTriangles markExactMapDistortion(CommonTriangulation& T,
   const std::vector<MapSurface>& surfaces,
   const std::vector<std::array<int, 2>>& pairs,
