@@ -334,7 +334,8 @@ public:
    * [1, 1e12]) and halve the sizing: they repair input triangles that the
    * exact map squeezes inside a T triangle, where it follows the two sphere
    * embeddings, which T's own map cannot see. No round runs when no
-   * triangle is that distorted.
+   * triangle is that distorted, nor without a fine phase (FineIterations 0).
+   * RefinementDistortion 10 refines only squeezes, as before 2026-11-23.
    */
   vtkSetClampMacro(RefinementRounds, int, 0, 100);
   vtkGetMacro(RefinementRounds, int);

@@ -161,7 +161,8 @@ int main(int argc, char* argv[])
       "[--coarse-error E] [--fine-barrier W] [--coarse-barrier W] [--map-weight W] "
       "[--mesh-weight W] [--approximation-weight W] [--max-error F] "
       "[--kink-retries N] [--refinement-rounds N] [--refinement-iterations N] "
-      "[--refinement-distortion D] [--squeeze-distortion D] [--max-point-step S] "
+      "[--refinement-distortion D] [--squeeze-distortion D] [--refinement-growth G] "
+      "[--max-point-step S] "
       "[--no-landmark-relaxation] [-v]\n");
     return 2;
   }

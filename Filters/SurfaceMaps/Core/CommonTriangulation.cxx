@@ -502,9 +502,10 @@ bool CommonTriangulation::update(Snapshot& s, const SpherePoints& points) const
       return false;
     }
   }
-  // A walk that does not end means the embedding is not bijective after all
-  // (a triangle positive in floating point but not exactly): reject the
-  // trial. Exceptions must not leave the parallel loops.
+  // The walks are on the inputs' fixed, certified embeddings and end (a
+  // circling walk falls back to a scan); one that still throws (a point that
+  // is not finite) rejects the trial. Exceptions must not leave the parallel
+  // loops.
   bool walked = true;
   const long long np = static_cast<long long>(positions.size());
 #pragma omp parallel for schedule(static) reduction(&& : walked) if (np > 2000)

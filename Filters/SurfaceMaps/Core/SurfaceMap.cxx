@@ -707,6 +707,11 @@ SurfaceMapResult computeSurfaceMap(const std::vector<MapInput>& inputs,
   const int total = (hasLandmarks ? options.landmarkIterations : 0) +
     (options.coarse.enabled ? options.coarse.maxIterations : 0) +
     (options.fine.enabled ? options.fine.maxIterations : 0) +
+    // The first refinement round, which nearly always runs (the later ones
+    // only where the exact map is squeezed).
+    (options.fine.enabled && !pairs.empty() && options.refinementRounds > 0
+        ? std::min(options.refinementIterations, options.fine.maxIterations)
+        : 0) +
     (options.maxError > 0.0 ? options.boundIterations : 0);
   Schedule schedule(T, options, targets, total);
   SurfaceMapResult result;
@@ -795,6 +800,10 @@ SurfaceMapResult computeSurfaceMap(const std::vector<MapInput>& inputs,
     options.log(Logger::Info, message.str());
     if (found.count == 0)
     {
+      if (round == 0 && options.squeezeDistortion < options.refinementDistortion)
+      {
+        continue; // nothing above the first threshold, but squeezes may be
+      }
       break;
     }
     for (std::size_t k = 0; k < surfaces.size(); ++k)

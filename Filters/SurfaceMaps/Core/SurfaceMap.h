@@ -143,10 +143,10 @@ struct SurfaceMapOptions
   /// one the phase keeps moving, and one retry per step cost the hands 3-4 s
   /// for no better map (README, "Surface map"), hence off by default.
   int kinkRetries = 0;
-  /// After the fine phase, up to refinementRounds rounds (0: off) of
-  /// refinementIterations more iterations (at most the fine phase's cap)
-  /// with the fine phase's settings,
-  /// each after halving the sizing around the input triangles whose
+  /// After the fine phase, up to refinementRounds rounds (0: off; no round
+  /// without a fine phase) of refinementIterations more iterations (at most
+  /// the fine phase's cap) with the fine phase's settings, each after
+  /// shrinking the sizing around the input triangles whose
   /// exact-map distortion (input i -> input j, for the map term's pairs)
   /// exceeds a threshold: refinementDistortion in the first round,
   /// squeezeDistortion in the later ones. The first round gives T more
@@ -160,7 +160,8 @@ struct SurfaceMapOptions
   /// with a fraction `area` of it above refinementDistortion the sizing
   /// shrinks by 1 / sqrt(1 + refinementGrowth / area), at most by half (the
   /// hands: 4 % above 1.4, halved; 61 <-> 248: 34 %, times 0.76); the later
-  /// rounds halve it.
+  /// rounds halve it. refinementDistortion 10 gives the behaviour before
+  /// 2026-11-23 (only squeezes refined).
   int refinementRounds = 3;
   int refinementIterations = 10;
   double refinementDistortion = 1.4;

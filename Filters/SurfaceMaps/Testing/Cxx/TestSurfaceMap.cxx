@@ -204,7 +204,7 @@ TEST(SurfaceMap, RefinementRunsWhereTheExactMapIsDistorted)
   options.refinementDistortion = 1e9; // nothing that distorted: no refinement
   const SurfaceMapResult plain = computeSurfaceMap(inputs, options);
   EXPECT_EQ(plain.phases.back().name, "fine");
-  // Every input triangle is distorted beyond 1 + 1e-9: the sizing is halved
+  // Every input triangle is distorted beyond 1 + 1e-9: the sizing shrinks
   // everywhere, so the refinement adds vertices, and the map stays certified.
   options.refinementDistortion = 1.0 + 1e-9;
   const SurfaceMapResult refined = computeSurfaceMap(inputs, options);
@@ -236,6 +236,11 @@ TEST(SurfaceMap, LaterRefinementRoundsOnlyRepairSqueezes)
   const SurfaceMapResult all = computeSurfaceMap(inputs, options);
   expectCertified(all);
   EXPECT_EQ(refineRounds(all), 3);
+  // Nothing above the first threshold, squeezes above a lower one: the
+  // first round has nothing to refine, the later ones still run.
+  options.refinementRounds = 2;
+  options.refinementDistortion = 1e9;
+  EXPECT_EQ(refineRounds(computeSurfaceMap(inputs, options)), 1);
 }
 
 TEST(SurfaceMap, RefinementGrowthBoundsTheFirstRound)
