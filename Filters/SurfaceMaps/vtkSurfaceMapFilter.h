@@ -323,9 +323,9 @@ public:
    * Refinement where the exact map is distorted: after the fine phase, up to
    * RefinementRounds rounds (default 3, range [0, 100]; 0 off) of
    * RefinementIterations more iterations (default 10, range [1, 100000]; at
-   * most FineIterations) with the fine phase's settings, each after shrinking the sizing around
-   * the input triangles whose exact-map distortion max(s1, 1/s2) exceeds a
-   * threshold. The first round uses RefinementDistortion (default 1.4, range
+   * most FineIterations) with the fine phase's settings, each after
+   * shrinking the sizing around the input triangles whose exact-map
+   * distortion max(s1, 1/s2) exceeds a threshold. The first round uses RefinementDistortion (default 1.4, range
    * [1, 1e12]) and gives T more vertices where the map is distorted; with a
    * fraction `area` of an input above it, the sizing there shrinks by
    * 1 / sqrt(1 + RefinementGrowth / area), but at most by half

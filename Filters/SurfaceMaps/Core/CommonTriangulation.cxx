@@ -18,16 +18,6 @@ namespace surfacemaps
 namespace
 {
 constexpr double Infinity = std::numeric_limits<double>::infinity();
-
-// Whether the ray 0 -> q meets the closed chord triangle abc (exact).
-bool contains(const Eigen::Vector3d& a,
-  const Eigen::Vector3d& b,
-  const Eigen::Vector3d& c,
-  const Eigen::Vector3d& q)
-{
-  return orient3dOrigin(a, b, q) >= 0 && orient3dOrigin(b, c, q) >= 0 &&
-    orient3dOrigin(c, a, q) >= 0;
-}
 } // namespace
 
 double MapSurface::sizingAt(int t, const std::array<double, 3>& w) const
@@ -370,7 +360,8 @@ double CommonTriangulation::localEnergy(const std::vector<MapVertex>& vertices,
         for (std::size_t t = 0; t < triangles.size() && found < 0; ++t)
         {
           const auto& tri = triangles[t];
-          if (contains(vertices[tri[0]].g[i], vertices[tri[1]].g[i], vertices[tri[2]].g[i], q))
+          if (rayMeetsTriangle(
+                vertices[tri[0]].g[i], vertices[tri[1]].g[i], vertices[tri[2]].g[i], q))
           {
             found = static_cast<int>(t);
           }

@@ -41,4 +41,13 @@ int orient3dOrigin(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eig
   return o == CGAL::POSITIVE ? 1 : (o == CGAL::NEGATIVE ? -1 : 0);
 }
 
+bool rayMeetsTriangle(const Eigen::Vector3d& a,
+  const Eigen::Vector3d& b,
+  const Eigen::Vector3d& c,
+  const Eigen::Vector3d& q)
+{
+  return orient3dOrigin(a, b, q) >= 0 && orient3dOrigin(b, c, q) >= 0 &&
+    orient3dOrigin(c, a, q) >= 0;
+}
+
 } // namespace surfacemaps

@@ -11,4 +11,11 @@ namespace surfacemaps
 /// unit sphere, +1 means the spherical triangle abc is positively oriented.
 int orient3dOrigin(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& c);
 
+/// Whether the ray 0 -> q meets the closed chord triangle abc (a, b, c
+/// positively oriented), decided exactly.
+bool rayMeetsTriangle(const Eigen::Vector3d& a,
+  const Eigen::Vector3d& b,
+  const Eigen::Vector3d& c,
+  const Eigen::Vector3d& q);
+
 } // namespace surfacemaps

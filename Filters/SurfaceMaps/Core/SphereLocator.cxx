@@ -176,9 +176,7 @@ SphereLocation walkOnSphere(const Eigen::Vector3d& p,
   for (std::size_t k = 0; k < triangles.size(); ++k)
   {
     const auto& tri = triangles[k];
-    if (orient3dOrigin(points[tri[1]], points[tri[2]], p) >= 0 &&
-      orient3dOrigin(points[tri[2]], points[tri[0]], p) >= 0 &&
-      orient3dOrigin(points[tri[0]], points[tri[1]], p) >= 0)
+    if (rayMeetsTriangle(points[tri[0]], points[tri[1]], points[tri[2]], p))
     {
       if (visited)
       {

@@ -704,14 +704,15 @@ SurfaceMapResult computeSurfaceMap(const std::vector<MapInput>& inputs,
   const auto pairs = mapPairs(options.pairs, n);
 
   CommonTriangulation T(surfaces, pairs);
+  const int refinementIterations =
+    std::min(options.refinementIterations, options.fine.maxIterations);
   const int total = (hasLandmarks ? options.landmarkIterations : 0) +
     (options.coarse.enabled ? options.coarse.maxIterations : 0) +
     (options.fine.enabled ? options.fine.maxIterations : 0) +
     // The first refinement round, which nearly always runs (the later ones
     // only where the exact map is squeezed).
-    (options.fine.enabled && !pairs.empty() && options.refinementRounds > 0
-        ? std::min(options.refinementIterations, options.fine.maxIterations)
-        : 0) +
+    (options.fine.enabled && !pairs.empty() && options.refinementRounds > 0 ? refinementIterations
+                                                                            : 0) +
     (options.maxError > 0.0 ? options.boundIterations : 0);
   Schedule schedule(T, options, targets, total);
   SurfaceMapResult result;
@@ -811,10 +812,7 @@ SurfaceMapResult computeSurfaceMap(const std::vector<MapInput>& inputs,
       scaleSizingAround(surfaces[k], factor[k]);
     }
     T.invalidateFaceEnergies();
-    result.phases.push_back(schedule.run("refine",
-      std::min(options.refinementIterations, options.fine.maxIterations),
-      lockLandmarks,
-      false));
+    result.phases.push_back(schedule.run("refine", refinementIterations, lockLandmarks, false));
   }
 
   std::vector<double> bounds;
