@@ -2,8 +2,8 @@
 
 #include "vtkSurfaceMapsConversion.h"
 
-#include "MeshValidation.h"
-#include "SphereEmbedding.h"
+#include "mesh/MeshValidation.h"
+#include "embedding/SphereEmbedding.h"
 
 #include "vtkDataArray.h"
 #include "vtkDoubleArray.h"
@@ -209,7 +209,7 @@ int vtkSphereEmbeddingFilter::RequestData(vtkInformation*,
     }
     this->UpdateProgress(1.0);
   }
-  catch (const surfacemaps::EmbeddingAborted&)
+  catch (const surfacemaps::Aborted&)
   {
     output->Initialize();
     return 1;

@@ -2,9 +2,9 @@
 
 #include "vtkSurfaceMapsConversion.h"
 
-#include "MapMetrics.h"
-#include "MeshValidation.h"
-#include "SphericalTriangulation.h"
+#include "geometry/MapMetrics.h"
+#include "mesh/MeshValidation.h"
+#include "geometry/SphericalTriangulation.h"
 
 #include "vtkCellData.h"
 #include "vtkDataArray.h"

@@ -2,14 +2,14 @@
 
 #include "vtkSurfaceMapsConversion.h"
 
-#include "InputError.h"
-#include "MapMetrics.h"
-#include "MapTransfer.h"
-#include "MeshValidation.h"
-#include "SphereEmbedding.h"
-#include "SphericalTriangulation.h"
-#include "SurfaceMap.h"
-#include "ThreadCount.h"
+#include "base/InputError.h"
+#include "geometry/MapMetrics.h"
+#include "map/MapTransfer.h"
+#include "mesh/MeshValidation.h"
+#include "embedding/SphereEmbedding.h"
+#include "geometry/SphericalTriangulation.h"
+#include "map/SurfaceMap.h"
+#include "base/ThreadCount.h"
 
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
@@ -680,7 +680,7 @@ int vtkSurfaceMapFilter::RequestData(vtkInformation*,
           : "Sphere embeddings of " + std::to_string(missing.size()) + " inputs";
         if (!report(0.0, text))
         {
-          throw surfacemaps::EmbeddingAborted();
+          throw surfacemaps::Aborted();
         }
         std::vector<const surfacemaps::PolygonMesh*> meshes;
         for (int i : missing)
@@ -726,7 +726,7 @@ int vtkSurfaceMapFilter::RequestData(vtkInformation*,
       };
       if (!report(embeddingShare, "Surface map"))
       {
-        throw surfacemaps::SurfaceMapAborted();
+        throw surfacemaps::Aborted();
       }
       internals.Map = surfacemaps::computeSurfaceMap(mapInputs, options);
       internals.MapInputs = std::move(mapInputs);
@@ -802,14 +802,14 @@ int vtkSurfaceMapFilter::RequestData(vtkInformation*,
     }
     report(1.0, "Done");
   }
-  catch (const surfacemaps::EmbeddingAborted&)
+  catch (const surfacemaps::Aborted&)
   {
     internals.Clear();
     clearOutputs();
     markNotGenerated(outputVector);
     return 1;
   }
-  catch (const surfacemaps::SurfaceMapAborted&)
+  catch (const surfacemaps::Aborted&)
   {
     internals.Clear();
     clearOutputs();

@@ -2,9 +2,9 @@
 
 #include "vtkSurfaceMapsConversion.h"
 
-#include "InputError.h"
-#include "MapTransfer.h"
-#include "SphericalTriangulation.h"
+#include "base/InputError.h"
+#include "map/MapTransfer.h"
+#include "geometry/SphericalTriangulation.h"
 
 #include "vtkAbstractArray.h"
 #include "vtkCellData.h"

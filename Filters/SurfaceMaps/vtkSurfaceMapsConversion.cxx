@@ -1,6 +1,6 @@
 #include "vtkSurfaceMapsConversion.h"
 
-#include "MapTransfer.h"
+#include "map/MapTransfer.h"
 
 #include "vtkCellArray.h"
 #include "vtkCellArrayIterator.h"

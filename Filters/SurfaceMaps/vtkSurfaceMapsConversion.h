@@ -10,9 +10,9 @@
 #ifndef vtkSurfaceMapsConversion_h
 #define vtkSurfaceMapsConversion_h
 
-#include "PolygonMesh.h"
-#include "SurfaceMap.h"
-#include "SurfaceMesh.h"
+#include "mesh/PolygonMesh.h"
+#include "map/SurfaceMap.h"
+#include "mesh/SurfaceMesh.h"
 
 #include "vtkSmartPointer.h"
 

@@ -2,11 +2,11 @@
 
 #include "vtkSurfaceMapsConversion.h"
 
-#include "InputError.h"
-#include "LandmarkReader.h"
-#include "ObjReader.h"
-#include "OffReader.h"
-#include "PlyReader.h"
+#include "base/InputError.h"
+#include "io/LandmarkReader.h"
+#include "io/ObjReader.h"
+#include "io/OffReader.h"
+#include "io/PlyReader.h"
 
 #include "vtkCallbackCommand.h"
 #include "vtkCommand.h"

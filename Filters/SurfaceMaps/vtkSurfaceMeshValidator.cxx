@@ -2,7 +2,7 @@
 
 #include "vtkSurfaceMapsConversion.h"
 
-#include "MeshValidation.h"
+#include "mesh/MeshValidation.h"
 
 #include "vtkAlgorithm.h"
 #include "vtkDoubleArray.h"

@@ -3,8 +3,8 @@
 //
 //   build/bin/BenchmarkEmbedding MESH.(obj|off|ply)...
 #include "BenchmarkSupport.h"
-#include "MeshValidation.h"
-#include "SphereEmbedding.h"
+#include "mesh/MeshValidation.h"
+#include "embedding/SphereEmbedding.h"
 
 #include <chrono>
 #include <cstdio>

@@ -9,11 +9,11 @@
 // Hessian, as in the coarse and fine phases); --exact-barrier uses the exact
 // Hessian with an eigenvalue clamp per triangle instead (as in the landmark
 // phase and the sphere embedding).
-#include "BarrierEnergy.h"
-#include "BijectivityBarrier.h"
-#include "NewtonSolver.h"
-#include "Objective.h"
-#include "Primitives.h"
+#include "energy/BarrierEnergy.h"
+#include "energy/BijectivityBarrier.h"
+#include "optimisation/NewtonSolver.h"
+#include "optimisation/Objective.h"
+#include "mesh/Primitives.h"
 
 #include <omp.h>
 

@@ -5,11 +5,11 @@
 //   build/bin/BenchmarkMap A B [C...] [--landmarks FA FB ...]
 //     [--landmark-iterations N] [--coarse N] [--fine N] [--target-error E] [-v]
 #include "BenchmarkSupport.h"
-#include "LandmarkReader.h"
-#include "MapMetrics.h"
-#include "MeshValidation.h"
-#include "SphereEmbedding.h"
-#include "SurfaceMap.h"
+#include "io/LandmarkReader.h"
+#include "geometry/MapMetrics.h"
+#include "mesh/MeshValidation.h"
+#include "embedding/SphereEmbedding.h"
+#include "map/SurfaceMap.h"
 
 #include <chrono>
 #include <cstdio>

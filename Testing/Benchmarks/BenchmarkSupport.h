@@ -1,10 +1,10 @@
 // Helpers shared by the benchmark programs (not part of the library).
 #pragma once
 
-#include "ObjReader.h"
-#include "OffReader.h"
-#include "PlyReader.h"
-#include "PolygonMesh.h"
+#include "io/ObjReader.h"
+#include "io/OffReader.h"
+#include "io/PlyReader.h"
+#include "mesh/PolygonMesh.h"
 
 #include <sys/resource.h>
 

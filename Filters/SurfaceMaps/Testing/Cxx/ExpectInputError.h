@@ -1,7 +1,7 @@
 // Test helper: an InputError whose message contains a given part.
 #pragma once
 
-#include "InputError.h"
+#include "base/InputError.h"
 
 #include <gtest/gtest.h>
 

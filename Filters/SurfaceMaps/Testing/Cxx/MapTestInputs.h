@@ -2,8 +2,8 @@
 // embeddings (icospheres, whose vertices are their own sphere points).
 #pragma once
 
-#include "Primitives.h"
-#include "SurfaceMap.h"
+#include "mesh/Primitives.h"
+#include "map/SurfaceMap.h"
 
 #include <Eigen/Geometry>
 

@@ -1,4 +1,4 @@
-#include "AutoDiff.h"
+#include "optimisation/AutoDiff.h"
 
 #include "FiniteDifferences.h"
 

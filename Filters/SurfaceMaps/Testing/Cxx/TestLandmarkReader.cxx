@@ -1,5 +1,5 @@
-#include "InputError.h"
-#include "LandmarkReader.h"
+#include "base/InputError.h"
+#include "io/LandmarkReader.h"
 
 #include <gtest/gtest.h>
 

@@ -1,11 +1,11 @@
 // The surface map's energy terms: derivatives against finite differences.
-#include "ApproximationEnergy.h"
-#include "CommonTriangulation.h"
+#include "energy/ApproximationEnergy.h"
+#include "map/CommonTriangulation.h"
 #include "FiniteDifferences.h"
-#include "MapDistortionEnergy.h"
+#include "energy/MapDistortionEnergy.h"
 #include "MapTestInputs.h"
-#include "MeshQualityEnergy.h"
-#include "SurfaceMap.h"
+#include "energy/MeshQualityEnergy.h"
+#include "map/SurfaceMap.h"
 
 #include <gtest/gtest.h>
 

@@ -1,5 +1,5 @@
-#include "MapMetrics.h"
-#include "Primitives.h"
+#include "geometry/MapMetrics.h"
+#include "mesh/Primitives.h"
 
 #include <Eigen/Geometry>
 #include <Eigen/SVD>

@@ -1,8 +1,8 @@
 // Points carried between the inputs of a computed map (MapTransfer.h).
 #include "MapTestInputs.h"
-#include "MapTransfer.h"
-#include "SphereLocator.h"
-#include "SurfaceMap.h"
+#include "map/MapTransfer.h"
+#include "geometry/SphereLocator.h"
+#include "map/SurfaceMap.h"
 
 #include <gtest/gtest.h>
 

@@ -1,5 +1,5 @@
-#include "MeshValidation.h"
-#include "Primitives.h"
+#include "mesh/MeshValidation.h"
+#include "mesh/Primitives.h"
 
 #include <gtest/gtest.h>
 

@@ -1,6 +1,6 @@
-#include "NewtonSolver.h"
-#include "Primitives.h"
-#include "SphericalTriangulation.h"
+#include "optimisation/NewtonSolver.h"
+#include "mesh/Primitives.h"
+#include "geometry/SphericalTriangulation.h"
 
 #include <gtest/gtest.h>
 

@@ -1,5 +1,5 @@
-#include "InputError.h"
-#include "ObjReader.h"
+#include "base/InputError.h"
+#include "io/ObjReader.h"
 
 #include "ExpectInputError.h"
 

@@ -1,8 +1,8 @@
-#include "BarrierEnergy.h"
+#include "energy/BarrierEnergy.h"
 #include "FiniteDifferences.h"
-#include "HessianProjection.h"
-#include "Objective.h"
-#include "Primitives.h"
+#include "optimisation/HessianProjection.h"
+#include "optimisation/Objective.h"
+#include "mesh/Primitives.h"
 
 #include <Eigen/Eigenvalues>
 #include <gtest/gtest.h>

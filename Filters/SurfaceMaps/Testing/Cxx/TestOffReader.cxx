@@ -1,5 +1,5 @@
-#include "InputError.h"
-#include "OffReader.h"
+#include "base/InputError.h"
+#include "io/OffReader.h"
 
 #include "ExpectInputError.h"
 

@@ -1,5 +1,5 @@
-#include "InputError.h"
-#include "PlyReader.h"
+#include "base/InputError.h"
+#include "io/PlyReader.h"
 
 #include "ExpectInputError.h"
 

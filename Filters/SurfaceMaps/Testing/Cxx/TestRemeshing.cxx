@@ -1,9 +1,9 @@
 // Edge splits, collapses and flips of the common triangulation: each changes
 // the total energy by exactly its local gain and keeps every invariant.
 #include "MapTestInputs.h"
-#include "Predicates.h"
-#include "Remeshing.h"
-#include "SurfaceMap.h"
+#include "geometry/Predicates.h"
+#include "map/Remeshing.h"
+#include "map/SurfaceMap.h"
 
 #include <gtest/gtest.h>
 

@@ -1,5 +1,5 @@
-#include "Primitives.h"
-#include "Sizing.h"
+#include "mesh/Primitives.h"
+#include "geometry/Sizing.h"
 
 #include <Eigen/Geometry>
 #include <gtest/gtest.h>

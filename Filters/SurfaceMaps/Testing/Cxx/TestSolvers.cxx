@@ -1,5 +1,5 @@
-#include "LineSearch.h"
-#include "LinearSolver.h"
+#include "optimisation/LineSearch.h"
+#include "optimisation/LinearSolver.h"
 
 #include <gtest/gtest.h>
 #include <omp.h>

@@ -1,13 +1,13 @@
-#include "Decimation.h"
-#include "EmbeddingEnergy.h"
+#include "embedding/Decimation.h"
+#include "energy/EmbeddingEnergy.h"
 #include "FiniteDifferences.h"
-#include "MeshValidation.h"
-#include "ObjReader.h"
-#include "Objective.h"
-#include "OffReader.h"
-#include "PlyReader.h"
-#include "Primitives.h"
-#include "SphereEmbedding.h"
+#include "mesh/MeshValidation.h"
+#include "io/ObjReader.h"
+#include "optimisation/Objective.h"
+#include "io/OffReader.h"
+#include "io/PlyReader.h"
+#include "mesh/Primitives.h"
+#include "embedding/SphereEmbedding.h"
 
 #include <gtest/gtest.h>
 
@@ -232,7 +232,7 @@ TEST(SphereEmbedding, ProgressIsMonotoneAndAbortStops)
 
   int calls = 0;
   options.progress = [&](double) { return ++calls < 3; };
-  EXPECT_THROW(embedOnSphere(mesh, options), EmbeddingAborted);
+  EXPECT_THROW(embedOnSphere(mesh, options), Aborted);
   EXPECT_EQ(calls, 3);
 }
 

@@ -1,8 +1,8 @@
-#include "OffReader.h"
-#include "Predicates.h"
-#include "Primitives.h"
-#include "SphereEmbedding.h"
-#include "SphereLocator.h"
+#include "io/OffReader.h"
+#include "geometry/Predicates.h"
+#include "mesh/Primitives.h"
+#include "embedding/SphereEmbedding.h"
+#include "geometry/SphereLocator.h"
 
 #include <gtest/gtest.h>
 

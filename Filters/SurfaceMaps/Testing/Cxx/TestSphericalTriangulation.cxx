@@ -1,6 +1,6 @@
-#include "Predicates.h"
-#include "Primitives.h"
-#include "SphericalTriangulation.h"
+#include "geometry/Predicates.h"
+#include "mesh/Primitives.h"
+#include "geometry/SphericalTriangulation.h"
 
 #include <gtest/gtest.h>
 

@@ -2,7 +2,7 @@
 #include "vtkSurfaceAverage.h"
 #include "vtkSurfaceMapsConversion.h"
 
-#include "Primitives.h"
+#include "mesh/Primitives.h"
 
 #include "vtkCallbackCommand.h"
 #include "vtkCellArray.h"

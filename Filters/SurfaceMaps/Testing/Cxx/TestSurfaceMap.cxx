@@ -1,8 +1,8 @@
 // The surface map schedule on small inputs with short schedules.
-#include "MapMetrics.h"
+#include "geometry/MapMetrics.h"
 #include "MapTestInputs.h"
-#include "SphereLocator.h"
-#include "SurfaceMap.h"
+#include "geometry/SphereLocator.h"
+#include "map/SurfaceMap.h"
 
 #include <gtest/gtest.h>
 
@@ -180,7 +180,7 @@ TEST(SurfaceMap, ProgressIsMonotoneAndCanAbort)
 
   int calls = 0;
   options.progress = [&](const SurfaceMapProgress&) { return ++calls < 2; };
-  EXPECT_THROW(computeSurfaceMap(inputs, options), SurfaceMapAborted);
+  EXPECT_THROW(computeSurfaceMap(inputs, options), Aborted);
   EXPECT_EQ(calls, 2);
 }
 

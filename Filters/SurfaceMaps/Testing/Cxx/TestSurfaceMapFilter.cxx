@@ -5,9 +5,9 @@
 #include "vtkSurfaceMapsConversion.h"
 #include "vtkSurfaceMeshReader.h"
 
-#include "Primitives.h"
-#include "SphericalTriangulation.h"
-#include "ThreadCount.h"
+#include "mesh/Primitives.h"
+#include "geometry/SphericalTriangulation.h"
+#include "base/ThreadCount.h"
 
 #include "vtkAlgorithmOutput.h"
 #include "vtkCallbackCommand.h"

@@ -6,9 +6,9 @@
 #include "vtkSurfaceMapsConversion.h"
 #include "vtkSurfaceMeshReader.h"
 
-#include "Primitives.h"
-#include "SphereLocator.h"
-#include "SphericalTriangulation.h"
+#include "mesh/Primitives.h"
+#include "geometry/SphereLocator.h"
+#include "geometry/SphericalTriangulation.h"
 
 #include "vtkCallbackCommand.h"
 #include "vtkCellArray.h"

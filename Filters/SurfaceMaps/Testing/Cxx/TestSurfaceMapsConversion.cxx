@@ -1,6 +1,6 @@
 #include "vtkSurfaceMapsConversion.h"
 
-#include "Primitives.h"
+#include "mesh/Primitives.h"
 
 #include "vtkCellArray.h"
 #include "vtkCellData.h"

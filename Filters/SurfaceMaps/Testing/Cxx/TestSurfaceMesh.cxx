@@ -1,6 +1,6 @@
-#include "MeshValidation.h"
-#include "Primitives.h"
-#include "SurfaceMesh.h"
+#include "mesh/MeshValidation.h"
+#include "mesh/Primitives.h"
+#include "mesh/SurfaceMesh.h"
 
 #include <gtest/gtest.h>
 

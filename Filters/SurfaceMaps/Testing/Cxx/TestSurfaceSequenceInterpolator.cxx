@@ -1,7 +1,7 @@
 #include "vtkSurfaceMapsConversion.h"
 #include "vtkSurfaceSequenceInterpolator.h"
 
-#include "Primitives.h"
+#include "mesh/Primitives.h"
 
 #include "vtkCallbackCommand.h"
 #include "vtkCommand.h"

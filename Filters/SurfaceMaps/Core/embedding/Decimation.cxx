@@ -1,0 +1,219 @@
+#include "embedding/Decimation.h"
+
+#include "mesh/SurfaceMesh.h"
+
+#include <Eigen/Dense>
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+namespace surfacemaps
+{
+
+namespace
+{
+
+using Mesh = SurfaceMesh;
+using Quadric = Eigen::Matrix4d;
+
+Eigen::Vector3d point(const Mesh& mesh, Mesh::VertexHandle v)
+{
+  const auto& p = mesh.point(v);
+  return { p[0], p[1], p[2] };
+}
+
+// Plane quadrics of the faces around each vertex, area weighted.
+std::vector<Quadric> vertexQuadrics(const Mesh& mesh)
+{
+  std::vector<Quadric> Q(mesh.n_vertices(), Quadric::Zero());
+  for (const auto f : mesh.faces())
+  {
+    auto fv = mesh.cfv_iter(f);
+    const Eigen::Vector3d a = point(mesh, *fv), b = point(mesh, *++fv), c = point(mesh, *++fv);
+    const Eigen::Vector3d n2 = (b - a).cross(c - a);
+    const double area2 = n2.norm();
+    if (area2 <= 0.0)
+    {
+      continue;
+    }
+    const Eigen::Vector3d n = n2 / area2;
+    const Eigen::Vector4d plane(n.x(), n.y(), n.z(), -n.dot(a));
+    const Quadric K = 0.5 * area2 * plane * plane.transpose();
+    for (const auto v : mesh.fv_range(f))
+    {
+      Q[v.idx()] += K;
+    }
+  }
+  return Q;
+}
+
+// The one-ring of v in orientation order: (v, ring[i], ring[i+1]) are faces.
+std::vector<int> orientedRing(const Mesh& mesh, Mesh::VertexHandle v)
+{
+  std::vector<int> ring;
+  const Mesh::HalfedgeHandle h0 = mesh.halfedge_handle(v);
+  Mesh::HalfedgeHandle h = h0;
+  do
+  {
+    ring.push_back(mesh.to_vertex_handle(h).idx());
+    h = mesh.opposite_halfedge_handle(mesh.prev_halfedge_handle(h));
+  } while (h != h0 && ring.size() <= mesh.n_vertices());
+  return ring;
+}
+
+// Checks a collapse v -> u geometrically: the triangles around v that survive
+// (those not containing u) keep a reasonable area and do not turn over.
+bool geometryOk(const Mesh& mesh, Mesh::HalfedgeHandle h, double minArea, double minCos)
+{
+  const Mesh::VertexHandle v = mesh.from_vertex_handle(h);
+  const Mesh::VertexHandle u = mesh.to_vertex_handle(h);
+  const Eigen::Vector3d pu = point(mesh, u);
+  for (const auto f : mesh.vf_range(v))
+  {
+    std::array<Eigen::Vector3d, 3> before, after;
+    int k = 0;
+    bool hasU = false;
+    for (const auto w : mesh.fv_range(f))
+    {
+      before[k] = point(mesh, w);
+      after[k] = w == v ? pu : before[k];
+      hasU = hasU || w == u;
+      ++k;
+    }
+    if (hasU)
+    {
+      continue; // this face disappears
+    }
+    const Eigen::Vector3d n0 = (before[1] - before[0]).cross(before[2] - before[0]);
+    const Eigen::Vector3d n1 = (after[1] - after[0]).cross(after[2] - after[0]);
+    const double a1 = 0.5 * n1.norm();
+    if (!(a1 > minArea))
+    {
+      return false;
+    }
+    if (n0.dot(n1) < minCos * n0.norm() * n1.norm())
+    {
+      return false;
+    }
+  }
+  return true;
+}
+
+} // namespace
+
+DecimationResult decimateToTetrahedron(const PolygonMesh& input, const DecimationOptions& options)
+{
+  Mesh mesh = toSurfaceMesh(input);
+  DecimationResult result;
+  result.triangles = input.triangles();
+
+  double totalArea = 0.0;
+  for (const auto& t : result.triangles)
+  {
+    totalArea += 0.5 *
+      (input.points[t[1]] - input.points[t[0]])
+        .cross(input.points[t[2]] - input.points[t[0]])
+        .norm();
+  }
+  const double minArea = options.minAreaFraction * totalArea;
+  std::vector<Quadric> Q = vertexQuadrics(mesh);
+
+  int alive = static_cast<int>(mesh.n_vertices());
+  bool geometric = true;
+  double minCos = std::cos(options.maxNormalChange * M_PI / 180.0);
+  struct Candidate
+  {
+    double cost;
+    Mesh::HalfedgeHandle h;
+  };
+  std::vector<Candidate> candidates;
+  std::vector<int> levelStamp(mesh.n_vertices(), -1);
+
+  while (alive > options.targetVertices)
+  {
+    const int level = static_cast<int>(result.levels.size());
+    candidates.clear();
+    for (const auto h : mesh.halfedges())
+    {
+      if (mesh.status(h).deleted())
+      {
+        continue;
+      }
+      const Mesh::VertexHandle v = mesh.from_vertex_handle(h), u = mesh.to_vertex_handle(h);
+      const Eigen::Vector3d pu = point(mesh, u);
+      const Eigen::Vector4d x(pu.x(), pu.y(), pu.z(), 1.0);
+      candidates.push_back({ x.dot((Q[v.idx()] + Q[u.idx()]) * x), h });
+    }
+    std::sort(candidates.begin(),
+      candidates.end(),
+      [](const Candidate& a, const Candidate& b) { return a.cost < b.cost; });
+
+    DecimationLevel current;
+    for (const Candidate& c : candidates)
+    {
+      if (alive <= options.targetVertices)
+      {
+        break;
+      }
+      const Mesh::HalfedgeHandle h = c.h;
+      if (mesh.status(h).deleted())
+      {
+        continue;
+      }
+      // Independence: a removed vertex must not be next to a vertex removed
+      // earlier in this level (whose ring vertices are stamped), so every
+      // ring below is also the vertex's ring in the finer level, and the
+      // vertices of one level can be reinserted in any order, in parallel.
+      const Mesh::VertexHandle v = mesh.from_vertex_handle(h);
+      if (levelStamp[v.idx()] == level || !mesh.is_collapse_ok(h))
+      {
+        continue;
+      }
+      // Keep every vertex of the result at valence >= 3 (a tetrahedron at the end).
+      if (mesh.valence(mesh.opposite_vh(h)) <= 3 ||
+        mesh.valence(mesh.opposite_vh(mesh.opposite_halfedge_handle(h))) <= 3)
+      {
+        continue;
+      }
+      if (geometric && !geometryOk(mesh, h, minArea, minCos))
+      {
+        continue;
+      }
+      const Mesh::VertexHandle u = mesh.to_vertex_handle(h);
+      Collapse collapse;
+      collapse.removed = v.idx();
+      collapse.kept = u.idx();
+      collapse.ring = orientedRing(mesh, v);
+      levelStamp[v.idx()] = level;
+      for (int w : collapse.ring)
+      {
+        levelStamp[w] = level;
+      }
+      Q[u.idx()] += Q[v.idx()];
+      mesh.collapse(h);
+      --alive;
+      current.collapses.push_back(std::move(collapse));
+    }
+
+    if (current.collapses.empty())
+    {
+      if (geometric)
+      {
+        // Only shape checks block the remaining collapses: drop them.
+        geometric = false;
+        result.relaxed = true;
+        options.log(Logger::Detail,
+          "decimation: geometric checks relaxed at " + std::to_string(alive) + " vertices");
+        continue;
+      }
+      throw std::runtime_error(
+        "decimation stalled at " + std::to_string(alive) + " vertices (is the mesh genus 0?)");
+    }
+    current.triangles = faceTriangles(mesh);
+    result.levels.push_back(std::move(current));
+  }
+  return result;
+}
+
+} // namespace surfacemaps

@@ -1,0 +1,247 @@
+// SurfaceMaps engine: the common triangulation T with its N sphere embeddings,
+// the inputs it maps between, and the energy of DESIGN.md section 1.3.
+#pragma once
+
+#include "energy/ApproximationEnergy.h"
+#include "energy/LiftedPoint.h"
+#include "optimisation/Objective.h"
+#include "geometry/SphereLocator.h"
+#include "optimisation/SpherePoints.h"
+#include "mesh/SurfaceMesh.h"
+
+#include <Eigen/Core>
+
+#include <array>
+#include <map>
+#include <memory>
+#include <vector>
+
+namespace surfacemaps
+{
+
+/// One input, centred and scaled to unit area, with its fixed embedding.
+struct MapSurface
+{
+  std::vector<Eigen::Vector3d> points;
+  std::vector<std::array<int, 3>> triangles;
+  std::vector<Eigen::Vector3d> sphere;
+  /// The lift of every triangle (sphere -> surface), built once.
+  std::vector<Lift> lifts;
+  std::unique_ptr<SphereLocator> locator;
+  /// Target edge length per vertex, unit-area units (set per phase).
+  std::vector<double> sizing;
+  /// Landmark id per vertex (-1 none), may be empty.
+  std::vector<int> landmarks;
+  ApproximationSamples samples;
+  /// original = points / scale + centre.
+  Eigen::Vector3d centre = Eigen::Vector3d::Zero();
+  double scale = 1.0;
+
+  /// Sizing at a point of triangle t with barycentric weights w.
+  double sizingAt(int t, const std::array<double, 3>& w) const;
+};
+
+/// Weights of the energy's terms, already divided by the number of inputs
+/// (or pairs) as in DESIGN.md section 1.3 (0: term off).
+struct MapEnergyWeights
+{
+  double barrier = 0.0;
+  double mesh = 0.0;
+  double approximation = 0.0; // includes 1 / eps^2 for the soft term
+  double landmark = 0.0;
+  double map = 0.0;
+  /// Hard approximation bound per input (unit-area units of that input);
+  /// empty: the soft term. With a bound, `approximation` is the barrier's
+  /// weight (no 1 / eps^2).
+  std::vector<double> bounds;
+  double bound(int i) const { return this->bounds.empty() ? 0.0 : this->bounds[i]; }
+  /// Project the barrier's exact Hessian (eigenvalue clamp) instead of using
+  /// its cheap Gauss-Newton form; worth it where the barrier dominates (the
+  /// landmark phase), not where its weight is tiny.
+  bool exactBarrierHessian = false;
+};
+
+/// A vertex of T as the local energy sees it: per input its sphere point, its
+/// lift triangle on that input and its lifted position.
+struct MapVertex
+{
+  std::vector<Eigen::Vector3d> g, lifted;
+  std::vector<int> liftTriangle;
+  int landmark = -1;
+};
+
+/// Where the samples of each input lie in a local set of triangles.
+using LocalAssignment = std::vector<std::vector<int>>;
+
+/// The common triangulation and everything its energy needs. Vertex and face
+/// data live in OpenMesh properties so that edits and garbage collection keep
+/// them consistent.
+class CommonTriangulation
+{
+public:
+  /// T := copy of input 0 with g_i := f_0 for every input i.
+  CommonTriangulation(std::vector<MapSurface>& surfaces, std::vector<std::array<int, 2>> pairs);
+
+  int numberOfInputs() const { return static_cast<int>(this->Surfaces.size()); }
+  MapSurface& surface(int i) { return this->Surfaces[i]; }
+  const MapSurface& surface(int i) const { return this->Surfaces[i]; }
+  const std::vector<std::array<int, 2>>& pairs() const { return this->Pairs; }
+  SurfaceMesh& mesh() { return this->Mesh; }
+  const SurfaceMesh& mesh() const { return this->Mesh; }
+
+  const Eigen::Vector3d& g(OpenMesh::VertexHandle v, int i) const
+  {
+    return this->Mesh.property(this->G[i], v);
+  }
+  int liftTriangle(OpenMesh::VertexHandle v, int i) const
+  {
+    return this->Mesh.property(this->LiftTriangle[i], v);
+  }
+  int landmark(OpenMesh::VertexHandle v) const { return this->Mesh.property(this->Landmark, v); }
+  void setLandmark(OpenMesh::VertexHandle v, int id)
+  {
+    this->Mesh.property(this->Landmark, v) = id;
+  }
+  double targetLength(OpenMesh::FaceHandle f) const { return this->Mesh.property(this->Length, f); }
+  void setTargetLength(OpenMesh::FaceHandle f, double length)
+  {
+    this->Mesh.property(this->Length, f) = length;
+  }
+  std::vector<int>& faceSamples(OpenMesh::FaceHandle f, int i)
+  {
+    return this->Mesh.property(this->Samples[i], f);
+  }
+  const std::vector<int>& faceSamples(OpenMesh::FaceHandle f, int i) const
+  {
+    return this->Mesh.property(this->Samples[i], f);
+  }
+
+  /// A vertex's data, and setting it (the vertex moves on every sphere).
+  MapVertex vertex(OpenMesh::VertexHandle v) const;
+  void setVertex(OpenMesh::VertexHandle v, const MapVertex& data);
+  /// A new vertex at the normalised midpoint of u and v on every sphere.
+  MapVertex midpoint(OpenMesh::VertexHandle u, OpenMesh::VertexHandle v) const;
+  /// Moves vertex data to sphere points g (per input), locating them on the
+  /// inputs by a walk from the current lift triangles.
+  void relocate(MapVertex& vertex) const;
+
+  /// The energy weights in use; changing them changes every energy below.
+  MapEnergyWeights weights;
+  /// Whether samples are assigned to faces (off while the approximation term
+  /// is off: the landmark phase). Turning it on assigns them from scratch.
+  bool tracksSamples() const { return this->TrackSamples; }
+  void setTrackSamples(bool track);
+
+  /// Target length of a triangle with these corners: the smallest over the
+  /// inputs of the sizing at its centroid on each sphere (DESIGN.md 1.3).
+  double targetLength(const MapVertex& a, const MapVertex& b, const MapVertex& c) const;
+  /// Recomputes every face's target length (once per iteration).
+  void updateTargetLengths();
+
+  /// Energy of the per-triangle terms (barrier, mesh quality, map distortion)
+  /// of one triangle, weighted; +inf if invalid.
+  double triangleEnergy(const MapVertex& a,
+    const MapVertex& b,
+    const MapVertex& c,
+    double length) const;
+  /// Weighted approximation energy of sample s of input i in a triangle.
+  double sampleEnergy(int i,
+    int s,
+    const MapVertex& a,
+    const MapVertex& b,
+    const MapVertex& c) const;
+
+  /// Distance of every approximation sample of input i from its base point
+  /// on T (unit-area units), in the faces the samples are assigned to.
+  std::vector<double> baseDistances(int i) const;
+
+  /// Whether a triangle is positively oriented (exact predicate) with
+  /// det > minDet on every sphere: what a new triangle must be.
+  bool validTriangle(const MapVertex& a, const MapVertex& b, const MapVertex& c) const;
+
+  /// Energy of a local configuration: triangles over `vertices` with target
+  /// lengths, plus the samples of each input (which must lie in the union of
+  /// the triangles on that input's sphere). With `validate`, a triangle that
+  /// is not positively oriented (exact predicate) or has det <= minDet on any
+  /// sphere makes the configuration invalid (+inf). `assignment`, if given,
+  /// receives the local triangle of each sample; a sample in no triangle
+  /// makes the configuration invalid.
+  double localEnergy(const std::vector<MapVertex>& vertices,
+    const std::vector<std::array<int, 3>>& triangles,
+    const std::vector<double>& lengths,
+    const std::vector<std::vector<int>>& samples,
+    bool validate,
+    LocalAssignment* assignment,
+    std::vector<double>* perTriangle = nullptr) const;
+
+  /// Energy of each face (its per-triangle terms plus its samples' terms),
+  /// cached for a remeshing round: remeshing reads the energy an edit removes
+  /// from here instead of recomputing it, and stores the new faces' energies.
+  /// Valid only while no vertex moves and the weights stay the same.
+  void updateFaceEnergies();
+  void invalidateFaceEnergies() { this->FaceEnergiesValid = false; }
+  bool faceEnergiesValid() const { return this->FaceEnergiesValid; }
+  double faceEnergy(OpenMesh::FaceHandle f) const { return this->Mesh.property(this->Energy, f); }
+  void setFaceEnergy(OpenMesh::FaceHandle f, double energy)
+  {
+    this->Mesh.property(this->Energy, f) = energy;
+  }
+  static constexpr double minDet = 1e-16;
+
+  /// A flat copy of T for the Newton step and for global evaluations.
+  struct Snapshot
+  {
+    int vertices = 0;
+    std::vector<std::array<int, 3>> triangles;
+    std::vector<std::array<int, 3>> neighbours;
+    /// Triangles with point indices of each embedding (offset i * vertices).
+    std::vector<std::vector<std::array<int, 3>>> embeddedTriangles;
+    std::vector<double> lengths;
+    /// Per point (i * vertices + v): lift triangle on input i and its lift.
+    std::vector<int> liftTriangle;
+    std::vector<const Lift*> lifts;
+    /// Per input and sample: the T triangle containing it (if tracked).
+    std::vector<std::vector<int>> sampleTriangle;
+  };
+  /// Garbage-collects the mesh and fills a snapshot and the sphere points
+  /// (g of input i at i * vertices + v); landmark vertices are locked when
+  /// `lockLandmarks`.
+  void snapshot(Snapshot& snapshot, SpherePoints& points, bool lockLandmarks);
+  /// Re-locates lifts and sample triangles for moved points (parallel
+  /// walks); false if an embedding's degree is not 1.
+  bool update(Snapshot& snapshot, const SpherePoints& points) const;
+  /// Writes moved points, lifts and sample assignments back into the mesh.
+  void writeBack(const Snapshot& snapshot, const SpherePoints& points);
+
+  /// Builds the objective of the current weights over a snapshot (the
+  /// snapshot must outlive the objective's use). Landmark targets per input.
+  void buildObjective(const Snapshot& snapshot,
+    const std::vector<std::map<int, Eigen::Vector3d>>& landmarkTargets,
+    Objective& objective) const;
+
+  /// Total energy (weighted) from the mesh, for tests of local changes.
+  double totalEnergy();
+
+private:
+  void assignSamplesFromScratch();
+  /// Calls function(face, a, b, c) for every face with its corners' data,
+  /// in parallel: function may write that face's properties only.
+  template<typename Function>
+  void forEachFace(Function function);
+
+  std::vector<MapSurface>& Surfaces;
+  std::vector<std::array<int, 2>> Pairs;
+  SurfaceMesh Mesh;
+  std::vector<OpenMesh::VPropHandleT<Eigen::Vector3d>> G;
+  std::vector<OpenMesh::VPropHandleT<int>> LiftTriangle;
+  OpenMesh::VPropHandleT<int> Landmark;
+  OpenMesh::FPropHandleT<double> Length;
+  OpenMesh::FPropHandleT<double> Energy;
+  bool FaceEnergiesValid = false;
+  std::vector<OpenMesh::FPropHandleT<std::vector<int>>> Samples;
+  bool TrackSamples = false;
+  // The surfaces' triangle neighbours, for walks.
+  std::vector<std::vector<std::array<int, 3>>> SurfaceNeighbours;
+};
+
+} // namespace surfacemaps

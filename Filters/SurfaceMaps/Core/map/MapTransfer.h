@@ -1,0 +1,83 @@
+// SurfaceMaps engine: carrying points (and with them any data) from one input
+// to another through the common triangulation of a computed map
+// (DESIGN.md sections 1.2 and 3).
+#pragma once
+
+#include "geometry/SphereLocator.h"
+#include "map/SurfaceMap.h"
+
+#include <Eigen/Core>
+
+#include <array>
+#include <vector>
+
+namespace surfacemaps
+{
+
+struct MapTransferOptions
+{
+  /// Per T vertex: a triangle of input `to` at or near the vertex's lift
+  /// (SurfaceMapResult::sourcePoints[to], or the "SourceCellId" of T lifted
+  /// on `to`). Point location on f_to then walks from the triangle of the
+  /// first corner of the T triangle that contains the point: short walks and
+  /// no grid look-up. Empty: every point is located from the grid.
+  std::vector<int> startTriangles;
+  /// `from` and `to` are the same input: the map is the identity, and points
+  /// are located on f_to directly (exactly at a vertex when a point is that
+  /// vertex's sphere point) instead of through T's embeddings.
+  bool identity = false;
+};
+
+/// Maps points on sphere `from` to input `to` through the common
+/// triangulation T: each point is located in T's embedding g_from (triangle
+/// and barycentric coordinates), the same barycentric coordinates are taken
+/// on T's embedding g_to and the result normalised (psi = g_to o g_from^-1),
+/// then located in the embedding f_to of input `to`. Returns, per point, the
+/// triangle of input `to` and the barycentric coordinates there; with `points`
+/// = f_from of input `from`'s vertices this is the exact map
+/// Phi = f_to^-1 o psi o f_from on those vertices.
+///
+/// `commonTriangles` with `gFrom` and `gTo` are T and two of its embeddings,
+/// `fTo` and `toTriangles` input `to`'s embedding, all in the map's frame
+/// (SurfaceMapResult::spherePositions and inputSpherePositions) and certified
+/// bijective (otherwise point location throws std::runtime_error). Throws
+/// std::invalid_argument when sizes or indices do not fit together.
+std::vector<SurfacePoint> transferPoints(const std::vector<Eigen::Vector3d>& points,
+  const std::vector<std::array<int, 3>>& commonTriangles,
+  const std::vector<Eigen::Vector3d>& gFrom,
+  const std::vector<Eigen::Vector3d>& gTo,
+  const std::vector<Eigen::Vector3d>& fTo,
+  const std::vector<std::array<int, 3>>& toTriangles,
+  const MapTransferOptions& options = MapTransferOptions());
+
+/// The vertices of input `from` mapped onto input `to` by the exact map of
+/// `map` (computed from `inputs`): transferPoints with f_from's points, the
+/// lifts of T on `to` as start triangles, the identity when from == to.
+/// With from = 0 this is SurfaceMapResult::mappedFirstSource[to].
+std::vector<SurfacePoint> transferVertices(const SurfaceMapResult& map,
+  const std::vector<MapInput>& inputs,
+  int from,
+  int to);
+
+/// Where sphere point p lies on an input, given the input's embedding
+/// (`sphere`, `triangles`) and a locator built on it, walking from triangle
+/// `start` (< 0: a search from scratch); exactly at a corner when p is that
+/// corner's sphere point.
+SurfacePoint locateSurfacePoint(const SphereLocator& locator,
+  const std::vector<Eigen::Vector3d>& sphere,
+  const std::vector<std::array<int, 3>>& triangles,
+  const Eigen::Vector3d& p,
+  int start);
+
+/// The position of a surface point on the mesh it refers to.
+Eigen::Vector3d evaluateSurfacePoint(const std::vector<Eigen::Vector3d>& points,
+  const std::vector<std::array<int, 3>>& triangles,
+  const SurfacePoint& p);
+
+/// Per-corner values (e.g. PolygonMesh::cornerTexCoords, three per
+/// triangle) interpolated at a surface point inside its triangle: seams
+/// (corners of one vertex with different values) stay sharp.
+Eigen::Vector2d evaluateCornerValues(const std::vector<Eigen::Vector2d>& cornerValues,
+  const SurfacePoint& p);
+
+} // namespace surfacemaps

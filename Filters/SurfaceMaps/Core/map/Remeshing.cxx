@@ -1,0 +1,529 @@
+#include "map/Remeshing.h"
+
+#include <algorithm>
+#include <chrono>
+#include <limits>
+#include <numeric>
+#include <stdexcept>
+
+namespace surfacemaps
+{
+
+namespace
+{
+constexpr double NoGain = -std::numeric_limits<double>::infinity();
+
+using VertexHandle = OpenMesh::VertexHandle;
+using FaceHandle = OpenMesh::FaceHandle;
+
+/// The triangles an edit replaces and the ones it creates, over local
+/// vertices (mesh vertices and the one new or moved vertex).
+struct LocalEdit
+{
+  std::vector<VertexHandle> handles;
+  std::vector<MapVertex> vertices;
+  std::vector<std::array<int, 3>> before;
+  std::vector<double> beforeLengths;
+  std::vector<std::vector<int>> samples;
+  /// The new vertex (split, appended) or the moved one (collapse: index).
+  MapVertex moved;
+  int movedIndex = -1;
+  std::vector<std::array<int, 3>> after;
+  std::vector<double> afterLengths;
+  LocalAssignment assignment;
+  /// Energy of each face the edit removes (from the cache, if valid), and of
+  /// each triangle it creates.
+  double cachedBefore = 0.0;
+  bool beforeCached = true;
+  std::vector<double> afterEnergies;
+};
+
+int localIndex(const CommonTriangulation& T, LocalEdit& edit, VertexHandle v)
+{
+  const auto it = std::find(edit.handles.begin(), edit.handles.end(), v);
+  if (it != edit.handles.end())
+  {
+    return static_cast<int>(it - edit.handles.begin());
+  }
+  edit.handles.push_back(v);
+  edit.vertices.push_back(T.vertex(v));
+  return static_cast<int>(edit.handles.size()) - 1;
+}
+
+void addFace(const CommonTriangulation& T, LocalEdit& edit, FaceHandle f)
+{
+  const SurfaceMesh& mesh = T.mesh();
+  std::array<int, 3> tri;
+  int k = 0;
+  for (auto v : mesh.fv_range(f))
+  {
+    tri[k++] = localIndex(T, edit, v);
+  }
+  edit.before.push_back(tri);
+  edit.beforeLengths.push_back(T.targetLength(f));
+  edit.cachedBefore += T.faceEnergy(f);
+  edit.beforeCached = edit.beforeCached && T.faceEnergiesValid();
+  if (T.tracksSamples())
+  {
+    edit.samples.resize(T.numberOfInputs());
+    for (int i = 0; i < T.numberOfInputs(); ++i)
+    {
+      const std::vector<int>& s = T.faceSamples(f, i);
+      edit.samples[i].insert(edit.samples[i].end(), s.begin(), s.end());
+    }
+  }
+}
+
+/// Energy before minus energy after; fills the edit's after lengths and
+/// sample assignment. With a finite minGain, an edit that cannot gain more
+/// than it (its new triangles alone already cost as much as the old
+/// configuration, and sample energies are >= 0) is answered with NoGain
+/// before its samples are located: cheaper, same edits applied.
+double evaluate(const CommonTriangulation& T,
+  LocalEdit& edit,
+  double minGain = -std::numeric_limits<double>::infinity())
+{
+  const double before = edit.beforeCached
+    ? edit.cachedBefore
+    : T.localEnergy(edit.vertices, edit.before, edit.beforeLengths, edit.samples, false, nullptr);
+  std::vector<MapVertex> afterVertices = edit.vertices;
+  if (edit.movedIndex >= static_cast<int>(afterVertices.size()))
+  {
+    afterVertices.push_back(edit.moved);
+  }
+  else if (edit.movedIndex >= 0)
+  {
+    afterVertices[edit.movedIndex] = edit.moved;
+  }
+  for (const auto& tri : edit.after)
+  {
+    if (!T.validTriangle(afterVertices[tri[0]], afterVertices[tri[1]], afterVertices[tri[2]]))
+    {
+      return NoGain;
+    }
+  }
+  edit.afterLengths.assign(edit.after.size(), 1.0);
+  if (T.weights.mesh > 0.0)
+  {
+    for (std::size_t t = 0; t < edit.after.size(); ++t)
+    {
+      const auto& tri = edit.after[t];
+      edit.afterLengths[t] =
+        T.targetLength(afterVertices[tri[0]], afterVertices[tri[1]], afterVertices[tri[2]]);
+    }
+  }
+  if (std::isfinite(minGain) && std::isfinite(before))
+  {
+    double triangles = 0.0;
+    for (std::size_t t = 0; t < edit.after.size(); ++t)
+    {
+      const auto& tri = edit.after[t];
+      triangles += T.triangleEnergy(
+        afterVertices[tri[0]], afterVertices[tri[1]], afterVertices[tri[2]], edit.afterLengths[t]);
+    }
+    if (!(before - triangles > minGain))
+    {
+      return NoGain;
+    }
+  }
+  const double after = T.localEnergy(afterVertices,
+    edit.after,
+    edit.afterLengths,
+    edit.samples,
+    false, // validated above
+    &edit.assignment,
+    &edit.afterEnergies);
+  if (!std::isfinite(before) || !std::isfinite(after))
+  {
+    return NoGain;
+  }
+  return before - after;
+}
+
+// Edge u -> v with faces (u, v, x) and (v, u, y).
+struct EdgeStar
+{
+  OpenMesh::HalfedgeHandle h, o;
+  VertexHandle u, v, x, y;
+};
+
+EdgeStar edgeStar(const SurfaceMesh& mesh, OpenMesh::HalfedgeHandle h)
+{
+  EdgeStar s;
+  s.h = h;
+  s.o = mesh.opposite_halfedge_handle(h);
+  s.u = mesh.from_vertex_handle(h);
+  s.v = mesh.to_vertex_handle(h);
+  s.x = mesh.to_vertex_handle(mesh.next_halfedge_handle(h));
+  s.y = mesh.to_vertex_handle(mesh.next_halfedge_handle(s.o));
+  return s;
+}
+
+// The link condition for collapsing u -> v in a closed triangle mesh: u and
+// v have exactly two common neighbours, x and y. (OpenMesh's own check tags
+// vertices and cannot run in parallel.)
+bool collapseKeepsManifold(const SurfaceMesh& mesh, const EdgeStar& s)
+{
+  int common = 0;
+  for (auto a : mesh.vv_range(s.u))
+  {
+    for (auto b : mesh.vv_range(s.v))
+    {
+      common += a == b ? 1 : 0;
+    }
+  }
+  return common == 2;
+}
+
+bool buildSplit(const CommonTriangulation& T, OpenMesh::EdgeHandle e, LocalEdit& edit)
+{
+  const SurfaceMesh& mesh = T.mesh();
+  if (mesh.status(e).deleted())
+  {
+    return false;
+  }
+  const EdgeStar s = edgeStar(mesh, mesh.halfedge_handle(e, 0));
+  addFace(T, edit, mesh.face_handle(s.h));
+  addFace(T, edit, mesh.face_handle(s.o));
+  const int u = localIndex(T, edit, s.u), v = localIndex(T, edit, s.v);
+  const int x = localIndex(T, edit, s.x), y = localIndex(T, edit, s.y);
+  edit.moved = T.midpoint(s.u, s.v);
+  edit.movedIndex = static_cast<int>(edit.vertices.size());
+  const int m = edit.movedIndex;
+  edit.after = { { u, m, x }, { m, v, x }, { v, m, y }, { m, u, y } };
+  return true;
+}
+
+bool buildCollapse(const CommonTriangulation& T, OpenMesh::HalfedgeHandle h, LocalEdit& edit)
+{
+  const SurfaceMesh& mesh = T.mesh();
+  if (mesh.status(mesh.edge_handle(h)).deleted())
+  {
+    return false;
+  }
+  const EdgeStar s = edgeStar(mesh, h);
+  if (!collapseKeepsManifold(mesh, s) || T.landmark(s.u) >= 0 || T.landmark(s.v) >= 0 ||
+    mesh.valence(s.x) <= 3 || mesh.valence(s.y) <= 3)
+  {
+    return false;
+  }
+  const FaceHandle f0 = mesh.face_handle(s.h), f1 = mesh.face_handle(s.o);
+  std::vector<FaceHandle> faces;
+  for (auto f : mesh.vf_range(s.u))
+  {
+    faces.push_back(f);
+  }
+  for (auto f : mesh.vf_range(s.v))
+  {
+    if (f != f0 && f != f1)
+    {
+      faces.push_back(f);
+    }
+  }
+  for (FaceHandle f : faces)
+  {
+    addFace(T, edit, f);
+  }
+  const int u = localIndex(T, edit, s.u), v = localIndex(T, edit, s.v);
+  edit.moved = T.midpoint(s.u, s.v);
+  edit.moved.landmark = -1;
+  edit.movedIndex = v;
+  for (const auto& tri : edit.before)
+  {
+    const bool hasU = std::find(tri.begin(), tri.end(), u) != tri.end();
+    const bool hasV = std::find(tri.begin(), tri.end(), v) != tri.end();
+    if (hasU && hasV)
+    {
+      continue;
+    }
+    std::array<int, 3> t = tri;
+    std::replace(t.begin(), t.end(), u, v);
+    edit.after.push_back(t);
+  }
+  return true;
+}
+
+bool buildFlip(const CommonTriangulation& T, OpenMesh::EdgeHandle e, LocalEdit& edit)
+{
+  const SurfaceMesh& mesh = T.mesh();
+  if (mesh.status(e).deleted() || !mesh.is_flip_ok(e))
+  {
+    return false;
+  }
+  const EdgeStar s = edgeStar(mesh, mesh.halfedge_handle(e, 0));
+  if ((T.landmark(s.x) >= 0 && T.landmark(s.y) >= 0) || mesh.valence(s.u) <= 3 ||
+    mesh.valence(s.v) <= 3)
+  {
+    return false;
+  }
+  addFace(T, edit, mesh.face_handle(s.h));
+  addFace(T, edit, mesh.face_handle(s.o));
+  const int u = localIndex(T, edit, s.u), v = localIndex(T, edit, s.v);
+  const int x = localIndex(T, edit, s.x), y = localIndex(T, edit, s.y);
+  edit.after = { { u, y, x }, { y, v, x } };
+  return true;
+}
+
+/// After an edit: the faces' target lengths and samples from the local edit.
+void writeFaces(CommonTriangulation& T, const LocalEdit& edit, const std::vector<FaceHandle>& faces)
+{
+  const SurfaceMesh& mesh = T.mesh();
+  for (FaceHandle f : faces)
+  {
+    std::array<VertexHandle, 3> corners;
+    int k = 0;
+    for (auto v : mesh.fv_range(f))
+    {
+      corners[k++] = v;
+    }
+    int match = -1;
+    for (std::size_t t = 0; t < edit.after.size() && match < 0; ++t)
+    {
+      for (int r = 0; r < 3 && match < 0; ++r)
+      {
+        if (edit.handles[edit.after[t][r]] == corners[0] &&
+          edit.handles[edit.after[t][(r + 1) % 3]] == corners[1] &&
+          edit.handles[edit.after[t][(r + 2) % 3]] == corners[2])
+        {
+          match = static_cast<int>(t);
+        }
+      }
+    }
+    if (match < 0)
+    {
+      throw std::logic_error("remeshing: a face after an edit is not one the edit evaluated");
+    }
+    T.setTargetLength(f, edit.afterLengths[match]);
+    T.setFaceEnergy(f, edit.afterEnergies[match]);
+    if (T.tracksSamples())
+    {
+      for (int i = 0; i < T.numberOfInputs(); ++i)
+      {
+        std::vector<int>& samples = T.faceSamples(f, i);
+        samples.clear();
+        for (std::size_t k = 0; k < edit.samples[i].size(); ++k)
+        {
+          if (edit.assignment[i][k] == match)
+          {
+            samples.push_back(edit.samples[i][k]);
+          }
+        }
+      }
+    }
+  }
+}
+
+template<typename Build, typename Handle>
+double gainOf(const CommonTriangulation& T,
+  Handle handle,
+  Build build,
+  double minGain = -std::numeric_limits<double>::infinity())
+{
+  LocalEdit edit;
+  if (!build(T, handle, edit))
+  {
+    return NoGain;
+  }
+  return evaluate(T, edit, minGain);
+}
+
+/// Builds and evaluates an edit; true (and the gain in `applied`) when it
+/// is possible and gains more than minGain.
+template<typename Build, typename Handle>
+bool worthApplying(const CommonTriangulation& T,
+  Handle handle,
+  Build build,
+  double minGain,
+  double* applied,
+  LocalEdit& edit)
+{
+  if (!build(T, handle, edit))
+  {
+    return false;
+  }
+  const double gain = evaluate(T, edit, minGain);
+  if (!(gain > minGain))
+  {
+    return false;
+  }
+  if (applied)
+  {
+    *applied = gain;
+  }
+  return true;
+}
+
+std::vector<FaceHandle> facesAround(const SurfaceMesh& mesh, VertexHandle v)
+{
+  std::vector<FaceHandle> faces;
+  for (auto f : mesh.vf_range(v))
+  {
+    faces.push_back(f);
+  }
+  return faces;
+}
+
+/// Evaluates all candidates in parallel, then applies those that gain, best
+/// first, each re-evaluated on the mesh as it is by then.
+template<typename Handle, typename Gain, typename Apply>
+int pass(std::vector<Handle> candidates, double minGain, Gain gain, Apply apply, double& total)
+{
+  std::vector<double> gains(candidates.size(), NoGain);
+#pragma omp parallel for schedule(dynamic, 64)
+  for (long long k = 0; k < static_cast<long long>(candidates.size()); ++k)
+  {
+    try
+    {
+      gains[k] = gain(candidates[k]);
+    }
+    catch (const std::exception&)
+    {
+      gains[k] = NoGain; // e.g. a walk that found no end: not an edit to make
+    }
+  }
+  std::vector<std::size_t> order;
+  for (std::size_t k = 0; k < candidates.size(); ++k)
+  {
+    if (gains[k] > minGain)
+    {
+      order.push_back(k);
+    }
+  }
+  std::stable_sort(
+    order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return gains[a] > gains[b]; });
+  int applied = 0;
+  for (std::size_t k : order)
+  {
+    double g = 0.0;
+    if (apply(candidates[k], &g))
+    {
+      ++applied;
+      total += g;
+    }
+  }
+  return applied;
+}
+
+} // namespace
+
+double splitGain(const CommonTriangulation& T, OpenMesh::EdgeHandle e)
+{
+  return gainOf(T, e, buildSplit);
+}
+
+double collapseGain(const CommonTriangulation& T, OpenMesh::HalfedgeHandle h)
+{
+  return gainOf(T, h, buildCollapse);
+}
+
+double flipGain(const CommonTriangulation& T, OpenMesh::EdgeHandle e)
+{
+  return gainOf(T, e, buildFlip);
+}
+
+bool applySplit(CommonTriangulation& T, OpenMesh::EdgeHandle e, double minGain, double* applied)
+{
+  LocalEdit edit;
+  if (!worthApplying(T, e, buildSplit, minGain, applied, edit))
+  {
+    return false;
+  }
+  SurfaceMesh& mesh = T.mesh();
+  const Eigen::Vector3d& p = edit.moved.lifted[0];
+  const VertexHandle m = mesh.add_vertex(SurfaceMesh::Point(p[0], p[1], p[2]));
+  mesh.split(e, m);
+  T.setVertex(m, edit.moved);
+  edit.handles.push_back(m);
+  writeFaces(T, edit, facesAround(mesh, m));
+  return true;
+}
+
+bool applyCollapse(CommonTriangulation& T,
+  OpenMesh::HalfedgeHandle h,
+  double minGain,
+  double* applied)
+{
+  LocalEdit edit;
+  if (!worthApplying(T, h, buildCollapse, minGain, applied, edit))
+  {
+    return false;
+  }
+  SurfaceMesh& mesh = T.mesh();
+  const VertexHandle kept = mesh.to_vertex_handle(h);
+  mesh.collapse(h);
+  T.setVertex(kept, edit.moved);
+  writeFaces(T, edit, facesAround(mesh, kept));
+  return true;
+}
+
+bool applyFlip(CommonTriangulation& T, OpenMesh::EdgeHandle e, double minGain, double* applied)
+{
+  LocalEdit edit;
+  if (!worthApplying(T, e, buildFlip, minGain, applied, edit))
+  {
+    return false;
+  }
+  SurfaceMesh& mesh = T.mesh();
+  mesh.flip(e);
+  writeFaces(T,
+    edit,
+    { mesh.face_handle(mesh.halfedge_handle(e, 0)), mesh.face_handle(mesh.halfedge_handle(e, 1)) });
+  return true;
+}
+
+RemeshingResult remesh(CommonTriangulation& T, const RemeshingOptions& options)
+{
+  const auto start = std::chrono::steady_clock::now();
+  RemeshingResult result;
+  SurfaceMesh& mesh = T.mesh();
+  T.updateFaceEnergies();
+  auto allEdges = [&]()
+  {
+    std::vector<OpenMesh::EdgeHandle> edges;
+    edges.reserve(mesh.n_edges());
+    for (auto e : mesh.edges())
+    {
+      edges.push_back(e);
+    }
+    return edges;
+  };
+  if (options.split)
+  {
+    result.splits = pass(
+      allEdges(),
+      options.minGain,
+      [&](OpenMesh::EdgeHandle e) { return gainOf(T, e, buildSplit, options.minGain); },
+      [&](OpenMesh::EdgeHandle e, double* g) { return applySplit(T, e, options.minGain, g); },
+      result.gain);
+  }
+  if (options.collapse)
+  {
+    // The collapse puts the kept vertex at the midpoint: one direction will do.
+    std::vector<OpenMesh::HalfedgeHandle> halfedges;
+    for (auto e : allEdges())
+    {
+      halfedges.push_back(mesh.halfedge_handle(e, 0));
+    }
+    result.collapses = pass(
+      halfedges,
+      options.minGain,
+      [&](OpenMesh::HalfedgeHandle h) { return gainOf(T, h, buildCollapse, options.minGain); },
+      [&](OpenMesh::HalfedgeHandle h, double* g)
+      { return applyCollapse(T, h, options.minGain, g); },
+      result.gain);
+    mesh.garbage_collection();
+  }
+  if (options.flip)
+  {
+    result.flips = pass(
+      allEdges(),
+      options.minGain,
+      [&](OpenMesh::EdgeHandle e) { return gainOf(T, e, buildFlip, options.minGain); },
+      [&](OpenMesh::EdgeHandle e, double* g) { return applyFlip(T, e, options.minGain, g); },
+      result.gain);
+  }
+  result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return result;
+}
+
+} // namespace surfacemaps

@@ -1,0 +1,550 @@
+#include "mesh/MeshValidation.h"
+
+#include <Eigen/Geometry>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <map>
+#include <numeric>
+#include <sstream>
+
+namespace surfacemaps
+{
+
+namespace
+{
+
+class UnionFind
+{
+public:
+  explicit UnionFind(std::size_t n)
+    : Parent(n)
+  {
+    std::iota(this->Parent.begin(), this->Parent.end(), 0);
+  }
+  std::size_t find(std::size_t i)
+  {
+    while (this->Parent[i] != i)
+    {
+      this->Parent[i] = this->Parent[this->Parent[i]];
+      i = this->Parent[i];
+    }
+    return i;
+  }
+  void unite(std::size_t a, std::size_t b) { this->Parent[this->find(a)] = this->find(b); }
+
+private:
+  std::vector<std::size_t> Parent;
+};
+
+std::string point(const Eigen::Vector3d& p)
+{
+  std::ostringstream s;
+  s.precision(9);
+  s << "(" << p.x() << ", " << p.y() << ", " << p.z() << ")";
+  return s.str();
+}
+
+std::string plural(long long n, const char* one, const char* many)
+{
+  return std::to_string(n) + " " + (n == 1 ? one : many);
+}
+
+struct DirectedEdge
+{
+  int from, to, face;
+  int lo() const { return std::min(from, to); }
+  int hi() const { return std::max(from, to); }
+};
+
+// Structural checks every later check relies on; false if the rest cannot run.
+bool checkStructure(const PolygonMesh& mesh, MeshValidationResult& result)
+{
+  const std::size_t nv = mesh.points.size();
+  const std::size_t nf = mesh.numberOfFaces();
+  if (nv == 0 || nf == 0)
+  {
+    result.defects.push_back(nv == 0 ? "contains no vertices" : "contains no triangles");
+    return false;
+  }
+  if (mesh.nonPolygonCells > 0)
+  {
+    result.defects.push_back("contains " +
+      plural(static_cast<long long>(mesh.nonPolygonCells), "cell", "cells") +
+      " that are not polygons (lines or points); only triangles are accepted");
+  }
+
+  long long nonTriangles = 0;
+  long long firstNonTriangle = -1;
+  long long badIndex = 0;
+  long long repeated = 0;
+  long long firstRepeated = -1;
+  for (std::size_t f = 0; f < nf; ++f)
+  {
+    const int n = mesh.faceSize(f);
+    const int* face = mesh.face(f);
+    if (n != 3)
+    {
+      if (nonTriangles++ == 0)
+      {
+        firstNonTriangle = static_cast<long long>(f);
+      }
+    }
+    for (int k = 0; k < n; ++k)
+    {
+      if (face[k] < 0 || static_cast<std::size_t>(face[k]) >= nv)
+      {
+        ++badIndex;
+      }
+      for (int l = k + 1; l < n; ++l)
+      {
+        if (face[k] == face[l] && repeated++ == 0)
+        {
+          firstRepeated = static_cast<long long>(f);
+        }
+      }
+    }
+  }
+  if (nonTriangles > 0)
+  {
+    result.defects.push_back("is not a triangle mesh: " + std::to_string(nonTriangles) + " of " +
+      plural(static_cast<long long>(nf), "polygon", "polygons") +
+      " are not triangles (first: face " + std::to_string(firstNonTriangle) + " with " +
+      std::to_string(mesh.faceSize(firstNonTriangle)) + " vertices)");
+  }
+  if (badIndex > 0)
+  {
+    result.defects.push_back(
+      "has " + plural(badIndex, "face corner", "face corners") + " referring to missing vertices");
+  }
+  if (repeated > 0)
+  {
+    result.defects.push_back("has " + plural(repeated, "face", "faces") +
+      " using the same vertex twice (first: face " + std::to_string(firstRepeated) + ")");
+  }
+  return nonTriangles == 0 && badIndex == 0 && repeated == 0;
+}
+
+void checkVertices(const PolygonMesh& mesh, MeshValidationResult& result)
+{
+  const std::size_t nv = mesh.points.size();
+  long long nonFinite = 0;
+  long long firstNonFinite = -1;
+  for (std::size_t v = 0; v < nv; ++v)
+  {
+    if (!mesh.points[v].allFinite() && nonFinite++ == 0)
+    {
+      firstNonFinite = static_cast<long long>(v);
+    }
+  }
+  if (nonFinite > 0)
+  {
+    result.defects.push_back("has " + plural(nonFinite, "vertex", "vertices") +
+      " with non-finite coordinates (first: vertex " + std::to_string(firstNonFinite) + " at " +
+      point(mesh.points[firstNonFinite]) + ")");
+  }
+
+  std::vector<char> used(nv, 0);
+  for (int v : mesh.faceVertices)
+  {
+    used[v] = 1;
+  }
+  const long long unused = std::count(used.begin(), used.end(), 0);
+  if (unused > 0)
+  {
+    const long long first = std::find(used.begin(), used.end(), 0) - used.begin();
+    result.defects.push_back("has " + plural(unused, "vertex", "vertices") +
+      " not used by any triangle (first: vertex " + std::to_string(first) + ")");
+  }
+
+  std::vector<int> order(nv);
+  std::iota(order.begin(), order.end(), 0);
+  auto less = [&](int a, int b)
+  {
+    const auto& p = mesh.points[a];
+    const auto& q = mesh.points[b];
+    return std::tie(p.x(), p.y(), p.z()) < std::tie(q.x(), q.y(), q.z());
+  };
+  std::sort(order.begin(), order.end(), less);
+  long long duplicates = 0;
+  int firstA = -1, firstB = -1;
+  for (std::size_t i = 1; i < nv; ++i)
+  {
+    if (mesh.points[order[i]] == mesh.points[order[i - 1]] && mesh.points[order[i]].allFinite())
+    {
+      if (duplicates++ == 0)
+      {
+        firstA = std::min(order[i - 1], order[i]);
+        firstB = std::max(order[i - 1], order[i]);
+      }
+    }
+  }
+  if (duplicates > 0)
+  {
+    result.defects.push_back("has " + plural(duplicates, "duplicate vertex", "duplicate vertices") +
+      " (first: vertices " + std::to_string(firstA) + " and " + std::to_string(firstB) +
+      " both at " + point(mesh.points[firstA]) + ")");
+  }
+}
+
+void measureTriangles(const PolygonMesh& mesh,
+  const MeshValidationOptions& options,
+  MeshValidationResult& result)
+{
+  MeshStatistics& stats = result.statistics;
+  const std::size_t nf = mesh.numberOfFaces();
+  std::vector<double> areas(nf);
+  double total = 0.0;
+  double volume6 = 0.0;
+  for (std::size_t f = 0; f < nf; ++f)
+  {
+    const int* t = mesh.face(f);
+    const Eigen::Vector3d& a = mesh.points[t[0]];
+    const Eigen::Vector3d& b = mesh.points[t[1]];
+    const Eigen::Vector3d& c = mesh.points[t[2]];
+    areas[f] = 0.5 * (b - a).cross(c - a).norm();
+    if (std::isfinite(areas[f])) // non-finite vertices are reported on their own
+    {
+      total += areas[f];
+      volume6 += a.dot(b.cross(c));
+    }
+  }
+  stats.area = total;
+  stats.orientation = volume6 > 0 ? 1 : (volume6 < 0 ? -1 : 0);
+
+  Eigen::Vector3d lo = Eigen::Vector3d::Constant(INFINITY);
+  Eigen::Vector3d hi = Eigen::Vector3d::Constant(-INFINITY);
+  for (int v : mesh.faceVertices)
+  {
+    if (mesh.points[v].allFinite())
+    {
+      lo = lo.cwiseMin(mesh.points[v]);
+      hi = hi.cwiseMax(mesh.points[v]);
+    }
+  }
+  stats.boundingBoxDiagonal = (hi - lo).norm();
+
+  long long zero = 0;
+  long long firstZero = -1;
+  double minAngle = 180.0;
+  double sumMinAngle = 0.0;
+  long long measured = 0;
+  const double threshold = options.zeroAreaFraction * total;
+  for (std::size_t f = 0; f < nf; ++f)
+  {
+    if (!std::isfinite(areas[f]))
+    {
+      continue;
+    }
+    if (!(areas[f] > threshold))
+    {
+      if (zero++ == 0)
+      {
+        firstZero = static_cast<long long>(f);
+      }
+      continue;
+    }
+    const int* t = mesh.face(f);
+    double smallest = 180.0;
+    for (int k = 0; k < 3; ++k)
+    {
+      const Eigen::Vector3d u = mesh.points[t[(k + 1) % 3]] - mesh.points[t[k]];
+      const Eigen::Vector3d w = mesh.points[t[(k + 2) % 3]] - mesh.points[t[k]];
+      const double angle = std::atan2(u.cross(w).norm(), u.dot(w)) * 180.0 / M_PI;
+      smallest = std::min(smallest, angle);
+    }
+    minAngle = std::min(minAngle, smallest);
+    sumMinAngle += smallest;
+    ++measured;
+  }
+  stats.minAngle = measured > 0 ? minAngle : 0.0;
+  stats.meanMinAngle = measured > 0 ? sumMinAngle / measured : 0.0;
+  if (zero > 0)
+  {
+    std::ostringstream s;
+    s.precision(3);
+    s << "has " << plural(zero, "zero-area triangle", "zero-area triangles") << " (first: face "
+      << firstZero << ", vertices " << mesh.face(firstZero)[0] << " " << mesh.face(firstZero)[1]
+      << " " << mesh.face(firstZero)[2] << ", area " << areas[firstZero] << ")";
+    result.defects.push_back(s.str());
+  }
+}
+
+void checkTopology(const PolygonMesh& mesh, MeshValidationResult& result)
+{
+  MeshStatistics& stats = result.statistics;
+  const std::size_t nv = mesh.points.size();
+  const std::size_t nf = mesh.numberOfFaces();
+
+  std::vector<DirectedEdge> halfedges;
+  halfedges.reserve(3 * nf);
+  for (std::size_t f = 0; f < nf; ++f)
+  {
+    const int* t = mesh.face(f);
+    for (int k = 0; k < 3; ++k)
+    {
+      halfedges.push_back({ t[k], t[(k + 1) % 3], static_cast<int>(f) });
+    }
+  }
+  std::sort(halfedges.begin(),
+    halfedges.end(),
+    [](const DirectedEdge& a, const DirectedEdge& b)
+    { return std::make_pair(a.lo(), a.hi()) < std::make_pair(b.lo(), b.hi()); });
+
+  long long edges = 0, boundary = 0, nonManifold = 0, misoriented = 0;
+  std::array<int, 2> firstBoundary{ -1, -1 }, firstNonManifold{ -1, -1 },
+    firstMisoriented{ -1, -1 };
+  for (std::size_t i = 0; i < halfedges.size();)
+  {
+    std::size_t j = i + 1;
+    while (j < halfedges.size() && halfedges[j].lo() == halfedges[i].lo() &&
+      halfedges[j].hi() == halfedges[i].hi())
+    {
+      ++j;
+    }
+    const std::array<int, 2> edge{ halfedges[i].lo(), halfedges[i].hi() };
+    ++edges;
+    const std::size_t count = j - i;
+    if (count == 1 && boundary++ == 0)
+    {
+      firstBoundary = edge;
+    }
+    if (count > 2 && nonManifold++ == 0)
+    {
+      firstNonManifold = edge;
+    }
+    if (count == 2 && halfedges[i].from == halfedges[i + 1].from && misoriented++ == 0)
+    {
+      firstMisoriented = edge;
+    }
+    i = j;
+  }
+  stats.edges = edges;
+  stats.boundaryEdges = boundary;
+  stats.nonManifoldEdges = nonManifold;
+
+  auto edgeText = [](const std::array<int, 2>& e)
+  { return "edge " + std::to_string(e[0]) + "-" + std::to_string(e[1]); };
+  if (boundary > 0)
+  {
+    result.defects.push_back(
+      "is not closed: " + plural(boundary, "boundary edge", "boundary edges") +
+      " (first: " + edgeText(firstBoundary) + ")");
+  }
+  if (nonManifold > 0)
+  {
+    result.defects.push_back("has " +
+      plural(nonManifold, "non-manifold edge", "non-manifold edges") +
+      " shared by more than two triangles (first: " + edgeText(firstNonManifold) + ")");
+  }
+  if (misoriented > 0)
+  {
+    result.defects.push_back(
+      "is not consistently oriented: " + plural(misoriented, "edge is", "edges are") +
+      " traversed in the same direction by both triangles (first: " + edgeText(firstMisoriented) +
+      ")");
+  }
+
+  // Vertex manifoldness: the link of a vertex (the opposite edges of its
+  // triangles) must be connected, i.e. its triangles form one fan.
+  std::vector<int> linkOffsets(nv + 1, 0);
+  for (int v : mesh.faceVertices)
+  {
+    ++linkOffsets[v + 1];
+  }
+  std::partial_sum(linkOffsets.begin(), linkOffsets.end(), linkOffsets.begin());
+  std::vector<std::array<int, 2>> links(mesh.faceVertices.size());
+  {
+    std::vector<int> fill(linkOffsets.begin(), linkOffsets.end() - 1);
+    for (std::size_t f = 0; f < nf; ++f)
+    {
+      const int* t = mesh.face(f);
+      for (int k = 0; k < 3; ++k)
+      {
+        links[fill[t[k]]++] = { t[(k + 1) % 3], t[(k + 2) % 3] };
+      }
+    }
+  }
+  long long nonManifoldVertices = 0;
+  int firstNonManifoldVertex = -1;
+  std::vector<int> local;
+  for (std::size_t v = 0; v < nv; ++v)
+  {
+    const int begin = linkOffsets[v], end = linkOffsets[v + 1];
+    if (end - begin < 2)
+    {
+      continue;
+    }
+    local.clear();
+    for (int i = begin; i < end; ++i)
+    {
+      local.push_back(links[i][0]);
+      local.push_back(links[i][1]);
+    }
+    std::sort(local.begin(), local.end());
+    local.erase(std::unique(local.begin(), local.end()), local.end());
+    UnionFind uf(local.size());
+    auto id = [&](int w)
+    {
+      return static_cast<std::size_t>(
+        std::lower_bound(local.begin(), local.end(), w) - local.begin());
+    };
+    for (int i = begin; i < end; ++i)
+    {
+      uf.unite(id(links[i][0]), id(links[i][1]));
+    }
+    const std::size_t root = uf.find(0);
+    for (std::size_t i = 1; i < local.size(); ++i)
+    {
+      if (uf.find(i) != root)
+      {
+        if (nonManifoldVertices++ == 0)
+        {
+          firstNonManifoldVertex = static_cast<int>(v);
+        }
+        break;
+      }
+    }
+  }
+  stats.nonManifoldVertices = nonManifoldVertices;
+  if (nonManifoldVertices > 0)
+  {
+    result.defects.push_back("has " +
+      plural(nonManifoldVertices, "non-manifold vertex", "non-manifold vertices") +
+      " where separate fans of triangles meet (first: vertex " +
+      std::to_string(firstNonManifoldVertex) + " at " + point(mesh.points[firstNonManifoldVertex]) +
+      ")");
+  }
+
+  // Connected components over the used vertices.
+  UnionFind uf(nv);
+  for (std::size_t f = 0; f < nf; ++f)
+  {
+    const int* t = mesh.face(f);
+    uf.unite(t[0], t[1]);
+    uf.unite(t[0], t[2]);
+  }
+  std::vector<char> used(nv, 0);
+  for (int v : mesh.faceVertices)
+  {
+    used[v] = 1;
+  }
+  long long components = 0;
+  long long usedVertices = 0;
+  for (std::size_t v = 0; v < nv; ++v)
+  {
+    if (used[v])
+    {
+      ++usedVertices;
+      if (uf.find(v) == v)
+      {
+        ++components;
+      }
+    }
+  }
+  stats.components = components;
+  if (components > 1)
+  {
+    result.defects.push_back("has " + std::to_string(components) +
+      " connected components; a single connected surface is required");
+  }
+
+  if (boundary == 0 && nonManifold == 0 && nonManifoldVertices == 0 && misoriented == 0 &&
+    components == 1)
+  {
+    const long long chi = usedVertices - edges + static_cast<long long>(nf);
+    stats.genus = static_cast<int>((2 - chi) / 2);
+    if (stats.genus != 0)
+    {
+      result.defects.push_back("has genus " + std::to_string(stats.genus) +
+        "; a genus-0 (sphere-like) surface is required");
+    }
+  }
+}
+
+} // namespace
+
+MeshValidationResult validateMesh(const PolygonMesh& mesh, const MeshValidationOptions& options)
+{
+  MeshValidationResult result;
+  result.statistics.vertices = static_cast<long long>(mesh.points.size());
+  result.statistics.faces = static_cast<long long>(mesh.numberOfFaces());
+  if (!checkStructure(mesh, result))
+  {
+    return result;
+  }
+  checkVertices(mesh, result);
+  measureTriangles(mesh, options, result);
+  checkTopology(mesh, result);
+  return result;
+}
+
+std::vector<std::string> checkLandmarkIds(const std::vector<int>& landmarkIds)
+{
+  std::vector<std::string> defects;
+  std::map<int, int> idToVertex;
+  for (std::size_t v = 0; v < landmarkIds.size(); ++v)
+  {
+    const int id = landmarkIds[v];
+    if (id < -1)
+    {
+      defects.push_back("has landmark id " + std::to_string(id) + " at vertex " +
+        std::to_string(v) + " (ids are >= 0, -1 means none)");
+      break;
+    }
+    if (id < 0)
+    {
+      continue;
+    }
+    auto [it, inserted] = idToVertex.emplace(id, static_cast<int>(v));
+    if (!inserted)
+    {
+      defects.push_back("has landmark id " + std::to_string(id) + " on two vertices (" +
+        std::to_string(it->second) + " and " + std::to_string(v) + ")");
+      break;
+    }
+  }
+  return defects;
+}
+
+std::vector<std::vector<std::string>> checkLandmarkCorrespondence(
+  const std::vector<std::vector<int>>& landmarkIds,
+  const std::vector<std::string>& names)
+{
+  std::vector<std::vector<std::string>> defects(landmarkIds.size());
+  std::vector<std::map<int, int>> idToVertex(landmarkIds.size());
+  for (std::size_t i = 0; i < landmarkIds.size(); ++i)
+  {
+    for (std::size_t v = 0; v < landmarkIds[i].size(); ++v)
+    {
+      if (landmarkIds[i][v] >= 0)
+      {
+        idToVertex[i].emplace(landmarkIds[i][v], static_cast<int>(v));
+      }
+    }
+  }
+  for (std::size_t i = 1; i < landmarkIds.size(); ++i)
+  {
+    const auto& a = idToVertex[0];
+    const auto& b = idToVertex[i];
+    if (a.size() != b.size())
+    {
+      defects[i].push_back("landmark counts do not match: " + names[0] + " has " +
+        std::to_string(a.size()) + ", " + names[i] + " has " + std::to_string(b.size()));
+      continue;
+    }
+    for (const auto& [id, vertex] : a)
+    {
+      if (!b.count(id))
+      {
+        defects[i].push_back("landmark ids do not match: id " + std::to_string(id) + " is on " +
+          names[0] + " (vertex " + std::to_string(vertex) + ") but not on " + names[i]);
+        break;
+      }
+    }
+  }
+  return defects;
+}
+
+} // namespace surfacemaps

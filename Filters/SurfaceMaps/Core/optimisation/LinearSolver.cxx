@@ -1,0 +1,182 @@
+#include "optimisation/LinearSolver.h"
+
+#include <mutex>
+
+#include <Eigen/CholmodSupport>
+
+#include <dlfcn.h>
+#include <omp.h>
+
+#include <cmath>
+#include <sstream>
+
+namespace surfacemaps
+{
+
+namespace
+{
+// CHOLMOD's supernodal factorisation calls BLAS on many small dense blocks.
+// A multithreaded OpenBLAS slows that down by an order of magnitude (its
+// threads fight the engine's OpenMP threads over 2 cores), so BLAS runs on
+// one thread while any factorisation runs and is restored when the last one
+// ends. The thread count is global: concurrent solvers (several embeddings at
+// once) share one count of active guards, or one of them would restore the
+// old count while another factorises, with results that change from run to
+// run. Looked up at run time: with another BLAS there is nothing to do.
+// OpenBLAS' OpenMP build sets the calling thread's OpenMP thread count in
+// openblas_set_num_threads, so each guard also restores the count its own
+// thread had (otherwise omp_set_num_threads(1) or a per-rank thread count
+// would be overridden by OpenBLAS' count after the first solve).
+class SingleThreadedBlas
+{
+public:
+  SingleThreadedBlas()
+    : OpenMPThreads(omp_get_max_threads())
+  {
+    std::lock_guard<std::mutex> lock(mutex());
+    State& s = state();
+    if (s.active++ == 0)
+    {
+      using Get = int (*)();
+      auto get = reinterpret_cast<Get>(dlsym(RTLD_DEFAULT, "openblas_get_num_threads"));
+      s.set = reinterpret_cast<void (*)(int)>(dlsym(RTLD_DEFAULT, "openblas_set_num_threads"));
+      s.previous = get && s.set ? get() : 0;
+      if (s.previous > 0)
+      {
+        s.set(1);
+      }
+    }
+  }
+  ~SingleThreadedBlas()
+  {
+    std::lock_guard<std::mutex> lock(mutex());
+    State& s = state();
+    if (--s.active == 0 && s.previous > 0)
+    {
+      s.set(s.previous);
+    }
+    omp_set_num_threads(this->OpenMPThreads);
+  }
+
+private:
+  const int OpenMPThreads;
+  struct State
+  {
+    int active = 0;
+    int previous = 0;
+    void (*set)(int) = nullptr;
+  };
+  static State& state()
+  {
+    static State s;
+    return s;
+  }
+  static std::mutex& mutex()
+  {
+    static std::mutex m;
+    return m;
+  }
+};
+} // namespace
+
+struct LinearSolver::Internals
+{
+  Eigen::CholmodDecomposition<Eigen::SparseMatrix<double>, Eigen::Upper> Cholesky;
+  bool Analysed = false;
+};
+
+LinearSolver::LinearSolver(Ordering ordering)
+  : Impl(new Internals)
+{
+  cholmod_common& common = this->Impl->Cholesky.cholmod();
+  // LL^T (a failed factorisation means "not positive definite"), supernodal
+  // when the factor is dense enough for BLAS to pay off, simplicial
+  // otherwise. Measured here: the two-embedding Newton system (AMD, ~300
+  // flops per factor entry) is 1.7x faster supernodal, a single embedding
+  // (nested dissection, ~120 flops per entry) 1.4x faster simplicial; CHOLMOD's
+  // default switch (40) would take supernodal for both.
+  common.final_asis = 0;
+  common.final_ll = 1;
+  common.supernodal = CHOLMOD_AUTO;
+  common.supernodal_switch = 200;
+  common.nmethods = 1;
+  common.method[0].ordering = ordering == Ordering::Amd ? CHOLMOD_AMD : CHOLMOD_METIS;
+  common.postorder = 1;
+  // Failures are handled (and logged) here; CHOLMOD must not print them.
+  this->Impl->Cholesky.cholmod().print = 0;
+  this->Impl->Cholesky.cholmod().error_handler = nullptr;
+}
+
+LinearSolver::~LinearSolver() = default;
+
+LinearSolveResult LinearSolver::solve(const Eigen::SparseMatrix<double>& H,
+  const Eigen::VectorXd& b,
+  Eigen::VectorXd& x,
+  bool patternChanged,
+  const Logger& log)
+{
+  LinearSolveResult result;
+  const SingleThreadedBlas blasThreads;
+  auto& cholesky = this->Impl->Cholesky;
+  if (patternChanged || !this->Impl->Analysed)
+  {
+    {
+      // METIS (nested dissection orderings) keeps its random state in
+      // globals and reseeds per call: concurrent analyses (several
+      // embeddings at once) would draw from each other's sequence and give
+      // orderings, hence rounding, that change from run to run.
+      static std::mutex orderingMutex;
+      std::lock_guard<std::mutex> lock(orderingMutex);
+      cholesky.analyzePattern(H);
+    }
+    this->Impl->Analysed = true;
+    result.analysed = true;
+  }
+  cholesky.factorize(H);
+  if (cholesky.info() == Eigen::Success)
+  {
+    x = cholesky.solve(b);
+    result.success = cholesky.info() == Eigen::Success && x.allFinite();
+    if (result.success)
+    {
+      return result;
+    }
+  }
+
+  // Regularise: H + shift I, the shift growing from a tiny fraction of the
+  // largest diagonal entry. The pattern already holds the diagonal.
+  double maxDiagonal = 0.0;
+  for (Eigen::Index i = 0; i < H.rows(); ++i)
+  {
+    maxDiagonal = std::max(maxDiagonal, std::abs(H.coeff(i, i)));
+  }
+  Eigen::SparseMatrix<double> shifted = H;
+  double shift = std::max(1e-12, 1e-10 * maxDiagonal);
+  for (int attempt = 0; attempt < 12; ++attempt, shift *= 10.0)
+  {
+    shifted = H;
+    for (Eigen::Index i = 0; i < shifted.rows(); ++i)
+    {
+      shifted.coeffRef(i, i) += shift;
+    }
+    cholesky.factorize(shifted);
+    if (cholesky.info() != Eigen::Success)
+    {
+      continue;
+    }
+    x = cholesky.solve(b);
+    if (cholesky.info() == Eigen::Success && x.allFinite())
+    {
+      std::ostringstream message;
+      message << "Cholesky factorisation failed; solved with diagonal shift " << shift;
+      log(Logger::Warning, message.str());
+      result.success = true;
+      result.shift = shift;
+      return result;
+    }
+  }
+  log(Logger::Warning, "Cholesky factorisation failed even with a diagonal shift");
+  return result;
+}
+
+} // namespace surfacemaps

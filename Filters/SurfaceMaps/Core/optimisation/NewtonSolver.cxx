@@ -1,0 +1,218 @@
+#include "optimisation/NewtonSolver.h"
+
+#include <chrono>
+#include <cmath>
+#include <sstream>
+
+namespace surfacemaps
+{
+
+namespace
+{
+double secondsSince(std::chrono::steady_clock::time_point start)
+{
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+} // namespace
+
+NewtonStepResult newtonStep(Objective& objective,
+  SpherePoints& points,
+  LinearSolver& solver,
+  const NewtonOptions& options)
+{
+  NewtonStepResult result;
+  Eigen::VectorXd g;
+  Eigen::SparseMatrix<double> H;
+  bool patternChanged = false;
+  auto clock = std::chrono::steady_clock::now();
+  result.energyBefore = objective.hessian(points, options.projectionEps, g, H, &patternChanged);
+  result.derivativeSeconds = secondsSince(clock);
+  result.energyAfter = result.energyBefore;
+  if (!std::isfinite(result.energyBefore))
+  {
+    // Not converged, not movable: the caller must not take this for a minimum.
+    result.decrement = std::numeric_limits<double>::infinity();
+    options.log(Logger::Warning, "Newton step from an invalid state (infinite energy)");
+    return result;
+  }
+  if (points.numberOfVariables() == 0)
+  {
+    return result;
+  }
+
+  Eigen::VectorXd d;
+  clock = std::chrono::steady_clock::now();
+  const LinearSolveResult solve = solver.solve(H, -g, d, patternChanged, options.log);
+  result.solveSeconds = secondsSince(clock);
+  result.regularised = solve.shift > 0.0;
+  double slope = solve.success ? d.dot(g) : 0.0;
+  if (!solve.success || !(slope < 0.0))
+  {
+    d = -g;
+    slope = -g.squaredNorm();
+    result.gradientFallback = true;
+    options.log(Logger::Detail, "Newton direction is no descent direction; using -gradient");
+  }
+  result.decrement = std::sqrt(std::max(0.0, -slope));
+  if (!(slope < 0.0))
+  {
+    return result; // zero gradient: nothing to do
+  }
+
+  // The first trial step: 1, or less where a point would move farther than the cap.
+  auto firstStep = [&](const Eigen::VectorXd& direction)
+  {
+    double largest = 0.0;
+    for (int i = 0; options.maxPointStep > 0.0 && i < points.size(); ++i)
+    {
+      const int v = points.variable(i);
+      if (v >= 0)
+      {
+        largest = std::max(largest, std::hypot(direction[v], direction[v + 1]));
+      }
+    }
+    return largest > options.maxPointStep ? options.maxPointStep / largest : 1.0;
+  };
+
+  const std::vector<Eigen::Vector3d> start = points.positions();
+  auto energyAlong = [&](const Eigen::VectorXd& direction, double t)
+  {
+    points.setPositions(start);
+    points.retract(direction, t);
+    if (options.acceptTrial && !options.acceptTrial(points))
+    {
+      return std::numeric_limits<double>::infinity();
+    }
+    return objective.value(points);
+  };
+  clock = std::chrono::steady_clock::now();
+  double initialStep = firstStep(d);
+  LineSearchResult ls = armijoBacktracking([&](double t) { return energyAlong(d, t); },
+    result.energyBefore,
+    slope,
+    initialStep,
+    options.lineSearch);
+  result.lineSearchTrials = ls.trials;
+
+  // Kinks: hold the points of the elements that leave their model at the last
+  // rejected trial, solve again with those points (nearly) fixed by a heavy
+  // diagonal (same sparsity pattern: the factorisation's analysis is kept).
+  // The latest direction tried, its slope, first step and line search.
+  Eigen::VectorXd triedD = d;
+  double triedSlope = slope, triedStep = initialStep;
+  LineSearchResult tried = ls;
+  std::vector<char> held;
+  Eigen::SparseMatrix<double> heldH;
+  double heavy = 0.0;
+  int heldCount = 0;
+  if (options.kinkRetries > 0)
+  {
+    objective.recordElementPoints();
+  }
+  for (int retry = 0; retry < options.kinkRetries &&
+       (!tried.success || tried.step < options.kinkStep * triedStep);
+       ++retry)
+  {
+    const double probe = tried.success ? tried.step / options.lineSearch.shrink
+                                       : triedStep * std::pow(options.lineSearch.shrink, 40);
+    energyAlong(triedD, probe);
+    const std::vector<int> off = objective.pointsOffModel(
+      points, probe * triedD, options.kinkShare * probe * -triedSlope);
+    if (heldH.size() == 0)
+    {
+      // Far above every diagonal entry of H, added once to each held point.
+      heldH = H;
+      heavy = 1.0;
+      for (int k = 0; k < H.outerSize(); ++k)
+      {
+        heavy = std::max(heavy, std::abs(H.coeff(k, k)));
+      }
+      heavy *= 1e8;
+      held.assign(points.size(), 0);
+    }
+    int added = 0;
+    for (int i : off)
+    {
+      const int v = points.variable(i);
+      if (!held[i] && v >= 0)
+      {
+        held[i] = 1;
+        heldH.coeffRef(v, v) += heavy;
+        heldH.coeffRef(v + 1, v + 1) += heavy;
+        ++added;
+      }
+    }
+    if (added == 0)
+    {
+      break;
+    }
+    heldCount += added;
+    Eigen::VectorXd heldD;
+    const auto solveClock = std::chrono::steady_clock::now();
+    const LinearSolveResult heldSolve = solver.solve(heldH, -g, heldD, false, options.log);
+    result.solveSeconds += secondsSince(solveClock);
+    const double heldSlope = heldSolve.success ? heldD.dot(g) : 0.0;
+    if (!(heldSlope < 0.0))
+    {
+      break;
+    }
+    triedD = heldD;
+    triedSlope = heldSlope;
+    triedStep = firstStep(heldD);
+    tried = armijoBacktracking([&](double t) { return energyAlong(triedD, t); },
+      result.energyBefore,
+      triedSlope,
+      triedStep,
+      options.lineSearch);
+    result.lineSearchTrials += tried.trials;
+    result.kinkRetries = retry + 1;
+    if (tried.success && (!ls.success || tried.energy < ls.energy))
+    {
+      ls = tried;
+      d = triedD;
+      result.heldPoints = heldCount;
+    }
+  }
+  points.setPositions(start);
+  if (ls.success)
+  {
+    points.retract(d, ls.step);
+    points.recentreBases();
+    result.step = ls.step;
+    result.energyAfter = ls.energy;
+    result.moved = true;
+  }
+  result.lineSearchSeconds = secondsSince(clock);
+  return result;
+}
+
+MinimizeResult minimize(Objective& objective, SpherePoints& points, const MinimizeOptions& options)
+{
+  MinimizeResult result;
+  LinearSolver solver;
+  result.initialEnergy = objective.value(points);
+  result.finalEnergy = result.initialEnergy;
+  for (int it = 0; it < options.maxIterations; ++it)
+  {
+    const NewtonStepResult step = newtonStep(objective, points, solver, options.newton);
+    result.iterations = it + 1;
+    result.finalEnergy = step.energyAfter;
+    if (options.callback && !options.callback(it, step))
+    {
+      result.aborted = true;
+      break;
+    }
+    if (step.decrement < options.decrementTolerance)
+    {
+      result.converged = true;
+      break;
+    }
+    if (!step.moved)
+    {
+      break;
+    }
+  }
+  return result;
+}
+
+} // namespace surfacemaps

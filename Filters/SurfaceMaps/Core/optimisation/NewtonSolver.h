@@ -1,0 +1,100 @@
+// SurfaceMaps engine: projected Newton on sphere points, step by step.
+#pragma once
+
+#include "optimisation/LineSearch.h"
+#include "optimisation/LinearSolver.h"
+#include "base/Log.h"
+#include "optimisation/Objective.h"
+#include "optimisation/SpherePoints.h"
+
+#include <functional>
+
+namespace surfacemaps
+{
+
+struct NewtonOptions
+{
+  /// Element Hessian eigenvalues are clamped to at least this.
+  double projectionEps = 1e-9;
+  /// Largest tangent step of any single point in one Newton step; the whole
+  /// step is scaled down (never clamped per point, which would change its
+  /// direction) to respect it. 0 = no cap.
+  double maxPointStep = 0.0;
+  LineSearchOptions lineSearch;
+  /// Kinks: when the line search fails or accepts less than `kinkStep` of
+  /// its first trial step, the points of the elements whose energy departs
+  /// from their linear model at the last rejected trial (by more than
+  /// `kinkShare` of the decrease the model predicts there) are held in place
+  /// and the step is solved and searched again, up to `kinkRetries` times.
+  /// An element that crosses a kink (e.g. an approximation sample entering a
+  /// T triangle that is tiny on the sphere but not on the surface) can block
+  /// every step of a direction that moves everything else downhill.
+  int kinkRetries = 0;
+  double kinkStep = 0.1;
+  double kinkShare = 0.01;
+  /// Extra validity check of trial positions (e.g. the embedding degree);
+  /// false rejects the trial like an infinite energy. Optional.
+  std::function<bool(const SpherePoints&)> acceptTrial;
+  Logger log;
+};
+
+struct NewtonStepResult
+{
+  double energyBefore = 0.0;
+  double energyAfter = 0.0;
+  /// Newton decrement sqrt(-d.g) of the (possibly fallback) direction.
+  double decrement = 0.0;
+  /// Accepted step length (0 if the line search failed).
+  double step = 0.0;
+  /// Line-search trials, summed over the kink retries.
+  int lineSearchTrials = 0;
+  /// Kink retries made, and the points held in the accepted direction.
+  int kinkRetries = 0;
+  int heldPoints = 0;
+  /// The Newton direction was no descent direction; -gradient was used.
+  bool gradientFallback = false;
+  /// The linear solve needed a diagonal shift.
+  bool regularised = false;
+  /// The points moved (line search succeeded).
+  bool moved = false;
+  /// Wall time of the parts: element derivatives with Hessian projection and
+  /// assembly, the linear solve, the line search.
+  double derivativeSeconds = 0.0;
+  double solveSeconds = 0.0;
+  double lineSearchSeconds = 0.0;
+};
+
+/// One projected-Newton step on all unlocked points: derivatives with
+/// projected element Hessians, sparse solve H d = -g, Armijo line search on
+/// the retraction, bases re-centred. Points stay where they are if no trial
+/// is accepted.
+NewtonStepResult newtonStep(Objective& objective,
+  SpherePoints& points,
+  LinearSolver& solver,
+  const NewtonOptions& options = NewtonOptions());
+
+struct MinimizeOptions
+{
+  NewtonOptions newton;
+  int maxIterations = 50;
+  /// Converged when the Newton decrement is below this.
+  double decrementTolerance = 1e-4;
+  /// Called after every iteration with the iteration number (from 0) and its
+  /// step result; return false to stop (abort).
+  std::function<bool(int, const NewtonStepResult&)> callback;
+};
+
+struct MinimizeResult
+{
+  int iterations = 0;
+  bool converged = false;
+  bool aborted = false;
+  double initialEnergy = 0.0;
+  double finalEnergy = 0.0;
+};
+
+/// Newton steps until the decrement is below the tolerance, no step is
+/// possible, the iteration cap is reached, or the callback aborts.
+MinimizeResult minimize(Objective& objective, SpherePoints& points, const MinimizeOptions& options);
+
+} // namespace surfacemaps

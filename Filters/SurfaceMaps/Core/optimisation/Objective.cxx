@@ -1,0 +1,392 @@
+#include "optimisation/Objective.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <stdexcept>
+
+namespace surfacemaps
+{
+
+namespace
+{
+constexpr double Infinity = std::numeric_limits<double>::infinity();
+
+// Sum in element order (deterministic); +inf if any element is not finite.
+double sumOrInfinity(const std::vector<double>& values)
+{
+  double sum = 0.0;
+  for (double v : values)
+  {
+    if (!std::isfinite(v))
+    {
+      return Infinity;
+    }
+    sum += v;
+  }
+  return sum;
+}
+} // namespace
+
+void Objective::addTerm(std::shared_ptr<ObjectiveTerm> term, double weight)
+{
+  if (!(weight >= 0.0))
+  {
+    throw std::invalid_argument("objective term weights must be >= 0");
+  }
+  Entry entry;
+  entry.Term = std::move(term);
+  entry.Weight = weight;
+  this->Terms.push_back(std::move(entry));
+  this->PatternValid = false;
+}
+
+void Objective::clear()
+{
+  this->Terms.clear();
+  this->PatternValid = false;
+}
+
+std::vector<double> Objective::termValues(const SpherePoints& points) const
+{
+  std::vector<double> result;
+  std::vector<double> values;
+  for (const Entry& entry : this->Terms)
+  {
+    values.resize(entry.Term->numberOfElements());
+    entry.Term->evaluateValues(points, values.data());
+    result.push_back(sumOrInfinity(values));
+  }
+  return result;
+}
+
+double Objective::value(const SpherePoints& points) const
+{
+  const std::vector<double> perTerm = this->termValues(points);
+  double total = 0.0;
+  for (std::size_t t = 0; t < perTerm.size(); ++t)
+  {
+    if (this->Terms[t].Weight == 0.0)
+    {
+      continue;
+    }
+    if (!std::isfinite(perTerm[t]))
+    {
+      return Infinity;
+    }
+    total += this->Terms[t].Weight * perTerm[t];
+  }
+  return total;
+}
+
+double Objective::assembleGradient(const SpherePoints& points, Eigen::VectorXd& gradient)
+{
+  gradient.setZero(points.numberOfVariables());
+  double total = 0.0;
+  std::vector<int> idx;
+  for (Entry& entry : this->Terms)
+  {
+    if (entry.Weight == 0.0)
+    {
+      continue;
+    }
+    const int ne = entry.Term->numberOfElements();
+    const int nv = entry.Term->pointsPerElement();
+    const int n = 2 * nv;
+    idx.resize(nv);
+    const double sum = sumOrInfinity(entry.Values);
+    if (!std::isfinite(sum))
+    {
+      return Infinity;
+    }
+    total += entry.Weight * sum;
+    for (int e = 0; e < ne; ++e)
+    {
+      entry.Term->elementPoints(e, idx.data());
+      const double* g = entry.Gradients.data() + static_cast<std::size_t>(e) * n;
+      for (int k = 0; k < nv; ++k)
+      {
+        const int var = points.variable(idx[k]);
+        if (var >= 0)
+        {
+          gradient[var] += entry.Weight * g[2 * k];
+          gradient[var + 1] += entry.Weight * g[2 * k + 1];
+        }
+      }
+    }
+  }
+  return total;
+}
+
+void Objective::evaluateDerivatives(
+  const SpherePoints& points, double projectionEps, bool withHessian)
+{
+  for (Entry& entry : this->Terms)
+  {
+    const int ne = entry.Term->numberOfElements();
+    const std::size_t n = 2 * entry.Term->pointsPerElement();
+    entry.Values.resize(ne);
+    entry.Gradients.resize(ne * n);
+    if (withHessian)
+    {
+      entry.Hessians.resize(ne * n * n);
+    }
+    entry.Term->evaluateDerivatives(points,
+      projectionEps,
+      entry.Values.data(),
+      entry.Gradients.data(),
+      withHessian ? entry.Hessians.data() : nullptr);
+  }
+}
+
+void Objective::recordElementPoints()
+{
+  for (Entry& entry : this->Terms)
+  {
+    const int ne = entry.Term->numberOfElements();
+    const int nv = entry.Term->pointsPerElement();
+    entry.Points.resize(static_cast<std::size_t>(ne) * nv);
+    for (int e = 0; e < ne; ++e)
+    {
+      entry.Term->elementPoints(e, entry.Points.data() + static_cast<std::size_t>(e) * nv);
+    }
+  }
+}
+
+double Objective::gradient(const SpherePoints& points, Eigen::VectorXd& gradient)
+{
+  this->evaluateDerivatives(points, 0.0, false);
+  return this->assembleGradient(points, gradient);
+}
+
+std::vector<int> Objective::pointsOffModel(
+  const SpherePoints& points, const Eigen::VectorXd& step, double threshold) const
+{
+  std::vector<char> off(points.size(), 0);
+  std::vector<double> values;
+  std::vector<int> now;
+  for (const Entry& entry : this->Terms)
+  {
+    const int ne = entry.Term->numberOfElements();
+    const int nv = entry.Term->pointsPerElement();
+    if (entry.Weight == 0.0 || entry.Values.size() != static_cast<std::size_t>(ne) ||
+      entry.Points.size() != static_cast<std::size_t>(ne) * nv)
+    {
+      continue;
+    }
+    values.resize(ne);
+    entry.Term->evaluateValues(points, values.data());
+    now.resize(nv);
+    for (int e = 0; e < ne; ++e)
+    {
+      const int* before = entry.Points.data() + static_cast<std::size_t>(e) * nv;
+      const double* g = entry.Gradients.data() + static_cast<std::size_t>(e) * 2 * nv;
+      double model = entry.Values[e];
+      for (int k = 0; k < nv; ++k)
+      {
+        const int var = points.variable(before[k]);
+        if (var >= 0)
+        {
+          model += g[2 * k] * step[var] + g[2 * k + 1] * step[var + 1];
+        }
+      }
+      // Also an element that became invalid (+inf) is off its model.
+      if (!(entry.Weight * (values[e] - model) <= threshold))
+      {
+        entry.Term->elementPoints(e, now.data());
+        for (int k = 0; k < nv; ++k)
+        {
+          off[before[k]] = 1;
+          off[now[k]] = 1;
+        }
+      }
+    }
+  }
+  std::vector<int> result;
+  for (int i = 0; i < points.size(); ++i)
+  {
+    if (off[i])
+    {
+      result.push_back(i);
+    }
+  }
+  return result;
+}
+
+void Objective::buildPattern(const SpherePoints& points)
+{
+  // Every unlocked point owns two consecutive variables, so the Hessian is
+  // made of 2x2 blocks: collect the upper-triangle blocks (block row <= block
+  // column) as 64-bit keys column * blocks + row, sorted column-major (four
+  // times fewer keys than single entries), then lay out the entries.
+  const int nvars = points.numberOfVariables();
+  const std::int64_t nb = nvars / 2;
+  std::vector<std::int64_t> keys;
+  std::vector<int> idx;
+  for (std::int64_t b = 0; b < nb; ++b)
+  {
+    keys.push_back(b * nb + b); // keep the diagonal
+  }
+  for (Entry& entry : this->Terms)
+  {
+    const int ne = entry.Term->numberOfElements();
+    const int nv = entry.Term->pointsPerElement();
+    idx.resize(nv);
+    for (int e = 0; e < ne; ++e)
+    {
+      entry.Term->elementPoints(e, idx.data());
+      for (int a = 0; a < nv; ++a)
+      {
+        const int va = points.variable(idx[a]);
+        for (int b = 0; b < nv && va >= 0; ++b)
+        {
+          const int vb = points.variable(idx[b]);
+          if (vb >= va)
+          {
+            keys.push_back(static_cast<std::int64_t>(vb / 2) * nb + va / 2);
+          }
+        }
+      }
+    }
+  }
+  std::sort(keys.begin(), keys.end());
+  keys.erase(std::unique(keys.begin(), keys.end()), keys.end());
+
+  // Block column B holds blocks rows r_0 < ... < r_k = B (the diagonal last):
+  // variable column 2B has rows 2 r_j, 2 r_j + 1 (j < k) and 2B; column
+  // 2B + 1 has the same plus 2B + 1.
+  std::vector<int> blockStart(nb + 1, 0); // first key of each block column
+  for (std::int64_t k = 0; k < static_cast<std::int64_t>(keys.size()); ++k)
+  {
+    ++blockStart[keys[k] / nb + 1];
+  }
+  for (std::int64_t b = 0; b < nb; ++b)
+  {
+    blockStart[b + 1] += blockStart[b];
+  }
+  const std::int64_t nnz = 4 * static_cast<std::int64_t>(keys.size()) - nb;
+  // Keep the previous pattern to tell whether it changed (a solver can then
+  // keep its symbolic analysis).
+  Eigen::SparseMatrix<double> previous;
+  previous.swap(this->Pattern);
+  this->Pattern.resize(nvars, nvars);
+  this->Pattern.resizeNonZeros(static_cast<Eigen::Index>(nnz));
+  int* outer = this->Pattern.outerIndexPtr();
+  int* inner = this->Pattern.innerIndexPtr();
+  outer[0] = 0;
+  for (std::int64_t b = 0; b < nb; ++b)
+  {
+    const int blocks = blockStart[b + 1] - blockStart[b];
+    outer[2 * b + 1] = outer[2 * b] + 2 * blocks - 1;
+    outer[2 * b + 2] = outer[2 * b + 1] + 2 * blocks;
+    for (int j = 0; j < blocks; ++j)
+    {
+      const int row = static_cast<int>(keys[blockStart[b] + j] % nb);
+      for (int column = 0; column < 2; ++column)
+      {
+        const int at = outer[2 * b + column] + 2 * j;
+        inner[at] = 2 * row;
+        if (row < b || column == 1)
+        {
+          inner[at + 1] = 2 * row + 1;
+        }
+      }
+    }
+  }
+  std::fill(this->Pattern.valuePtr(), this->Pattern.valuePtr() + nnz, 0.0);
+  this->PatternUnchanged = previous.rows() == nvars && previous.nonZeros() == nnz &&
+    std::equal(outer, outer + nvars + 1, previous.outerIndexPtr()) &&
+    std::equal(inner, inner + nnz, previous.innerIndexPtr());
+
+  // Position of block (row, column) among its block column's blocks.
+  auto blockIndex = [&](int row, int column)
+  {
+    const std::int64_t* begin = keys.data() + blockStart[column];
+    const std::int64_t* end = keys.data() + blockStart[column + 1];
+    return static_cast<int>(
+      std::lower_bound(begin, end, static_cast<std::int64_t>(column) * nb + row) - begin);
+  };
+  for (Entry& entry : this->Terms)
+  {
+    const int ne = entry.Term->numberOfElements();
+    const int nv = entry.Term->pointsPerElement();
+    const int n = 2 * nv;
+    entry.Scatter.assign(static_cast<std::size_t>(ne) * n * n, -1);
+    idx.resize(nv);
+    for (int e = 0; e < ne; ++e)
+    {
+      entry.Term->elementPoints(e, idx.data());
+      int* scatter = entry.Scatter.data() + static_cast<std::size_t>(e) * n * n;
+      for (int a = 0; a < nv; ++a)
+      {
+        const int va = points.variable(idx[a]);
+        for (int b = 0; b < nv && va >= 0; ++b)
+        {
+          const int vb = points.variable(idx[b]);
+          if (vb < va)
+          {
+            continue; // lower triangle (or locked: vb = -1)
+          }
+          const int row = va / 2, column = vb / 2;
+          const int j = blockIndex(row, column);
+          for (int i = 0; i < 2; ++i)
+          {
+            for (int k = 0; k < 2; ++k)
+            {
+              if (row == column && i > k)
+              {
+                continue; // below the diagonal inside the diagonal block
+              }
+              scatter[(2 * a + i) + (2 * b + k) * n] = outer[2 * column + k] + 2 * j + i;
+            }
+          }
+        }
+      }
+    }
+  }
+  this->PatternVariables = nvars;
+  this->PatternValid = true;
+}
+
+double Objective::hessian(const SpherePoints& points,
+  double projectionEps,
+  Eigen::VectorXd& gradient,
+  Eigen::SparseMatrix<double>& hessian,
+  bool* patternChanged)
+{
+  const bool rebuild = !this->PatternValid || this->PatternVariables != points.numberOfVariables();
+  if (rebuild)
+  {
+    this->buildPattern(points);
+  }
+  if (patternChanged)
+  {
+    *patternChanged = rebuild && !this->PatternUnchanged;
+  }
+  this->evaluateDerivatives(points, projectionEps, true);
+  const double total = this->assembleGradient(points, gradient);
+
+  hessian = this->Pattern; // same structure, zero values
+  double* values = hessian.valuePtr();
+  for (const Entry& entry : this->Terms)
+  {
+    if (entry.Weight == 0.0)
+    {
+      continue;
+    }
+    const std::size_t count = entry.Scatter.size();
+    const int* scatter = entry.Scatter.data();
+    const double* h = entry.Hessians.data();
+    const double w = entry.Weight;
+    for (std::size_t k = 0; k < count; ++k)
+    {
+      if (scatter[k] >= 0)
+      {
+        values[scatter[k]] += w * h[k];
+      }
+    }
+  }
+  return total;
+}
+
+} // namespace surfacemaps
