@@ -1,9 +1,11 @@
 #include "vtkSphereEmbeddingFilter.h"
 
 #include "vtkSurfaceMapsConversion.h"
+#include "vtkSurfaceMapsErrorGuard.h"
 
-#include "mesh/MeshValidation.h"
 #include "embedding/SphereEmbedding.h"
+#include "geometry/Rotation.h"
+#include "mesh/MeshValidation.h"
 
 #include "vtkDataArray.h"
 #include "vtkDoubleArray.h"
@@ -69,6 +71,145 @@ std::map<int, Eigen::Vector3d> landmarkPositions(vtkPolyData* mesh,
   return result;
 }
 
+// Every defect of the mesh, each after the input's name; empty when valid.
+std::string defectsOf(const surfacemaps::PolygonMesh& mesh, const std::string& name)
+{
+  const surfacemaps::MeshValidationResult validation = surfacemaps::validateMesh(mesh);
+  std::string message;
+  for (const std::string& defect : validation.defects)
+  {
+    message += (message.empty() ? "" : "; ") + name + " " + defect;
+  }
+  return message;
+}
+
+surfacemaps::SphereEmbeddingResult embed(vtkSphereEmbeddingFilter* self,
+  const surfacemaps::PolygonMesh& mesh)
+{
+  self->SetProgressText("Sphere embedding");
+  self->UpdateProgress(0.0);
+  surfacemaps::SphereEmbeddingOptions options;
+  options.barrierWeight = self->GetBarrierWeight();
+  options.levelIterations = self->GetLevelIterations();
+  options.levelIterationsLarge = self->GetLargeLevelIterations();
+  options.finalIterations = self->GetFinalIterations();
+  options.finalTolerance = self->GetFinalTolerance();
+  options.progress = [self](double fraction)
+  {
+    self->UpdateProgress(fraction);
+    return !self->GetAbortExecute();
+  };
+  options.log.sink = [](surfacemaps::Logger::Level level, const std::string& message)
+  {
+    if (level == surfacemaps::Logger::Warning)
+    {
+      vtkLog(WARNING, << message);
+    }
+    else
+    {
+      vtkLog(TRACE, << message);
+    }
+  };
+  return surfacemaps::embedOnSphere(mesh, options);
+}
+
+// Rigid rotation of the embedding onto the reference's landmarks; returns the
+// RMS angle between the matched landmarks, or -1 when there are none to match.
+double alignToReference(vtkSphereEmbeddingFilter* self,
+  vtkPolyData* input,
+  vtkPolyData* reference,
+  const surfacemaps::PolygonMesh& mesh,
+  const std::string& name,
+  surfacemaps::SphereEmbeddingResult& result)
+{
+  const auto own = landmarkPositions(input, result.positions);
+  const auto other =
+    landmarkPositions(reference, vtkSurfaceMapsConversion::SpherePositions(reference));
+  std::vector<Eigen::Vector3d> from, to;
+  for (const auto& [id, p] : own)
+  {
+    const auto it = other.find(id);
+    if (it != other.end())
+    {
+      from.push_back(p);
+      to.push_back(it->second.normalized());
+    }
+  }
+  if (from.empty())
+  {
+    vtkWarningWithObjectMacro(self,
+      << name
+      << ": no landmark ids in common with the reference embedding; "
+         "not rotated");
+    return -1.0;
+  }
+  const Eigen::Matrix3d R = surfacemaps::bestRotation(from, to);
+  for (Eigen::Vector3d& p : result.positions)
+  {
+    p = (R * p).normalized();
+  }
+  double sum = 0.0;
+  for (std::size_t k = 0; k < from.size(); ++k)
+  {
+    const Eigen::Vector3d q = R * from[k];
+    sum += std::pow(std::atan2(q.cross(to[k]).norm(), q.dot(to[k])), 2);
+  }
+  // A rotation keeps every orientation, but the certificate is cheap:
+  // recheck after rounding.
+  result.certificate = surfacemaps::certifyBijective(result.positions, mesh.triangles());
+  if (!result.certificate.bijective)
+  {
+    throw std::runtime_error(
+      "the rotated embedding is not bijective: " + result.certificate.reason);
+  }
+  return std::sqrt(sum / static_cast<double>(from.size()));
+}
+
+// The input with "SpherePosition" (and, on request, its points on the sphere)
+// and the embedding's figures as field data.
+void writeOutput(vtkPolyData* output,
+  vtkPolyData* input,
+  const surfacemaps::SphereEmbeddingResult& result,
+  bool pointsOnSphere,
+  double alignmentError)
+{
+  output->ShallowCopy(input);
+  auto sphere = vtkSmartPointer<vtkDoubleArray>::New();
+  sphere->SetName("SpherePosition");
+  sphere->SetNumberOfComponents(3);
+  sphere->SetNumberOfTuples(static_cast<vtkIdType>(result.positions.size()));
+  for (std::size_t i = 0; i < result.positions.size(); ++i)
+  {
+    sphere->SetTuple(static_cast<vtkIdType>(i), result.positions[i].data());
+  }
+  // ShallowCopy gave the output its own attribute and field data objects
+  // (sharing the arrays), so adding arrays leaves the input untouched.
+  output->GetPointData()->AddArray(sphere);
+
+  if (pointsOnSphere)
+  {
+    auto original = vtkSmartPointer<vtkDoubleArray>::New();
+    original->DeepCopy(input->GetPoints()->GetData());
+    original->SetName("InputPosition");
+    output->GetPointData()->AddArray(original);
+    auto points = vtkSmartPointer<vtkPoints>::New();
+    points->SetDataTypeToDouble();
+    points->SetData(sphere);
+    output->SetPoints(points);
+  }
+
+  addFieldValue<vtkDoubleArray>(output, "EmbeddingDistortion", result.distortion);
+  addFieldValue<vtkDoubleArray>(output, "EmbeddingEnergy", result.energy);
+  addFieldValue<vtkIntArray>(output, "EmbeddingNewtonIterations", result.newtonIterations);
+  addFieldValue<vtkIntArray>(output, "EmbeddingLevels", result.levels);
+  addFieldValue<vtkIntArray>(output, "EmbeddingAttempt", result.attempt);
+  addFieldValue<vtkDoubleArray>(output, "EmbeddingSeconds", result.seconds);
+  if (alignmentError >= 0.0)
+  {
+    addFieldValue<vtkDoubleArray>(output, "LandmarkAlignmentError", alignmentError);
+  }
+}
+
 } // namespace
 
 int vtkSphereEmbeddingFilter::RequestData(vtkInformation*,
@@ -76,151 +217,32 @@ int vtkSphereEmbeddingFilter::RequestData(vtkInformation*,
   vtkInformationVector* outputVector)
 {
   vtkPolyData* input = vtkPolyData::GetData(inputVector[0], 0);
+  vtkPolyData* reference = vtkPolyData::GetData(inputVector[1], 0);
   vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
   output->Initialize();
   const std::string name = vtkSurfaceMapsConversion::InputName(input, 0);
 
-  try
-  {
-    this->SetProgressText("Validating the input");
-    const surfacemaps::PolygonMesh mesh = vtkSurfaceMapsConversion::ToPolygonMesh(input);
-    const surfacemaps::MeshValidationResult validation = surfacemaps::validateMesh(mesh);
-    if (!validation.valid())
+  return vtkSurfaceMapsErrorGuard::Run(
+    this,
+    vtkSurfaceMapsErrorGuard::MessageOnly(name + ": "),
+    [&]
     {
-      std::string message;
-      for (const std::string& defect : validation.defects)
+      this->SetProgressText("Validating the input");
+      const surfacemaps::PolygonMesh mesh = vtkSurfaceMapsConversion::ToPolygonMesh(input);
+      const std::string defects = defectsOf(mesh, name);
+      if (!defects.empty())
       {
-        message += (message.empty() ? "" : "; ") + name + " " + defect;
+        vtkErrorMacro(<< defects);
+        return 0;
       }
-      vtkErrorMacro(<< message);
-      return 0;
-    }
-
-    this->SetProgressText("Sphere embedding");
-    this->UpdateProgress(0.0);
-    surfacemaps::SphereEmbeddingOptions options;
-    options.barrierWeight = this->BarrierWeight;
-    options.levelIterations = this->LevelIterations;
-    options.levelIterationsLarge = this->LargeLevelIterations;
-    options.finalIterations = this->FinalIterations;
-    options.finalTolerance = this->FinalTolerance;
-    options.progress = [this](double fraction)
-    {
-      this->UpdateProgress(fraction);
-      return !this->GetAbortExecute();
-    };
-    options.log.sink = [](surfacemaps::Logger::Level level, const std::string& message)
-    {
-      if (level == surfacemaps::Logger::Warning)
-      {
-        vtkLog(WARNING, << message);
-      }
-      else
-      {
-        vtkLog(TRACE, << message);
-      }
-    };
-
-    surfacemaps::SphereEmbeddingResult result = surfacemaps::embedOnSphere(mesh, options);
-
-    // Rigid rotation onto the reference's landmarks.
-    double alignmentError = -1.0;
-    vtkPolyData* reference = vtkPolyData::GetData(inputVector[1], 0);
-    if (reference)
-    {
-      const auto own = landmarkPositions(input, result.positions);
-      const auto other =
-        landmarkPositions(reference, vtkSurfaceMapsConversion::SpherePositions(reference));
-      std::vector<Eigen::Vector3d> from, to;
-      for (const auto& [id, p] : own)
-      {
-        const auto it = other.find(id);
-        if (it != other.end())
-        {
-          from.push_back(p);
-          to.push_back(it->second.normalized());
-        }
-      }
-      if (from.empty())
-      {
-        vtkWarningMacro(<< name
-                        << ": no landmark ids in common with the reference embedding; "
-                           "not rotated");
-      }
-      else
-      {
-        const Eigen::Matrix3d R = surfacemaps::bestRotation(from, to);
-        for (Eigen::Vector3d& p : result.positions)
-        {
-          p = (R * p).normalized();
-        }
-        double sum = 0.0;
-        for (std::size_t k = 0; k < from.size(); ++k)
-        {
-          const Eigen::Vector3d q = R * from[k];
-          sum += std::pow(std::atan2(q.cross(to[k]).norm(), q.dot(to[k])), 2);
-        }
-        alignmentError = std::sqrt(sum / static_cast<double>(from.size()));
-        // A rotation keeps every orientation, but the certificate is cheap:
-        // recheck after rounding.
-        result.certificate = surfacemaps::certifyBijective(result.positions, mesh.triangles());
-        if (!result.certificate.bijective)
-        {
-          throw std::runtime_error(
-            "the rotated embedding is not bijective: " + result.certificate.reason);
-        }
-      }
-    }
-
-    output->ShallowCopy(input);
-    auto sphere = vtkSmartPointer<vtkDoubleArray>::New();
-    sphere->SetName("SpherePosition");
-    sphere->SetNumberOfComponents(3);
-    sphere->SetNumberOfTuples(static_cast<vtkIdType>(result.positions.size()));
-    for (std::size_t i = 0; i < result.positions.size(); ++i)
-    {
-      sphere->SetTuple(static_cast<vtkIdType>(i), result.positions[i].data());
-    }
-    // ShallowCopy gave the output its own attribute and field data objects
-    // (sharing the arrays), so adding arrays leaves the input untouched.
-    output->GetPointData()->AddArray(sphere);
-
-    if (this->OutputPointsOnSphere)
-    {
-      auto original = vtkSmartPointer<vtkDoubleArray>::New();
-      original->DeepCopy(input->GetPoints()->GetData());
-      original->SetName("InputPosition");
-      output->GetPointData()->AddArray(original);
-      auto points = vtkSmartPointer<vtkPoints>::New();
-      points->SetDataTypeToDouble();
-      points->SetData(sphere);
-      output->SetPoints(points);
-    }
-
-    addFieldValue<vtkDoubleArray>(output, "EmbeddingDistortion", result.distortion);
-    addFieldValue<vtkDoubleArray>(output, "EmbeddingEnergy", result.energy);
-    addFieldValue<vtkIntArray>(output, "EmbeddingNewtonIterations", result.newtonIterations);
-    addFieldValue<vtkIntArray>(output, "EmbeddingLevels", result.levels);
-    addFieldValue<vtkIntArray>(output, "EmbeddingAttempt", result.attempt);
-    addFieldValue<vtkDoubleArray>(output, "EmbeddingSeconds", result.seconds);
-    if (alignmentError >= 0.0)
-    {
-      addFieldValue<vtkDoubleArray>(output, "LandmarkAlignmentError", alignmentError);
-    }
-    this->UpdateProgress(1.0);
-  }
-  catch (const surfacemaps::Aborted&)
-  {
-    output->Initialize();
-    return 1;
-  }
-  catch (const std::exception& e)
-  {
-    output->Initialize();
-    vtkErrorMacro(<< name << ": " << e.what());
-    return 0;
-  }
-  return 1;
+      surfacemaps::SphereEmbeddingResult result = embed(this, mesh);
+      const double alignmentError =
+        reference ? alignToReference(this, input, reference, mesh, name, result) : -1.0;
+      writeOutput(output, input, result, this->OutputPointsOnSphere, alignmentError);
+      this->UpdateProgress(1.0);
+      return 1;
+    },
+    [output] { output->Initialize(); });
 }
 
 void vtkSphereEmbeddingFilter::PrintSelf(ostream& os, vtkIndent indent)

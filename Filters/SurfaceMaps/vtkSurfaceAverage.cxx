@@ -1,9 +1,11 @@
 #include "vtkSurfaceAverage.h"
 
 #include "vtkSurfaceMapsCombination.h"
+#include "vtkSurfaceMapsErrorGuard.h"
+
+#include "base/Aborted.h"
 
 #include "vtkCellArray.h"
-#include "vtkDemandDrivenPipeline.h"
 #include "vtkDoubleArray.h"
 #include "vtkFieldData.h"
 #include "vtkIdList.h"
@@ -34,10 +36,6 @@ namespace
 {
 
 using Similarity = vtkSurfaceMapsCombination::Similarity;
-
-struct Aborted
-{
-};
 
 std::vector<Eigen::Vector3d> pointsOf(vtkPolyData* mesh)
 {
@@ -150,6 +148,110 @@ void addField(vtkPolyData* output,
   output->GetFieldData()->AddArray(array);
 }
 
+// Every input present; throws std::invalid_argument otherwise.
+void checkInputs(const std::vector<vtkPolyData*>& inputs)
+{
+  if (inputs.empty())
+  {
+    throw std::invalid_argument("no input");
+  }
+  for (std::size_t i = 0; i < inputs.size(); ++i)
+  {
+    if (!inputs[i])
+    {
+      throw std::invalid_argument("input " + std::to_string(i) + " is not a vtkPolyData");
+    }
+  }
+}
+
+// The input weights normalised to sum 1; throws std::invalid_argument unless
+// finite, >= 0 and not all 0.
+std::vector<double> normalisedWeights(vtkSurfaceAverage* self,
+  const std::vector<vtkPolyData*>& inputs)
+{
+  const int n = static_cast<int>(inputs.size());
+  std::vector<double> weights(n);
+  double total = 0.0;
+  for (int i = 0; i < n; ++i)
+  {
+    weights[i] = self->GetInputWeight(i);
+    if (!(weights[i] >= 0.0) || !std::isfinite(weights[i]))
+    {
+      std::ostringstream text;
+      text << "the weight of " << vtkSurfaceMapsCombination::Name(inputs[i], "input", i) << " is "
+           << weights[i] << "; weights must be finite and >= 0";
+      throw std::invalid_argument(text.str());
+    }
+    total += weights[i];
+  }
+  if (!(total > 0.0))
+  {
+    throw std::invalid_argument("the input weights sum to 0");
+  }
+  for (double& w : weights)
+  {
+    w /= total;
+  }
+  return weights;
+}
+
+// The transform of every input onto input 0 (identity for input 0 and
+// without alignment) and the area-weighted RMS distance it leaves.
+struct Alignment
+{
+  std::vector<Similarity> Transforms;
+  std::vector<double> RMS;
+};
+
+template<typename Report>
+Alignment alignOntoFirst(const std::vector<vtkPolyData*>& inputs, int alignMode, Report& report)
+{
+  const int n = static_cast<int>(inputs.size());
+  const std::vector<Eigen::Vector3d> reference = pointsOf(inputs[0]);
+  const std::vector<double> areas = vertexAreas(inputs[0], reference);
+  Alignment alignment{ std::vector<Similarity>(n), std::vector<double>(n, 0.0) };
+  for (int i = 1; i < n; ++i)
+  {
+    report(static_cast<double>(i) / n, "Aligning the inputs");
+    const std::vector<Eigen::Vector3d> x = pointsOf(inputs[i]);
+    if (alignMode != vtkSurfaceAverage::ALIGN_NONE)
+    {
+      alignment.Transforms[i] =
+        fitSimilarity(x, reference, areas, alignMode == vtkSurfaceAverage::ALIGN_SIMILARITY);
+    }
+    alignment.RMS[i] = weightedRms(x, reference, areas, alignment.Transforms[i]);
+  }
+  return alignment;
+}
+
+// The alignment and the weights as field data.
+void addAlignmentFields(vtkPolyData* output,
+  const Alignment& alignment,
+  const std::vector<double>& weights,
+  bool withScale)
+{
+  std::vector<double> matrices, scales;
+  for (const Similarity& s : alignment.Transforms)
+  {
+    for (int r = 0; r < 3; ++r)
+    {
+      for (int c = 0; c < 3; ++c)
+      {
+        matrices.push_back(s.Scale * s.Rotation(r, c));
+      }
+      matrices.push_back(s.Translation(r));
+    }
+    scales.push_back(s.Scale);
+  }
+  addField(output, "AlignmentRMS", 1, alignment.RMS);
+  addField(output, "AlignmentTransform", 12, matrices);
+  addField(output, "AverageWeight", 1, weights);
+  if (withScale)
+  {
+    addField(output, "AlignmentScale", 1, scales);
+  }
+}
+
 } // namespace
 
 vtkSurfaceAverage::vtkSurfaceAverage()
@@ -212,108 +314,29 @@ int vtkSurfaceAverage::RequestData(vtkInformation*,
     this->UpdateProgress(fraction);
     if (this->GetAbortExecute())
     {
-      throw Aborted();
+      throw surfacemaps::Aborted();
     }
   };
 
-  try
-  {
-    // 1. Inputs and weights.
-    if (n == 0)
+  vtkSurfaceMapsErrorGuard::Policy policy = vtkSurfaceMapsErrorGuard::MessageOnly();
+  policy.AbortedOutputs = outputVector;
+  return vtkSurfaceMapsErrorGuard::Run(
+    this,
+    policy,
+    [&]
     {
-      throw std::invalid_argument("no input");
-    }
-    for (int i = 0; i < n; ++i)
-    {
-      if (!inputs[i])
-      {
-        throw std::invalid_argument("input " + std::to_string(i) + " is not a vtkPolyData");
-      }
-    }
-    std::vector<double> weights(n);
-    double total = 0.0;
-    for (int i = 0; i < n; ++i)
-    {
-      weights[i] = this->GetInputWeight(i);
-      if (!(weights[i] >= 0.0) || !std::isfinite(weights[i]))
-      {
-        std::ostringstream text;
-        text << "the weight of " << vtkSurfaceMapsCombination::Name(inputs[i], "input", i) << " is "
-             << weights[i] << "; weights must be finite and >= 0";
-        throw std::invalid_argument(text.str());
-      }
-      total += weights[i];
-    }
-    if (!(total > 0.0))
-    {
-      throw std::invalid_argument("the input weights sum to 0");
-    }
-    for (double& w : weights)
-    {
-      w /= total;
-    }
-
-    // 2. Identical connectivity.
-    report(0.0, "Checking the connectivity");
-    vtkSurfaceMapsCombination::CheckSameConnectivity(inputs, "input");
-
-    // 3. Alignment of every input onto input 0.
-    const std::vector<Eigen::Vector3d> reference = pointsOf(inputs[0]);
-    const std::vector<double> areas = vertexAreas(inputs[0], reference);
-    std::vector<Similarity> transforms(n);
-    std::vector<double> rms(n, 0.0);
-    for (int i = 1; i < n; ++i)
-    {
-      report(static_cast<double>(i) / n, "Aligning the inputs");
-      const std::vector<Eigen::Vector3d> x = pointsOf(inputs[i]);
-      if (this->AlignMode != ALIGN_NONE)
-      {
-        transforms[i] = fitSimilarity(x, reference, areas, this->AlignMode == ALIGN_SIMILARITY);
-      }
-      rms[i] = weightedRms(x, reference, areas, transforms[i]);
-    }
-
-    // 4. The weighted mean, points and point arrays.
-    report(static_cast<double>(n) / (n + 1), "Averaging");
-    vtkSurfaceMapsCombination::Combine(inputs, weights, transforms, output);
-
-    // 5. Field data.
-    std::vector<double> matrices, scales;
-    for (const Similarity& s : transforms)
-    {
-      for (int r = 0; r < 3; ++r)
-      {
-        for (int c = 0; c < 3; ++c)
-        {
-          matrices.push_back(s.Scale * s.Rotation(r, c));
-        }
-        matrices.push_back(s.Translation(r));
-      }
-      scales.push_back(s.Scale);
-    }
-    addField(output, "AlignmentRMS", 1, rms);
-    addField(output, "AlignmentTransform", 12, matrices);
-    addField(output, "AverageWeight", 1, weights);
-    if (this->AlignMode == ALIGN_SIMILARITY)
-    {
-      addField(output, "AlignmentScale", 1, scales);
-    }
-    report(1.0, "Done");
-  }
-  catch (const Aborted&)
-  {
-    output->Initialize();
-    // VTK 9.1 would mark the empty output as up to date (no ABORTED key yet).
-    outputVector->GetInformationObject(0)->Set(vtkDemandDrivenPipeline::DATA_NOT_GENERATED(), 1);
-    return 1;
-  }
-  catch (const std::exception& e)
-  {
-    output->Initialize();
-    vtkErrorMacro(<< e.what());
-    return 0;
-  }
-  return 1;
+      checkInputs(inputs);
+      const std::vector<double> weights = normalisedWeights(this, inputs);
+      report(0.0, "Checking the connectivity");
+      vtkSurfaceMapsCombination::CheckSameConnectivity(inputs, "input");
+      const Alignment alignment = alignOntoFirst(inputs, this->AlignMode, report);
+      report(static_cast<double>(n) / (n + 1), "Averaging");
+      vtkSurfaceMapsCombination::Combine(inputs, weights, alignment.Transforms, output);
+      addAlignmentFields(output, alignment, weights, this->AlignMode == ALIGN_SIMILARITY);
+      report(1.0, "Done");
+      return 1;
+    },
+    [output] { output->Initialize(); });
 }
 
 void vtkSurfaceAverage::PrintSelf(ostream& os, vtkIndent indent)

@@ -1,10 +1,11 @@
 #include "vtkSurfaceMapEvaluation.h"
 
 #include "vtkSurfaceMapsConversion.h"
+#include "vtkSurfaceMapsErrorGuard.h"
 
 #include "geometry/MapMetrics.h"
-#include "mesh/MeshValidation.h"
 #include "geometry/SphericalTriangulation.h"
+#include "mesh/MeshValidation.h"
 
 #include "vtkCellData.h"
 #include "vtkDataArray.h"
@@ -124,6 +125,138 @@ double percentOfDiagonal(double distance, vtkPolyData* reference)
   return diagonal > 0.0 ? 100.0 * distance / diagonal : 0.0;
 }
 
+// P and Q share their points and triangles (throws std::invalid_argument
+// naming the first difference otherwise) and are triangle meshes.
+void checkSameTriangulation(const surfacemaps::PolygonMesh& P,
+  const surfacemaps::PolygonMesh& Q,
+  const std::string& sourceName,
+  const std::string& targetName)
+{
+  if (P.points.size() != Q.points.size() || P.faceVertices != Q.faceVertices ||
+    P.faceOffsets != Q.faceOffsets)
+  {
+    std::string where = P.points.size() != Q.points.size()
+      ? std::to_string(P.points.size()) + " vs " + std::to_string(Q.points.size()) + " points"
+      : "different triangles";
+    for (std::size_t f = 0;
+         f < std::min(P.numberOfFaces(), Q.numberOfFaces()) && P.points.size() == Q.points.size();
+         ++f)
+    {
+      if (P.faceSize(f) != Q.faceSize(f) ||
+        !std::equal(P.face(f), P.face(f) + P.faceSize(f), Q.face(f)))
+      {
+        where = "first difference at triangle " + std::to_string(f);
+        break;
+      }
+    }
+    throw std::invalid_argument(
+      sourceName + " and " + targetName + " do not have the same connectivity (" + where + ")");
+  }
+  for (std::size_t f = 0; f < P.numberOfFaces(); ++f)
+  {
+    if (P.faceSize(f) != 3)
+    {
+      throw std::invalid_argument(sourceName + " is not a triangle mesh (face " +
+        std::to_string(f) + " has " + std::to_string(P.faceSize(f)) + " vertices)");
+    }
+  }
+}
+
+// Per-triangle singular values, distortion and areas, and their summary.
+void addDistortion(vtkPolyData* output, const surfacemaps::MapMetrics& metrics)
+{
+  addCellArray(output, "SingularValueMax", metrics.s1);
+  addCellArray(output, "SingularValueMin", metrics.s2);
+  addCellArray(output, "Distortion", metrics.distortion);
+  addCellArray(output, "AreaSource", metrics.areaP);
+  addCellArray(output, "AreaTarget", metrics.areaQ);
+  addField(output, "SymmetricDirichlet", metrics.symmetricDirichlet);
+  addField(output, "AreaBelow1.5", metrics.fractionBelow[0]);
+  addField(output, "AreaBelow2", metrics.fractionBelow[1]);
+  addField(output, "MaxDistortion", metrics.maxDistortion);
+  addField(output, "DegenerateTriangles", static_cast<double>(metrics.degenerateTriangles));
+}
+
+// The cumulative distortion curve: area fraction of the source below each
+// distortion from 1 to 3 in steps of 0.01.
+void addDistortionCurve(vtkPolyData* output, const surfacemaps::MapMetrics& metrics)
+{
+  std::vector<double> samples;
+  for (int k = 0; k <= 200; ++k)
+  {
+    samples.push_back(1.0 + 0.01 * k);
+  }
+  const std::vector<double> curve = metrics.cumulativeCurve(samples);
+  auto curveArray = vtkSmartPointer<vtkDoubleArray>::New();
+  curveArray->SetName("DistortionCurve");
+  curveArray->SetNumberOfComponents(2);
+  curveArray->SetComponentName(0, "Distortion");
+  curveArray->SetComponentName(1, "AreaFractionBelow");
+  for (std::size_t k = 0; k < samples.size(); ++k)
+  {
+    const double pair[2] = { samples[k], curve[k] };
+    curveArray->InsertNextTuple(pair);
+  }
+  output->GetFieldData()->AddArray(curveArray);
+}
+
+void addAngles(vtkPolyData* output,
+  const surfacemaps::PolygonMesh& P,
+  const surfacemaps::PolygonMesh& Q)
+{
+  const auto sourceStats = surfacemaps::validateMesh(P).statistics;
+  const auto targetStats = surfacemaps::validateMesh(Q).statistics;
+  addField(output, "MinAngleSource", sourceStats.minAngle);
+  addField(output, "MeanMinAngleSource", sourceStats.meanMinAngle);
+  addField(output, "MinAngleTarget", targetStats.minAngle);
+  addField(output, "MeanMinAngleTarget", targetStats.meanMinAngle);
+}
+
+// Hausdorff and two-sided distances of each side to its original, where given.
+void addApproximationErrors(vtkPolyData* output,
+  vtkPolyData* source,
+  vtkPolyData* target,
+  vtkPolyData* sourceOriginal,
+  vtkPolyData* targetOriginal)
+{
+  const char* sides[2][3] = { { "HausdorffSource", "TwoSidedDistanceSource", nullptr },
+    { "HausdorffTarget", "TwoSidedDistanceTarget", nullptr } };
+  vtkPolyData* approximations[2] = { source, target };
+  vtkPolyData* originals[2] = { sourceOriginal, targetOriginal };
+  for (int k = 0; k < 2; ++k)
+  {
+    if (!originals[k])
+    {
+      continue;
+    }
+    addField(output,
+      sides[k][0],
+      percentOfDiagonal(largestVertexDistance(originals[k], approximations[k]), originals[k]));
+    const double twoSided = std::max(largestSampledDistance(originals[k], approximations[k]),
+      largestSampledDistance(approximations[k], originals[k]));
+    addField(output, sides[k][1], percentOfDiagonal(twoSided, originals[k]));
+  }
+}
+
+// Bijectivity of both sides' sphere embeddings, where both are given.
+void addBijectivity(vtkPolyData* output,
+  vtkPolyData* source,
+  vtkPolyData* target,
+  const std::vector<std::array<int, 3>>& triangles)
+{
+  const auto sphereP = vtkSurfaceMapsConversion::SpherePositions(source);
+  const auto sphereQ = vtkSurfaceMapsConversion::SpherePositions(target);
+  if (!sphereP.empty() && !sphereQ.empty())
+  {
+    const auto cp = surfacemaps::certifyBijective(sphereP, triangles);
+    const auto cq = surfacemaps::certifyBijective(sphereQ, triangles);
+    addField(output, "Bijective", cp.bijective && cq.bijective ? 1.0 : 0.0);
+    addField(output,
+      "NonPositiveTriangles",
+      static_cast<double>(cp.nonPositiveTriangles + cq.nonPositiveTriangles));
+  }
+}
+
 } // namespace
 
 vtkSurfaceMapEvaluation::vtkSurfaceMapEvaluation()
@@ -159,115 +292,30 @@ int vtkSurfaceMapEvaluation::RequestData(vtkInformation*,
   vtkPolyData* targetOriginal = vtkPolyData::GetData(inputVector[3], 0);
   vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
   output->Initialize();
-  try
-  {
-    const surfacemaps::PolygonMesh P = vtkSurfaceMapsConversion::ToPolygonMesh(source);
-    const surfacemaps::PolygonMesh Q = vtkSurfaceMapsConversion::ToPolygonMesh(target);
-    const std::string sourceName = vtkSurfaceMapsConversion::InputName(source, 0);
-    const std::string targetName = vtkSurfaceMapsConversion::InputName(target, 1);
-    if (P.points.size() != Q.points.size() || P.faceVertices != Q.faceVertices ||
-      P.faceOffsets != Q.faceOffsets)
+  return vtkSurfaceMapsErrorGuard::Run(
+    this,
+    vtkSurfaceMapsErrorGuard::MessageOnly(),
+    [&]
     {
-      std::string where = P.points.size() != Q.points.size()
-        ? std::to_string(P.points.size()) + " vs " + std::to_string(Q.points.size()) + " points"
-        : "different triangles";
-      for (std::size_t f = 0;
-           f < std::min(P.numberOfFaces(), Q.numberOfFaces()) && P.points.size() == Q.points.size();
-           ++f)
-      {
-        if (P.faceSize(f) != Q.faceSize(f) ||
-          !std::equal(P.face(f), P.face(f) + P.faceSize(f), Q.face(f)))
-        {
-          where = "first difference at triangle " + std::to_string(f);
-          break;
-        }
-      }
-      throw std::invalid_argument(
-        sourceName + " and " + targetName + " do not have the same connectivity (" + where + ")");
-    }
-    for (std::size_t f = 0; f < P.numberOfFaces(); ++f)
-    {
-      if (P.faceSize(f) != 3)
-      {
-        throw std::invalid_argument(sourceName + " is not a triangle mesh (face " +
-          std::to_string(f) + " has " + std::to_string(P.faceSize(f)) + " vertices)");
-      }
-    }
-    const auto triangles = P.triangles();
-    const surfacemaps::MapMetrics metrics = surfacemaps::measureMap(P.points, Q.points, triangles);
+      const surfacemaps::PolygonMesh P = vtkSurfaceMapsConversion::ToPolygonMesh(source);
+      const surfacemaps::PolygonMesh Q = vtkSurfaceMapsConversion::ToPolygonMesh(target);
+      checkSameTriangulation(P,
+        Q,
+        vtkSurfaceMapsConversion::InputName(source, 0),
+        vtkSurfaceMapsConversion::InputName(target, 1));
+      const auto triangles = P.triangles();
+      const surfacemaps::MapMetrics metrics =
+        surfacemaps::measureMap(P.points, Q.points, triangles);
 
-    output->ShallowCopy(source);
-    addCellArray(output, "SingularValueMax", metrics.s1);
-    addCellArray(output, "SingularValueMin", metrics.s2);
-    addCellArray(output, "Distortion", metrics.distortion);
-    addCellArray(output, "AreaSource", metrics.areaP);
-    addCellArray(output, "AreaTarget", metrics.areaQ);
-    addField(output, "SymmetricDirichlet", metrics.symmetricDirichlet);
-    addField(output, "AreaBelow1.5", metrics.fractionBelow[0]);
-    addField(output, "AreaBelow2", metrics.fractionBelow[1]);
-    addField(output, "MaxDistortion", metrics.maxDistortion);
-    addField(output, "DegenerateTriangles", static_cast<double>(metrics.degenerateTriangles));
-    // The cumulative distortion curve: area fraction of the source below
-    // each distortion from 1 to 3 in steps of 0.01.
-    std::vector<double> samples;
-    for (int k = 0; k <= 200; ++k)
-    {
-      samples.push_back(1.0 + 0.01 * k);
-    }
-    const std::vector<double> curve = metrics.cumulativeCurve(samples);
-    auto curveArray = vtkSmartPointer<vtkDoubleArray>::New();
-    curveArray->SetName("DistortionCurve");
-    curveArray->SetNumberOfComponents(2);
-    curveArray->SetComponentName(0, "Distortion");
-    curveArray->SetComponentName(1, "AreaFractionBelow");
-    for (std::size_t k = 0; k < samples.size(); ++k)
-    {
-      const double pair[2] = { samples[k], curve[k] };
-      curveArray->InsertNextTuple(pair);
-    }
-    output->GetFieldData()->AddArray(curveArray);
-    const auto sourceStats = surfacemaps::validateMesh(P).statistics;
-    const auto targetStats = surfacemaps::validateMesh(Q).statistics;
-    addField(output, "MinAngleSource", sourceStats.minAngle);
-    addField(output, "MeanMinAngleSource", sourceStats.meanMinAngle);
-    addField(output, "MinAngleTarget", targetStats.minAngle);
-    addField(output, "MeanMinAngleTarget", targetStats.meanMinAngle);
-    const char* sides[2][3] = { { "HausdorffSource", "TwoSidedDistanceSource", nullptr },
-      { "HausdorffTarget", "TwoSidedDistanceTarget", nullptr } };
-    vtkPolyData* approximations[2] = { source, target };
-    vtkPolyData* originals[2] = { sourceOriginal, targetOriginal };
-    for (int k = 0; k < 2; ++k)
-    {
-      if (!originals[k])
-      {
-        continue;
-      }
-      addField(output,
-        sides[k][0],
-        percentOfDiagonal(largestVertexDistance(originals[k], approximations[k]), originals[k]));
-      const double twoSided = std::max(largestSampledDistance(originals[k], approximations[k]),
-        largestSampledDistance(approximations[k], originals[k]));
-      addField(output, sides[k][1], percentOfDiagonal(twoSided, originals[k]));
-    }
-    const auto sphereP = vtkSurfaceMapsConversion::SpherePositions(source);
-    const auto sphereQ = vtkSurfaceMapsConversion::SpherePositions(target);
-    if (!sphereP.empty() && !sphereQ.empty())
-    {
-      const auto cp = surfacemaps::certifyBijective(sphereP, triangles);
-      const auto cq = surfacemaps::certifyBijective(sphereQ, triangles);
-      addField(output, "Bijective", cp.bijective && cq.bijective ? 1.0 : 0.0);
-      addField(output,
-        "NonPositiveTriangles",
-        static_cast<double>(cp.nonPositiveTriangles + cq.nonPositiveTriangles));
-    }
-  }
-  catch (const std::exception& e)
-  {
-    output->Initialize();
-    vtkErrorMacro(<< e.what());
-    return 0;
-  }
-  return 1;
+      output->ShallowCopy(source);
+      addDistortion(output, metrics);
+      addDistortionCurve(output, metrics);
+      addAngles(output, P, Q);
+      addApproximationErrors(output, source, target, sourceOriginal, targetOriginal);
+      addBijectivity(output, source, target, triangles);
+      return 1;
+    },
+    [output] { output->Initialize(); });
 }
 
 void vtkSurfaceMapEvaluation::PrintSelf(ostream& os, vtkIndent indent)

@@ -42,7 +42,7 @@
  * every other point array of input i interpolated with those barycentric
  * coordinates (its own "Landmarks", "Sizing" and "SpherePosition" are not).
  *
- * OutputMode MAPPED_INPUT (also MAPPED_FIRST_INPUT): output j is the mesh of
+ * OutputMode MAPPED_INPUT: output j is the mesh of
  * input k = MappedInput mapped onto input j by the exact map (k's
  * connectivity, vertex v at Phi_kj(v) on input j): for transferring data
  * between inputs and for measuring the exact map. Point data:
@@ -88,7 +88,7 @@
  * vertex, input units: 0 when exact); "MapSeconds" (the map alone),
  * "EmbeddingSeconds" (one value per input, 0 for a given embedding); one
  * tuple per phase that ran: "PhaseName" (string:
- * landmarks, coarse, fine), "PhaseIterations", "PhaseConverged" (0: stopped at
+ * landmarks, coarse, fine, refine, bound), "PhaseIterations", "PhaseConverged" (0: stopped at
  * its iteration cap, which is normal), "PhaseEnergy", "PhaseVertices",
  * "PhaseSplits", "PhaseCollapses", "PhaseFlips", "PhaseLandmarkError",
  * "PhaseSeconds", "PhaseRemeshSeconds", "PhaseDerivativeSeconds",
@@ -103,6 +103,14 @@
  * vtkErrorCode::UnknownError for anything else). AbortExecute set during the
  * update (e.g. from a ProgressEvent observer) stops within one iteration and
  * leaves every output empty without an error.
+ *
+ * Settings: every setting of the map (all but SizingMode, NumberOfThreads,
+ * OutputMode and MappedInput) has its default, range and documentation in
+ * one table, the engine's (Core/map/MapSettings.cxx): a new filter starts at
+ * the defaults, Set<Name>() clamps into the range that Get<Name>MinValue()
+ * and Get<Name>MaxValue() return, and GetNumberOfSettings(),
+ * GetSettingName(i), GetSettingDocumentation(i), GetSettingDefault(i), ...
+ * list the table for tools (`surfacemap map --help` prints it).
  *
  * Switching OutputMode or MappedInput after an update reuses the computed map
  * as long as the inputs and every other setting are unchanged (the filter
@@ -132,6 +140,15 @@
 
 #include <memory> // for std::unique_ptr
 
+// Set<name> (clamped to the settings table's range), Get<name>,
+// Get<name>MinValue and Get<name>MaxValue of one map setting, stored in the
+// engine's options (see "Settings" above).
+#define vtkSurfaceMapSettingMacro(name, type)                                                      \
+  virtual void Set##name(type value);                                                              \
+  virtual type Get##name();                                                                        \
+  type Get##name##MinValue();                                                                      \
+  type Get##name##MaxValue()
+
 class SURFACEMAPSFILTERS_EXPORT vtkSurfaceMapFilter : public vtkPolyDataAlgorithm
 {
 public:
@@ -151,10 +168,9 @@ public:
   /** What the outputs carry. */
   enum OutputModes
   {
-    COMMON_TRIANGULATION = 0,         ///< output i: T lifted onto input i
-    MAPPED_INPUT = 1,                 ///< output j: input MappedInput mapped onto input j
-    INPUT_EMBEDDINGS = 2,             ///< output i: input i with its embedding f_i
-    MAPPED_FIRST_INPUT = MAPPED_INPUT ///< MAPPED_INPUT (with MappedInput 0)
+    COMMON_TRIANGULATION = 0, ///< output i: T lifted onto input i
+    MAPPED_INPUT = 1,         ///< output j: input MappedInput mapped onto input j
+    INPUT_EMBEDDINGS = 2      ///< output i: input i with its embedding f_i
   };
 
   /** Where the target edge lengths come from. */
@@ -162,6 +178,15 @@ public:
   {
     SIZING_ARRAY_OR_CURVATURE = 0, ///< the "Sizing" point array where present, else curvature
     SIZING_CURVATURE = 1           ///< always curvature (any "Sizing" array is ignored)
+  };
+
+  /** What values a setting takes (GetSettingType). */
+  enum SettingTypes
+  {
+    SETTING_REAL = 0,   ///< a number in [minimum, maximum]
+    SETTING_COUNT = 1,  ///< a whole number in [minimum, maximum]
+    SETTING_SWITCH = 2, ///< 0 or 1
+    SETTING_CHOICE = 3  ///< an index into GetSettingChoices
   };
 
   /** Values of GetErrorCode() after a failed update. */
@@ -173,119 +198,119 @@ public:
 
   ///@{
   /**
-   * Approximation error eps of the fine phase, in unit-area units (each input
-   * centred and scaled to unit area): the surface-approximation weight is
-   * 1/eps^2 and the curvature sizing aims at this error. Default 1e-3 (the
-   * paper's), range [1e-6, 1]. Smaller values give larger T.
+   * Approximation error eps of the fine phase (unit-area units): approximation weight 1/eps^2 and
+   * the curvature sizing's error.
    */
-  vtkSetClampMacro(TargetError, double, 1e-6, 1.0);
-  vtkGetMacro(TargetError, double);
+  vtkSurfaceMapSettingMacro(TargetError, double);
   ///@}
 
   ///@{
   /**
-   * Approximation error eps of the coarse phase, unit-area units. Default
-   * 1e-2, range [1e-6, 1]; normally larger than TargetError.
+   * Approximation error eps of the coarse phase.
    */
-  vtkSetClampMacro(CoarseError, double, 1e-6, 1.0);
-  vtkGetMacro(CoarseError, double);
+  vtkSurfaceMapSettingMacro(CoarseError, double);
   ///@}
 
   ///@{
   /**
-   * Iteration caps of the three phases (one iteration: all improving splits,
-   * collapses and flips, then one Newton step). A phase ends earlier when no
-   * edit lowers the energy and the Newton decrement is below
-   * DecrementTolerance. Defaults 100 (landmarks), 50 (coarse), 50 (fine),
-   * range [0, 100000]; 0 skips the phase. The landmark phase only runs when
-   * the inputs carry landmarks.
+   * Iteration cap of the landmark phase (only with landmarks; 0 skips it).
    */
-  vtkSetClampMacro(LandmarkIterations, int, 0, 100000);
-  vtkGetMacro(LandmarkIterations, int);
-  vtkSetClampMacro(CoarseIterations, int, 0, 100000);
-  vtkGetMacro(CoarseIterations, int);
-  vtkSetClampMacro(FineIterations, int, 0, 100000);
-  vtkGetMacro(FineIterations, int);
+  vtkSurfaceMapSettingMacro(LandmarkIterations, int);
   ///@}
 
   ///@{
   /**
-   * Weight of the bijectivity barrier in the landmark, coarse and fine
-   * phases. Defaults 1, 1e-3 and 1e-6, range [1e-12, 1e6]. Larger values keep
-   * triangles further from degenerating on the spheres at the cost of
-   * distortion.
+   * Iteration cap of the coarse phase (0 skips it).
    */
-  vtkSetClampMacro(LandmarkBarrierWeight, double, 1e-12, 1e6);
-  vtkGetMacro(LandmarkBarrierWeight, double);
-  vtkSetClampMacro(CoarseBarrierWeight, double, 1e-12, 1e6);
-  vtkGetMacro(CoarseBarrierWeight, double);
-  vtkSetClampMacro(FineBarrierWeight, double, 1e-12, 1e6);
-  vtkGetMacro(FineBarrierWeight, double);
+  vtkSurfaceMapSettingMacro(CoarseIterations, int);
   ///@}
 
   ///@{
   /**
-   * Weights of the mesh-quality, map-distortion and surface-approximation
-   * terms (coarse and fine phases). Defaults 0.5, 1 and 0.25, range [0, 1e6].
-   * The paper's weights are all 1; with our approximation term (which fits
-   * T closer to the inputs than the reference implementation's: Hausdorff
-   * 0.14 % where it reaches 0.25-0.47 % on shrec 61 <-> 248) these defaults
-   * gave lower distortion on both shared benchmark pairs and both builds
-   * (README, "Surface map"). More map weight: lower distortion; more
-   * approximation weight: T and the exact map closer to the inputs.
+   * Iteration cap of the fine phase (0 skips it and the refinement).
    */
-  vtkSetClampMacro(MeshWeight, double, 0.0, 1e6);
-  vtkGetMacro(MeshWeight, double);
-  vtkSetClampMacro(MapWeight, double, 0.0, 1e6);
-  vtkGetMacro(MapWeight, double);
-  vtkSetClampMacro(ApproximationWeight, double, 0.0, 1e6);
-  vtkGetMacro(ApproximationWeight, double);
+  vtkSurfaceMapSettingMacro(FineIterations, int);
   ///@}
 
   ///@{
   /**
-   * Landmark phase: weight of the landmark term (default 1e6, range [0, 1e12])
-   * and the distance on the sphere below which every landmark counts as
-   * reached, ending the phase (default 1e-4, range [0, 1]).
+   * Weight of the bijectivity barrier in the landmark phase.
    */
-  vtkSetClampMacro(LandmarkWeight, double, 0.0, 1e12);
-  vtkGetMacro(LandmarkWeight, double);
-  vtkSetClampMacro(LandmarkTolerance, double, 0.0, 1.0);
-  vtkGetMacro(LandmarkTolerance, double);
+  vtkSurfaceMapSettingMacro(LandmarkBarrierWeight, double);
   ///@}
 
   ///@{
   /**
-   * Once every landmark is reached, go on in the landmark phase with Newton
-   * steps and flips only (no splits or collapses) until it converges or
-   * reaches LandmarkIterations (default on): the barrier relaxes T's
-   * embeddings around the moved landmarks, a smoother start for the
-   * distortion phases. Off: the phase ends as soon as the landmarks are
-   * reached.
+   * Weight of the bijectivity barrier in the coarse phase.
    */
-  vtkSetMacro(RelaxLandmarkPhase, bool);
-  vtkGetMacro(RelaxLandmarkPhase, bool);
+  vtkSurfaceMapSettingMacro(CoarseBarrierWeight, double);
+  ///@}
+
+  ///@{
+  /**
+   * Weight of the bijectivity barrier in the fine phase and after it.
+   */
+  vtkSurfaceMapSettingMacro(FineBarrierWeight, double);
+  ///@}
+
+  ///@{
+  /**
+   * Weight of the mesh-quality term.
+   */
+  vtkSurfaceMapSettingMacro(MeshWeight, double);
+  ///@}
+
+  ///@{
+  /**
+   * Weight of the map-distortion term.
+   */
+  vtkSurfaceMapSettingMacro(MapWeight, double);
+  ///@}
+
+  ///@{
+  /**
+   * Weight of the surface-approximation term.
+   */
+  vtkSurfaceMapSettingMacro(ApproximationWeight, double);
+  ///@}
+
+  ///@{
+  /**
+   * Weight of the landmark term in the landmark phase.
+   */
+  vtkSurfaceMapSettingMacro(LandmarkWeight, double);
+  ///@}
+
+  ///@{
+  /**
+   * Sphere distance below which every landmark counts as reached.
+   */
+  vtkSurfaceMapSettingMacro(LandmarkTolerance, double);
+  ///@}
+
+  ///@{
+  /**
+   * Once the landmarks are reached, relax T around them with flips and Newton steps before the
+   * landmark phase ends.
+   */
+  vtkSurfaceMapSettingMacro(RelaxLandmarkPhase, bool);
   vtkBooleanMacro(RelaxLandmarkPhase, bool);
   ///@}
 
   ///@{
   /**
-   * After the landmark phase, lock the landmark vertices of T, snapped exactly
-   * onto their input vertices (on), or release them to the optimisation
-   * (off). Default on.
+   * After the landmark phase, snap and lock T's landmark vertices (on) or release them (off).
    */
-  vtkSetMacro(KeepLandmarks, bool);
-  vtkGetMacro(KeepLandmarks, bool);
+  vtkSurfaceMapSettingMacro(KeepLandmarks, bool);
   vtkBooleanMacro(KeepLandmarks, bool);
   ///@}
 
   ///@{
   /**
-   * Which input pairs the map distortion measures: PAIRS_STAR (default),
-   * PAIRS_SEQUENCE, PAIRS_CYCLE or PAIRS_ALL. Irrelevant for two inputs.
+   * Which input pairs the map distortion measures: PAIRS_STAR, PAIRS_SEQUENCE, PAIRS_CYCLE or
+   * PAIRS_ALL.
    */
-  vtkSetClampMacro(PairMode, int, PAIRS_STAR, PAIRS_ALL);
-  vtkGetMacro(PairMode, int);
+  vtkSurfaceMapSettingMacro(PairMode, int);
   void SetPairModeToStar() { this->SetPairMode(PAIRS_STAR); }
   void SetPairModeToSequence() { this->SetPairMode(PAIRS_SEQUENCE); }
   void SetPairModeToCycle() { this->SetPairMode(PAIRS_CYCLE); }
@@ -294,80 +319,111 @@ public:
 
   ///@{
   /**
-   * Error-bounded remeshing: the largest distance allowed between an input
-   * vertex and its base point on T (the point of T that the map assigns to
-   * it), as a fraction of that input's bounding-box diagonal. Default 0
-   * (off), range [0, 1]. After the fine phase the sizing is refined around
-   * the vertices that are too far (rounds of 10 iterations, at most 8), then
-   * BoundIterations iterations run with the bound as a barrier instead of the
-   * soft approximation term. The bound is certified on every input vertex
-   * (every vertex is an approximation sample then); a bound that cannot be
-   * met is an error ("no certified map"). Field data: "BaseDistance" and
-   * "ErrorBound" per input, in the input's units.
+   * Rounds of refinement where the exact map is distorted, after the fine phase (0: off).
    */
-  vtkSetClampMacro(MaxError, double, 0.0, 1.0);
-  vtkGetMacro(MaxError, double);
+  vtkSurfaceMapSettingMacro(RefinementRounds, int);
   ///@}
 
   ///@{
   /**
-   * Iterations with the hard bound when MaxError is set. Default 20,
-   * range [0, 100000].
+   * Iterations of each refinement round (at most FineIterations).
    */
-  vtkSetClampMacro(BoundIterations, int, 0, 100000);
-  vtkGetMacro(BoundIterations, int);
+  vtkSurfaceMapSettingMacro(RefinementIterations, int);
   ///@}
 
   ///@{
   /**
-   * Refinement where the exact map is distorted: after the fine phase, up to
-   * RefinementRounds rounds (default 3, range [0, 100]; 0 off) of
-   * RefinementIterations more iterations (default 10, range [1, 100000]; at
-   * most FineIterations) with the fine phase's settings, each after
-   * shrinking the sizing around the input triangles whose exact-map
-   * distortion max(s1, 1/s2) exceeds a threshold. The first round uses RefinementDistortion (default 1.4, range
-   * [1, 1e12]) and gives T more vertices where the map is distorted; with a
-   * fraction `area` of an input above it, the sizing there shrinks by
-   * 1 / sqrt(1 + RefinementGrowth / area), but at most by half
-   * (RefinementGrowth default 0.25, range [0, 1e12]; 0: the round only
-   * iterates). The later rounds use SqueezeDistortion (default 10, range
-   * [1, 1e12]) and halve the sizing: they repair input triangles that the
-   * exact map squeezes inside a T triangle, where it follows the two sphere
-   * embeddings, which T's own map cannot see. No round runs when no
-   * triangle is that distorted, nor without a fine phase (FineIterations 0).
-   * RefinementDistortion 10 refines only squeezes, as before 2026-11-23.
+   * The first refinement round's threshold on an input triangle's exact-map distortion max(s1,
+   * 1/s2).
    */
-  vtkSetClampMacro(RefinementRounds, int, 0, 100);
-  vtkGetMacro(RefinementRounds, int);
-  vtkSetClampMacro(RefinementIterations, int, 1, 100000);
-  vtkGetMacro(RefinementIterations, int);
-  vtkSetClampMacro(RefinementDistortion, double, 1.0, 1e12);
-  vtkGetMacro(RefinementDistortion, double);
-  vtkSetClampMacro(RefinementGrowth, double, 0.0, 1e12);
-  vtkGetMacro(RefinementGrowth, double);
-  vtkSetClampMacro(SqueezeDistortion, double, 1.0, 1e12);
-  vtkGetMacro(SqueezeDistortion, double);
+  vtkSurfaceMapSettingMacro(RefinementDistortion, double);
   ///@}
 
   ///@{
   /**
-   * Newton steps of the coarse and fine phases that the line search cuts
-   * below a tenth are solved again up to KinkRetries times with the points
-   * held that make the energy leave its model (an approximation sample
-   * crossing into a T triangle that is tiny on the sphere). Default 0 (off),
-   * range [0, 10]; each retry costs a factorisation.
+   * The later rounds' threshold: input triangles squeezed inside a T triangle.
    */
-  vtkSetClampMacro(KinkRetries, int, 0, 10);
-  vtkGetMacro(KinkRetries, int);
+  vtkSurfaceMapSettingMacro(SqueezeDistortion, double);
   ///@}
 
   ///@{
   /**
-   * Input vertices per input the approximation term uses at most (an evenly
-   * spread subsample of larger inputs). Default 50000, range [1, 1e9].
+   * Bounds the first round's refinement: sizing times 1/sqrt(1 + growth/area), at most halved.
    */
-  vtkSetClampMacro(ApproximationSamples, int, 1, 1000000000);
-  vtkGetMacro(ApproximationSamples, int);
+  vtkSurfaceMapSettingMacro(RefinementGrowth, double);
+  ///@}
+
+  ///@{
+  /**
+   * Error-bounded remeshing: largest distance of an input vertex from its base point on T, as a
+   * fraction of the input's bounding-box diagonal (0: off). Field data "BaseDistance" and
+   * "ErrorBound" per input; a bound that cannot be met is NotCertifiedError.
+   */
+  vtkSurfaceMapSettingMacro(MaxError, double);
+  ///@}
+
+  ///@{
+  /**
+   * Refinement rounds towards MaxError at most.
+   */
+  vtkSurfaceMapSettingMacro(BoundRefinementRounds, int);
+  ///@}
+
+  ///@{
+  /**
+   * Iterations of each refinement round towards MaxError.
+   */
+  vtkSurfaceMapSettingMacro(BoundRefinementIterations, int);
+  ///@}
+
+  ///@{
+  /**
+   * Refinement towards MaxError goes on while a vertex is beyond this fraction of the bound.
+   */
+  vtkSurfaceMapSettingMacro(BoundMargin, double);
+  ///@}
+
+  ///@{
+  /**
+   * Iterations with the hard bound as a barrier when MaxError is set.
+   */
+  vtkSurfaceMapSettingMacro(BoundIterations, int);
+  ///@}
+
+  ///@{
+  /**
+   * Input vertices per input the approximation term uses at most.
+   */
+  vtkSurfaceMapSettingMacro(ApproximationSamples, int);
+  ///@}
+
+  ///@{
+  /**
+   * Smallest edge length of the curvature sizing (unit-area units).
+   */
+  vtkSurfaceMapSettingMacro(MinEdgeLength, double);
+  ///@}
+
+  ///@{
+  /**
+   * Largest edge length of the curvature sizing (unit-area units).
+   */
+  vtkSurfaceMapSettingMacro(MaxEdgeLength, double);
+  ///@}
+
+  ///@{
+  /**
+   * A phase has converged when no edit lowers the energy and the Newton decrement is below this.
+   */
+  vtkSurfaceMapSettingMacro(DecrementTolerance, double);
+  ///@}
+
+  ///@{
+  /**
+   * Largest tangent step of one point in a Newton step (the whole step is scaled down to respect
+   * it).
+   */
+  vtkSurfaceMapSettingMacro(MaxPointStep, double);
   ///@}
 
   ///@{
@@ -384,22 +440,33 @@ public:
 
   ///@{
   /**
-   * Clamp of the curvature sizing's edge lengths, unit-area units. Defaults
-   * 1e-3 and 100, range [1e-9, 1e9].
+   * The settings table for tools (command lines, GUIs): setting i's property
+   * name (Set<Name>/Get<Name>), command-line flag (without "--"; for a
+   * switch the flag that turns it on, GetSettingOffFlag the one that turns it
+   * off, else nullptr), choices ("star|sequence|..." for SETTING_CHOICE,
+   * else nullptr), documentation, SettingTypes value, range and default.
+   * Indices outside [0, GetNumberOfSettings()) give nullptr or NaN.
    */
-  vtkSetClampMacro(MinEdgeLength, double, 1e-9, 1e9);
-  vtkGetMacro(MinEdgeLength, double);
-  vtkSetClampMacro(MaxEdgeLength, double, 1e-9, 1e9);
-  vtkGetMacro(MaxEdgeLength, double);
+  static int GetNumberOfSettings();
+  static const char* GetSettingName(int i);
+  static const char* GetSettingFlag(int i);
+  static const char* GetSettingOffFlag(int i);
+  static const char* GetSettingChoices(int i);
+  static const char* GetSettingDocumentation(int i);
+  static int GetSettingType(int i);
+  static double GetSettingMinimum(int i);
+  static double GetSettingMaximum(int i);
+  static double GetSettingDefault(int i);
   ///@}
 
   ///@{
   /**
-   * A phase has converged when no edit lowers the energy and the Newton
-   * decrement sqrt(-d.g) is below this. Default 1e-4, range [0, 1].
+   * Setting i's value as a double (switches 0/1, choices their index); set
+   * clamps into the range like Set<Name>(). GetSetting returns NaN for an
+   * index out of range; SetSetting ignores it.
    */
-  vtkSetClampMacro(DecrementTolerance, double, 0.0, 1.0);
-  vtkGetMacro(DecrementTolerance, double);
+  double GetSetting(int i);
+  void SetSetting(int i, double value);
   ///@}
 
   ///@{
@@ -467,44 +534,12 @@ protected:
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
   void SetNumberOfInputConnections(int port, int n) override;
 
-  double TargetError = 1e-3;
-  double CoarseError = 1e-2;
-  int LandmarkIterations = 100;
-  int CoarseIterations = 50;
-  int FineIterations = 50;
-  double LandmarkBarrierWeight = 1.0;
-  double CoarseBarrierWeight = 1e-3;
-  double FineBarrierWeight = 1e-6;
-  double MeshWeight = 0.5;
-  double MapWeight = 1.0;
-  double ApproximationWeight = 0.25;
-  double LandmarkWeight = 1e6;
-  double LandmarkTolerance = 1e-4;
-  bool RelaxLandmarkPhase = true;
-  bool KeepLandmarks = true;
-  int PairMode = PAIRS_STAR;
-  double MaxError = 0.0;
-  int BoundIterations = 20;
-  int RefinementRounds = 3;
-  int RefinementIterations = 10;
-  double RefinementDistortion = 1.4;
-  double RefinementGrowth = 0.25;
-  double SqueezeDistortion = 10.0;
-  int KinkRetries = 0;
-  int ApproximationSamples = 50000;
   int SizingMode = SIZING_ARRAY_OR_CURVATURE;
-  double MinEdgeLength = 1e-3;
-  double MaxEdgeLength = 100.0;
-  double DecrementTolerance = 1e-4;
   int OutputMode = COMMON_TRIANGULATION;
   int MappedInput = 0;
   int NumberOfThreads = 0;
 
 private:
-  /// Prints the settings (with `all` false only those that change the map,
-  /// the key of the kept map).
-  void PrintSettings(ostream& os, vtkIndent indent, bool all);
-
   vtkSurfaceMapFilter(const vtkSurfaceMapFilter&) = delete;
   void operator=(const vtkSurfaceMapFilter&) = delete;
 

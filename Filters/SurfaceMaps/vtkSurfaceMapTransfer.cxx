@@ -1,10 +1,11 @@
 #include "vtkSurfaceMapTransfer.h"
 
 #include "vtkSurfaceMapsConversion.h"
+#include "vtkSurfaceMapsErrorGuard.h"
 
 #include "base/InputError.h"
-#include "map/MapTransfer.h"
 #include "geometry/SphericalTriangulation.h"
+#include "map/MapTransfer.h"
 
 #include "vtkAbstractArray.h"
 #include "vtkCellData.h"
@@ -22,9 +23,11 @@
 #include "vtkSmartPointer.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 vtkStandardNewMacro(vtkSurfaceMapTransfer);
@@ -266,6 +269,80 @@ vtkSmartPointer<vtkAbstractArray> sampled(vtkAbstractArray* array,
   return result;
 }
 
+// The four meshes with their certified embeddings f_to, f_from, g_to, g_from;
+// ports 2 and 3 checked to hold the same triangulation.
+struct Ports
+{
+  PortMesh Target, Source, CommonOnTarget, CommonOnSource;
+};
+
+Ports readPorts(vtkPolyData* const inputs[4])
+{
+  PortMesh ports[4];
+  for (int port = 0; port < 4; ++port)
+  {
+    ports[port] = readPort(inputs[port], port);
+  }
+  checkSameTriangulation(ports[2], ports[3]);
+  return { std::move(ports[0]), std::move(ports[1]), std::move(ports[2]), std::move(ports[3]) };
+}
+
+// Every target vertex through the map onto the source.
+std::vector<surfacemaps::SurfacePoint> mapTargetVertices(const Ports& ports,
+  vtkPolyData* commonOnSource)
+{
+  surfacemaps::MapTransferOptions options;
+  options.startTriangles = startTriangles(commonOnSource, ports.Source.triangles.size());
+  // The same input on both sides: the identity, exact at the vertices.
+  options.identity = ports.Target.sphere == ports.Source.sphere &&
+    ports.Target.triangles == ports.Source.triangles &&
+    ports.CommonOnTarget.sphere == ports.CommonOnSource.sphere;
+  return surfacemaps::transferPoints(ports.Target.sphere,
+    ports.CommonOnTarget.triangles,
+    ports.CommonOnTarget.sphere,
+    ports.CommonOnSource.sphere,
+    ports.Source.sphere,
+    ports.Source.triangles,
+    options);
+}
+
+// The target with the source's arrays (and point texture coordinates, unless
+// the source has per-corner ones) sampled at the mapped points.
+void sampleOntoTarget(vtkPolyData* output,
+  vtkPolyData* target,
+  vtkPolyData* source,
+  const PortMesh& sourcePort,
+  const std::vector<vtkAbstractArray*>& arrays,
+  const std::vector<surfacemaps::SurfacePoint>& points)
+{
+  output->CopyStructure(target);
+  output->GetCellData()->PassData(target->GetCellData());
+  output->GetFieldData()->PassData(target->GetFieldData());
+  vtkPointData* from = source->GetPointData();
+  vtkPointData* to = output->GetPointData();
+  std::vector<vtkAbstractArray*> transferred = arrays;
+  vtkDataArray* pointTCoords = from->GetTCoords();
+  const bool cornerTCoords = !sourcePort.mesh.cornerTexCoords.empty();
+  if (pointTCoords && !cornerTCoords &&
+    std::find(transferred.begin(), transferred.end(), pointTCoords) == transferred.end())
+  {
+    transferred.push_back(pointTCoords);
+  }
+  for (vtkAbstractArray* array : transferred)
+  {
+    to->AddArray(sampled(array, sourcePort.triangles, points));
+    int index = -1;
+    from->GetAbstractArray(array->GetName(), index);
+    const int attribute = index >= 0 ? from->IsArrayAnAttribute(index) : -1;
+    if (attribute >= 0)
+    {
+      to->SetActiveAttribute(array->GetName(), attribute);
+    }
+  }
+  vtkSurfaceMapsConversion::AddSourcePoints(to, points);
+  vtkSurfaceMapsConversion::SetCornerTCoords(to, sourcePort.mesh.cornerTexCoords, points);
+}
+
 } // namespace
 
 vtkSurfaceMapTransfer::vtkSurfaceMapTransfer()
@@ -329,89 +406,40 @@ int vtkSurfaceMapTransfer::RequestData(vtkInformation*,
   output->Initialize();
   this->SetErrorCode(vtkErrorCode::NoError);
 
-  try
-  {
-    // 1. The four meshes and their certified embeddings f_to, f_from, g_to, g_from.
-    this->SetProgressText("Checking the map's embeddings");
-    this->UpdateProgress(0.0);
-    PortMesh ports[4];
-    for (int port = 0; port < 4; ++port)
+  // Point location fails only on embeddings that are not bijective, which
+  // readPorts certified: anything but an InputError is an internal error.
+  const vtkSurfaceMapsErrorGuard::Report internal{ "internal error: ", vtkErrorCode::UnknownError };
+  vtkSurfaceMapsErrorGuard::Policy policy;
+  policy.InputError = { "", InvalidInputError };
+  policy.InvalidArgument = internal;
+  policy.RuntimeError = internal;
+  policy.OtherError = internal;
+  return vtkSurfaceMapsErrorGuard::Run(
+    this,
+    policy,
+    [&]
     {
-      ports[port] = readPort(inputs[port], port);
-    }
-    checkSameTriangulation(ports[2], ports[3]);
-    const std::vector<vtkAbstractArray*> arrays =
-      selectArrays(source->GetPointData(), this->Internals->ArrayNames, ports[1].name);
-    if (this->GetAbortExecute())
-    {
-      return 1;
-    }
-
-    // 2. Every target vertex through the map onto the source.
-    this->SetProgressText("Mapping the target's vertices onto the source");
-    this->UpdateProgress(0.4);
-    surfacemaps::MapTransferOptions options;
-    options.startTriangles = startTriangles(inputs[3], ports[1].triangles.size());
-    // The same input on both sides: the identity, exact at the vertices.
-    options.identity = ports[0].sphere == ports[1].sphere &&
-      ports[0].triangles == ports[1].triangles && ports[2].sphere == ports[3].sphere;
-    const std::vector<surfacemaps::SurfacePoint> points =
-      surfacemaps::transferPoints(ports[0].sphere,
-        ports[2].triangles,
-        ports[2].sphere,
-        ports[3].sphere,
-        ports[1].sphere,
-        ports[1].triangles,
-        options);
-
-    // 3. The target with the source's arrays sampled there.
-    this->SetProgressText("Sampling the source's point data");
-    this->UpdateProgress(0.8);
-    output->CopyStructure(target);
-    output->GetCellData()->PassData(target->GetCellData());
-    output->GetFieldData()->PassData(target->GetFieldData());
-    vtkPointData* from = source->GetPointData();
-    vtkPointData* to = output->GetPointData();
-    std::vector<vtkAbstractArray*> transferred = arrays;
-    vtkDataArray* pointTCoords = from->GetTCoords();
-    const bool cornerTCoords = !ports[1].mesh.cornerTexCoords.empty();
-    if (pointTCoords && !cornerTCoords &&
-      std::find(transferred.begin(), transferred.end(), pointTCoords) == transferred.end())
-    {
-      transferred.push_back(pointTCoords);
-    }
-    for (vtkAbstractArray* array : transferred)
-    {
-      to->AddArray(sampled(array, ports[1].triangles, points));
-      int index = -1;
-      from->GetAbstractArray(array->GetName(), index);
-      const int attribute = index >= 0 ? from->IsArrayAnAttribute(index) : -1;
-      if (attribute >= 0)
+      this->SetProgressText("Checking the map's embeddings");
+      this->UpdateProgress(0.0);
+      const Ports ports = readPorts(inputs);
+      const std::vector<vtkAbstractArray*> arrays =
+        selectArrays(source->GetPointData(), this->Internals->ArrayNames, ports.Source.name);
+      if (this->GetAbortExecute())
       {
-        to->SetActiveAttribute(array->GetName(), attribute);
+        return 1;
       }
-    }
-    vtkSurfaceMapsConversion::AddSourcePoints(to, points);
-    vtkSurfaceMapsConversion::SetCornerTCoords(to, ports[1].mesh.cornerTexCoords, points);
-    this->UpdateProgress(1.0);
-  }
-  catch (const surfacemaps::InputError& e)
-  {
-    output->Initialize();
-    this->SetErrorCode(InvalidInputError);
-    vtkErrorMacro(<< e.what());
-    return 0;
-  }
-  catch (const std::exception& e)
-  {
-    // Point location fails only on embeddings that are not bijective, which
-    // were certified above: anything here is an internal error.
-    output->Initialize();
-    this->SetErrorCode(vtkErrorCode::UnknownError);
-    vtkErrorMacro(<< "internal error: " << e.what());
-    return 0;
-  }
-  return 1;
+
+      this->SetProgressText("Mapping the target's vertices onto the source");
+      this->UpdateProgress(0.4);
+      const std::vector<surfacemaps::SurfacePoint> points = mapTargetVertices(ports, inputs[3]);
+
+      this->SetProgressText("Sampling the source's point data");
+      this->UpdateProgress(0.8);
+      sampleOntoTarget(output, target, source, ports.Source, arrays, points);
+      this->UpdateProgress(1.0);
+      return 1;
+    },
+    [output] { output->Initialize(); });
 }
 
 void vtkSurfaceMapTransfer::PrintSelf(ostream& os, vtkIndent indent)

@@ -11,6 +11,7 @@
 #include "vtkIdTypeArray.h"
 #include "vtkPointData.h"
 #include "vtkPoints.h"
+#include "vtkLogger.h"
 #include "vtkPolyData.h"
 #include "vtkStringArray.h"
 
@@ -222,4 +223,21 @@ void vtkSurfaceMapsConversion::SetCornerTCoords(vtkPointData* pointData,
     array->SetTypedTuple(static_cast<vtkIdType>(v), t.data());
   }
   pointData->SetTCoords(array);
+}
+
+surfacemaps::Logger vtkSurfaceMapsConversion::EngineLog()
+{
+  surfacemaps::Logger log;
+  log.sink = [](surfacemaps::Logger::Level level, const std::string& message)
+  {
+    if (level == surfacemaps::Logger::Warning)
+    {
+      vtkLog(WARNING, << message);
+    }
+    else
+    {
+      vtkLog(TRACE, << message);
+    }
+  };
+  return log;
 }

@@ -10,9 +10,10 @@
 #ifndef vtkSurfaceMapsConversion_h
 #define vtkSurfaceMapsConversion_h
 
+#include "base/Log.h"
 #include "mesh/PolygonMesh.h"
-#include "map/SurfaceMap.h"
 #include "mesh/SurfaceMesh.h"
+#include "mesh/SurfacePoint.h"
 
 #include "vtkSmartPointer.h"
 
@@ -53,6 +54,9 @@ public:
   static void SetCornerTCoords(vtkPointData* pointData,
     const std::vector<Eigen::Vector2d>& corners,
     const std::vector<surfacemaps::SurfacePoint>& points);
+
+  /// Engine messages into vtkLogger: warnings as WARNING, the rest as TRACE.
+  static surfacemaps::Logger EngineLog();
 
   /// Name for messages: the "FileName" field-data string if present, else "input <index>".
   static std::string InputName(vtkPolyData* input, int index);

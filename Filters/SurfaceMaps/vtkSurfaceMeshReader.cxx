@@ -1,6 +1,7 @@
 #include "vtkSurfaceMeshReader.h"
 
 #include "vtkSurfaceMapsConversion.h"
+#include "vtkSurfaceMapsErrorGuard.h"
 
 #include "base/InputError.h"
 #include "io/LandmarkReader.h"
@@ -32,6 +33,7 @@
 #include <cstring>
 #include <fstream>
 #include <string>
+#include <vector>
 
 vtkStandardNewMacro(vtkSurfaceMeshReader);
 
@@ -222,6 +224,32 @@ vtkSmartPointer<vtkPolyData> readMesh(const std::string& path)
     path + ": unknown mesh format '" + ext + "' (supported: .obj .off .ply .stl .vtp .vtk)");
 }
 
+// The "Landmarks" point array (id per vertex, -1 elsewhere) from a landmark file.
+void addLandmarks(vtkPolyData* mesh, const std::string& landmarkPath, const std::string& meshPath)
+{
+  const std::vector<int> indices = surfacemaps::readLandmarks(landmarkPath);
+  const std::vector<int> ids = surfacemaps::landmarkIdsFromIndices(indices,
+    static_cast<std::size_t>(mesh->GetNumberOfPoints()),
+    landmarkPath + " (for " + meshPath + ")");
+  auto landmarks = vtkSmartPointer<vtkIntArray>::New();
+  landmarks->SetName("Landmarks");
+  landmarks->SetNumberOfValues(static_cast<vtkIdType>(ids.size()));
+  for (std::size_t i = 0; i < ids.size(); ++i)
+  {
+    landmarks->SetValue(static_cast<vtkIdType>(i), ids[i]);
+  }
+  mesh->GetPointData()->AddArray(landmarks);
+}
+
+// The "FileName" field-data string that names the mesh in messages.
+void addFileName(vtkPolyData* mesh, const std::string& path)
+{
+  auto name = vtkSmartPointer<vtkStringArray>::New();
+  name->SetName("FileName");
+  name->InsertNextValue(path);
+  mesh->GetFieldData()->AddArray(name);
+}
+
 } // namespace
 
 vtkSurfaceMeshReader::vtkSurfaceMeshReader()
@@ -258,46 +286,28 @@ int vtkSurfaceMeshReader::RequestData(vtkInformation*,
 {
   vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
   this->Internals->LastError.clear();
-  try
-  {
-    if (!this->FileName || !*this->FileName)
+  vtkSurfaceMapsErrorGuard::Policy policy = vtkSurfaceMapsErrorGuard::MessageOnly();
+  policy.KeepMessage = [this](const std::string& message) { this->Internals->LastError = message; };
+  return vtkSurfaceMapsErrorGuard::Run(
+    this,
+    policy,
+    [&]
     {
-      throw surfacemaps::InputError("no file name given");
-    }
-    const std::string path = this->FileName;
-    vtkSmartPointer<vtkPolyData> mesh = readMesh(path);
-
-    if (this->LandmarkFileName && *this->LandmarkFileName)
-    {
-      const std::vector<int> indices = surfacemaps::readLandmarks(this->LandmarkFileName);
-      const std::vector<int> ids = surfacemaps::landmarkIdsFromIndices(indices,
-        static_cast<std::size_t>(mesh->GetNumberOfPoints()),
-        std::string(this->LandmarkFileName) + " (for " + path + ")");
-      auto landmarks = vtkSmartPointer<vtkIntArray>::New();
-      landmarks->SetName("Landmarks");
-      landmarks->SetNumberOfValues(static_cast<vtkIdType>(ids.size()));
-      for (std::size_t i = 0; i < ids.size(); ++i)
+      if (!this->FileName || !*this->FileName)
       {
-        landmarks->SetValue(static_cast<vtkIdType>(i), ids[i]);
+        throw surfacemaps::InputError("no file name given");
       }
-      mesh->GetPointData()->AddArray(landmarks);
-    }
-
-    auto name = vtkSmartPointer<vtkStringArray>::New();
-    name->SetName("FileName");
-    name->InsertNextValue(path);
-    mesh->GetFieldData()->AddArray(name);
-
-    output->ShallowCopy(mesh);
-  }
-  catch (const std::exception& e)
-  {
-    this->Internals->LastError = e.what();
-    output->Initialize();
-    vtkErrorMacro(<< e.what());
-    return 0;
-  }
-  return 1;
+      const std::string path = this->FileName;
+      vtkSmartPointer<vtkPolyData> mesh = readMesh(path);
+      if (this->LandmarkFileName && *this->LandmarkFileName)
+      {
+        addLandmarks(mesh, this->LandmarkFileName, path);
+      }
+      addFileName(mesh, path);
+      output->ShallowCopy(mesh);
+      return 1;
+    },
+    [output] { output->Initialize(); });
 }
 
 void vtkSurfaceMeshReader::PrintSelf(ostream& os, vtkIndent indent)

@@ -1,6 +1,7 @@
 #include "vtkSurfaceMeshValidator.h"
 
 #include "vtkSurfaceMapsConversion.h"
+#include "vtkSurfaceMapsErrorGuard.h"
 
 #include "mesh/MeshValidation.h"
 
@@ -48,6 +49,149 @@ ArrayT* addColumn(vtkTable* table, const char* name, vtkIdType rows)
   return array;
 }
 
+// The table's columns, one row per input.
+struct Columns
+{
+  Columns(vtkTable* output, vtkIdType n)
+    : Name(addColumn<vtkStringArray>(output, "Input", n))
+    , Valid(addColumn<vtkIntArray>(output, "Valid", n))
+    , Points(addColumn<vtkLongLongArray>(output, "Points", n))
+    , Triangles(addColumn<vtkLongLongArray>(output, "Triangles", n))
+    , Edges(addColumn<vtkLongLongArray>(output, "Edges", n))
+    , Genus(addColumn<vtkIntArray>(output, "Genus", n))
+    , Components(addColumn<vtkLongLongArray>(output, "Components", n))
+    , Boundary(addColumn<vtkLongLongArray>(output, "BoundaryEdges", n))
+    , NonManifoldEdges(addColumn<vtkLongLongArray>(output, "NonManifoldEdges", n))
+    , NonManifoldVertices(addColumn<vtkLongLongArray>(output, "NonManifoldVertices", n))
+    , Area(addColumn<vtkDoubleArray>(output, "Area", n))
+    , Diagonal(addColumn<vtkDoubleArray>(output, "BoundingBoxDiagonal", n))
+    , MinAngle(addColumn<vtkDoubleArray>(output, "MinAngle", n))
+    , MeanMinAngle(addColumn<vtkDoubleArray>(output, "MeanMinAngle", n))
+    , Orientation(addColumn<vtkIntArray>(output, "Orientation", n))
+    , Landmarks(addColumn<vtkIntArray>(output, "Landmarks", n))
+    , Defects(addColumn<vtkStringArray>(output, "Defects", n))
+  {
+  }
+
+  vtkStringArray* Name;
+  vtkIntArray* Valid;
+  vtkLongLongArray* Points;
+  vtkLongLongArray* Triangles;
+  vtkLongLongArray* Edges;
+  vtkIntArray* Genus;
+  vtkLongLongArray* Components;
+  vtkLongLongArray* Boundary;
+  vtkLongLongArray* NonManifoldEdges;
+  vtkLongLongArray* NonManifoldVertices;
+  vtkDoubleArray* Area;
+  vtkDoubleArray* Diagonal;
+  vtkDoubleArray* MinAngle;
+  vtkDoubleArray* MeanMinAngle;
+  vtkIntArray* Orientation;
+  vtkIntArray* Landmarks;
+  vtkStringArray* Defects;
+};
+
+// What validation found for one input.
+struct InputReport
+{
+  std::string Name;
+  std::vector<std::string> Defects;
+  std::vector<int> LandmarkIds; // empty when absent or of the wrong length
+};
+
+// Validates input i and fills its row (all but Valid and Defects).
+InputReport validateInput(vtkPolyData* input,
+  int i,
+  const surfacemaps::MeshValidationOptions& options,
+  Columns& columns)
+{
+  InputReport report;
+  report.Name = vtkSurfaceMapsConversion::InputName(input, i);
+  const surfacemaps::MeshValidationResult result =
+    surfacemaps::validateMesh(vtkSurfaceMapsConversion::ToPolygonMesh(input), options);
+  const surfacemaps::MeshStatistics& s = result.statistics;
+  report.Defects = result.defects;
+
+  report.LandmarkIds = vtkSurfaceMapsConversion::LandmarkIds(input);
+  if (!report.LandmarkIds.empty() &&
+    report.LandmarkIds.size() != static_cast<std::size_t>(input->GetNumberOfPoints()))
+  {
+    report.Defects.push_back("has a Landmarks array of the wrong length");
+    report.LandmarkIds.clear();
+  }
+  const int count = static_cast<int>(std::count_if(
+    report.LandmarkIds.begin(), report.LandmarkIds.end(), [](int id) { return id >= 0; }));
+
+  columns.Name->SetValue(i, report.Name);
+  columns.Points->SetValue(i, s.vertices);
+  columns.Triangles->SetValue(i, s.faces);
+  columns.Edges->SetValue(i, s.edges);
+  columns.Genus->SetValue(i, s.genus);
+  columns.Components->SetValue(i, s.components);
+  columns.Boundary->SetValue(i, s.boundaryEdges);
+  columns.NonManifoldEdges->SetValue(i, s.nonManifoldEdges);
+  columns.NonManifoldVertices->SetValue(i, s.nonManifoldVertices);
+  columns.Area->SetValue(i, s.area);
+  columns.Diagonal->SetValue(i, s.boundingBoxDiagonal);
+  columns.MinAngle->SetValue(i, s.minAngle);
+  columns.MeanMinAngle->SetValue(i, s.meanMinAngle);
+  columns.Orientation->SetValue(i, s.orientation);
+  columns.Landmarks->SetValue(i, count);
+  return report;
+}
+
+// Landmark ids: unique per input always; the same on all inputs on request
+// (when any input has landmarks).
+void addLandmarkDefects(std::vector<InputReport>& reports, bool checkCorrespondence)
+{
+  const std::size_t n = reports.size();
+  std::vector<std::vector<int>> landmarkIds(n);
+  std::vector<std::string> names(n);
+  bool anyLandmarks = false;
+  for (std::size_t i = 0; i < n; ++i)
+  {
+    landmarkIds[i] = reports[i].LandmarkIds;
+    names[i] = reports[i].Name;
+    anyLandmarks = anyLandmarks ||
+      std::any_of(landmarkIds[i].begin(), landmarkIds[i].end(), [](int id) { return id >= 0; });
+  }
+  std::vector<std::vector<std::string>> correspondence(n);
+  if (checkCorrespondence && anyLandmarks && n > 1)
+  {
+    correspondence = surfacemaps::checkLandmarkCorrespondence(landmarkIds, names);
+  }
+  for (std::size_t i = 0; i < n; ++i)
+  {
+    std::vector<std::string>& defects = reports[i].Defects;
+    for (const std::string& d : surfacemaps::checkLandmarkIds(landmarkIds[i]))
+    {
+      defects.push_back(d);
+    }
+    defects.insert(defects.end(), correspondence[i].begin(), correspondence[i].end());
+  }
+}
+
+// The Valid and Defects columns (one line per defect); true when every input
+// is valid and there is at least one.
+bool writeDefects(const std::vector<InputReport>& reports, Columns& columns)
+{
+  bool allValid = !reports.empty();
+  for (std::size_t i = 0; i < reports.size(); ++i)
+  {
+    std::string text;
+    for (const std::string& d : reports[i].Defects)
+    {
+      text += (text.empty() ? "" : "\n") + d;
+    }
+    const vtkIdType row = static_cast<vtkIdType>(i);
+    columns.Defects->SetValue(row, text);
+    columns.Valid->SetValue(row, reports[i].Defects.empty() ? 1 : 0);
+    allValid = allValid && reports[i].Defects.empty();
+  }
+  return allValid;
+}
+
 } // namespace
 
 int vtkSurfaceMeshValidator::RequestData(vtkInformation*,
@@ -56,97 +200,30 @@ int vtkSurfaceMeshValidator::RequestData(vtkInformation*,
 {
   vtkTable* output = vtkTable::GetData(outputVector, 0);
   const int n = inputVector[0]->GetNumberOfInformationObjects();
-
-  auto* name = addColumn<vtkStringArray>(output, "Input", n);
-  auto* valid = addColumn<vtkIntArray>(output, "Valid", n);
-  auto* points = addColumn<vtkLongLongArray>(output, "Points", n);
-  auto* triangles = addColumn<vtkLongLongArray>(output, "Triangles", n);
-  auto* edges = addColumn<vtkLongLongArray>(output, "Edges", n);
-  auto* genus = addColumn<vtkIntArray>(output, "Genus", n);
-  auto* components = addColumn<vtkLongLongArray>(output, "Components", n);
-  auto* boundary = addColumn<vtkLongLongArray>(output, "BoundaryEdges", n);
-  auto* nmEdges = addColumn<vtkLongLongArray>(output, "NonManifoldEdges", n);
-  auto* nmVertices = addColumn<vtkLongLongArray>(output, "NonManifoldVertices", n);
-  auto* area = addColumn<vtkDoubleArray>(output, "Area", n);
-  auto* diagonal = addColumn<vtkDoubleArray>(output, "BoundingBoxDiagonal", n);
-  auto* minAngle = addColumn<vtkDoubleArray>(output, "MinAngle", n);
-  auto* meanMinAngle = addColumn<vtkDoubleArray>(output, "MeanMinAngle", n);
-  auto* orientation = addColumn<vtkIntArray>(output, "Orientation", n);
-  auto* landmarks = addColumn<vtkIntArray>(output, "Landmarks", n);
-  auto* defectsColumn = addColumn<vtkStringArray>(output, "Defects", n);
-
   surfacemaps::MeshValidationOptions options;
   options.zeroAreaFraction = this->ZeroAreaFraction;
 
-  std::vector<std::vector<std::string>> defects(n);
-  std::vector<std::vector<int>> landmarkIds(n);
-  std::vector<std::string> names(n);
-  bool anyLandmarks = false;
-  for (int i = 0; i < n; ++i)
-  {
-    vtkPolyData* input = vtkPolyData::GetData(inputVector[0], i);
-    names[i] = vtkSurfaceMapsConversion::InputName(input, i);
-    const surfacemaps::MeshValidationResult result =
-      surfacemaps::validateMesh(vtkSurfaceMapsConversion::ToPolygonMesh(input), options);
-    const surfacemaps::MeshStatistics& s = result.statistics;
-    defects[i] = result.defects;
-
-    landmarkIds[i] = vtkSurfaceMapsConversion::LandmarkIds(input);
-    if (!landmarkIds[i].empty() &&
-      landmarkIds[i].size() != static_cast<std::size_t>(input->GetNumberOfPoints()))
+  return vtkSurfaceMapsErrorGuard::Run(
+    this,
+    vtkSurfaceMapsErrorGuard::MessageOnly(),
+    [&]
     {
-      defects[i].push_back("has a Landmarks array of the wrong length");
-      landmarkIds[i].clear();
-    }
-    const int count = static_cast<int>(
-      std::count_if(landmarkIds[i].begin(), landmarkIds[i].end(), [](int id) { return id >= 0; }));
-    anyLandmarks = anyLandmarks || count > 0;
-
-    name->SetValue(i, names[i]);
-    points->SetValue(i, s.vertices);
-    triangles->SetValue(i, s.faces);
-    edges->SetValue(i, s.edges);
-    genus->SetValue(i, s.genus);
-    components->SetValue(i, s.components);
-    boundary->SetValue(i, s.boundaryEdges);
-    nmEdges->SetValue(i, s.nonManifoldEdges);
-    nmVertices->SetValue(i, s.nonManifoldVertices);
-    area->SetValue(i, s.area);
-    diagonal->SetValue(i, s.boundingBoxDiagonal);
-    minAngle->SetValue(i, s.minAngle);
-    meanMinAngle->SetValue(i, s.meanMinAngle);
-    orientation->SetValue(i, s.orientation);
-    landmarks->SetValue(i, count);
-  }
-
-  // Landmark ids: unique per input always; the same on all inputs on request.
-  std::vector<std::vector<std::string>> correspondence(n);
-  if (this->CheckLandmarkCorrespondence && anyLandmarks && n > 1)
-  {
-    correspondence = surfacemaps::checkLandmarkCorrespondence(landmarkIds, names);
-  }
-  for (int i = 0; i < n; ++i)
-  {
-    for (const std::string& d : surfacemaps::checkLandmarkIds(landmarkIds[i]))
+      Columns columns(output, n);
+      std::vector<InputReport> reports;
+      for (int i = 0; i < n; ++i)
+      {
+        reports.push_back(
+          validateInput(vtkPolyData::GetData(inputVector[0], i), i, options, columns));
+      }
+      addLandmarkDefects(reports, this->CheckLandmarkCorrespondence);
+      this->AllValid = writeDefects(reports, columns);
+      return 1;
+    },
+    [this, output]
     {
-      defects[i].push_back(d);
-    }
-    defects[i].insert(defects[i].end(), correspondence[i].begin(), correspondence[i].end());
-  }
-
-  this->AllValid = n > 0;
-  for (int i = 0; i < n; ++i)
-  {
-    std::string text;
-    for (const std::string& d : defects[i])
-    {
-      text += (text.empty() ? "" : "\n") + d;
-    }
-    defectsColumn->SetValue(i, text);
-    valid->SetValue(i, defects[i].empty() ? 1 : 0);
-    this->AllValid = this->AllValid && defects[i].empty();
-  }
-  return 1;
+      output->Initialize();
+      this->AllValid = false;
+    });
 }
 
 void vtkSurfaceMeshValidator::PrintSelf(ostream& os, vtkIndent indent)

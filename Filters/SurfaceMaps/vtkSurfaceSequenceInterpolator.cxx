@@ -1,9 +1,11 @@
 #include "vtkSurfaceSequenceInterpolator.h"
 
 #include "vtkSurfaceMapsCombination.h"
+#include "vtkSurfaceMapsErrorGuard.h"
+
+#include "base/Aborted.h"
 
 #include "vtkDataObject.h"
-#include "vtkDemandDrivenPipeline.h"
 #include "vtkDoubleArray.h"
 #include "vtkFieldData.h"
 #include "vtkInformation.h"
@@ -30,10 +32,6 @@ struct vtkSurfaceSequenceInterpolator::vtkInternals
 
 namespace
 {
-
-struct Aborted
-{
-};
 
 // The tangent (time derivative) at keyframe k as a combination of keyframes:
 // the derivative of the parabola through three neighbouring keyframes (the
@@ -174,6 +172,29 @@ std::vector<double> keyframeTimes(vtkSurfaceSequenceInterpolator* self, int n)
   }
   return t;
 }
+
+// Every keyframe present; throws std::invalid_argument otherwise.
+void checkKeyframes(const std::vector<vtkPolyData*>& inputs)
+{
+  if (inputs.empty())
+  {
+    throw std::invalid_argument("no keyframe");
+  }
+  for (std::size_t k = 0; k < inputs.size(); ++k)
+  {
+    if (!inputs[k])
+    {
+      throw std::invalid_argument("keyframe " + std::to_string(k) + " is not a vtkPolyData");
+    }
+  }
+}
+
+// The requested time clamped into the keyframe range (the first keyframe's
+// time when none is requested).
+double clampedTime(const std::vector<double>& t, double requested)
+{
+  return std::isnan(requested) ? t.front() : std::max(t.front(), std::min(requested, t.back()));
+}
 } // namespace
 
 int vtkSurfaceSequenceInterpolator::RequestInformation(vtkInformation*,
@@ -244,57 +265,36 @@ int vtkSurfaceSequenceInterpolator::RequestData(vtkInformation*,
     ? outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP())
     : this->TimeValue;
 
-  try
-  {
-    // 1. Keyframes and their times.
-    if (n == 0)
+  vtkSurfaceMapsErrorGuard::Policy policy = vtkSurfaceMapsErrorGuard::MessageOnly();
+  policy.AbortedOutputs = outputVector;
+  return vtkSurfaceMapsErrorGuard::Run(
+    this,
+    policy,
+    [&]
     {
-      throw std::invalid_argument("no keyframe");
-    }
-    for (int k = 0; k < n; ++k)
-    {
-      if (!inputs[k])
+      checkKeyframes(inputs);
+      const std::vector<double> t = keyframeTimes(this, n);
+      this->SetProgressText("Interpolating");
+      this->UpdateProgress(0.0);
+      vtkSurfaceMapsCombination::CheckSameConnectivity(inputs, "keyframe");
+      if (this->GetAbortExecute())
       {
-        throw std::invalid_argument("keyframe " + std::to_string(k) + " is not a vtkPolyData");
+        throw surfacemaps::Aborted();
       }
-    }
-    const std::vector<double> t = keyframeTimes(this, n);
-    this->SetProgressText("Interpolating");
-    this->UpdateProgress(0.0);
-    vtkSurfaceMapsCombination::CheckSameConnectivity(inputs, "keyframe");
-    if (this->GetAbortExecute())
-    {
-      throw Aborted();
-    }
 
-    // 2. The surface at the requested time, clamped into the keyframe range.
-    const double time =
-      std::isnan(requested) ? t.front() : std::max(t.front(), std::min(requested, t.back()));
-    const std::vector<double> c =
-      coefficients(t, time, this->InterpolationMode == INTERPOLATE_SMOOTH);
-    vtkSurfaceMapsCombination::Combine(inputs, c, {}, output);
-
-    auto interpolated = vtkSmartPointer<vtkDoubleArray>::New();
-    interpolated->SetName("InterpolationTime");
-    interpolated->InsertNextValue(time);
-    output->GetFieldData()->AddArray(interpolated);
-    output->GetInformation()->Set(vtkDataObject::DATA_TIME_STEP(), requested);
-    this->UpdateProgress(1.0);
-  }
-  catch (const Aborted&)
-  {
-    output->Initialize();
-    // VTK 9.1 would mark the empty output as up to date (no ABORTED key yet).
-    outInfo->Set(vtkDemandDrivenPipeline::DATA_NOT_GENERATED(), 1);
-    return 1;
-  }
-  catch (const std::exception& e)
-  {
-    output->Initialize();
-    vtkErrorMacro(<< e.what());
-    return 0;
-  }
-  return 1;
+      const double time = clampedTime(t, requested);
+      const std::vector<double> c =
+        coefficients(t, time, this->InterpolationMode == INTERPOLATE_SMOOTH);
+      vtkSurfaceMapsCombination::Combine(inputs, c, {}, output);
+      auto interpolated = vtkSmartPointer<vtkDoubleArray>::New();
+      interpolated->SetName("InterpolationTime");
+      interpolated->InsertNextValue(time);
+      output->GetFieldData()->AddArray(interpolated);
+      output->GetInformation()->Set(vtkDataObject::DATA_TIME_STEP(), requested);
+      this->UpdateProgress(1.0);
+      return 1;
+    },
+    [output] { output->Initialize(); });
 }
 
 void vtkSurfaceSequenceInterpolator::PrintSelf(ostream& os, vtkIndent indent)

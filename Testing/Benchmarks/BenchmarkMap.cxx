@@ -2,13 +2,14 @@
 // memory, T size and the DESIGN.md section 6 metrics of the approximating
 // map (T_0 -> T_j) and of the exact map (input 0 -> input 0 on input j).
 //
-//   build/bin/BenchmarkMap A B [C...] [--landmarks FA FB ...]
-//     [--landmark-iterations N] [--coarse N] [--fine N] [--target-error E] [-v]
+//   build/bin/BenchmarkMap A B [C...] [--landmarks FA FB ...] [-v] [SETTING ...]
+// with the settings' flags of `surfacemap map` (the engine's settings table).
 #include "BenchmarkSupport.h"
 #include "io/LandmarkReader.h"
 #include "geometry/MapMetrics.h"
 #include "mesh/MeshValidation.h"
 #include "embedding/SphereEmbedding.h"
+#include "map/MapSettings.h"
 #include "map/SurfaceMap.h"
 
 #include <chrono>
@@ -16,6 +17,7 @@
 #include <cstdlib>
 #include <cstring>
 #include <iostream>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -49,121 +51,47 @@ int main(int argc, char* argv[])
   std::vector<std::string> meshes, landmarkFiles;
   SurfaceMapOptions options;
   bool verbose = false;
-  for (int a = 1; a < argc; ++a)
+  const std::vector<std::string> args(argv + 1, argv + argc);
+  try
   {
-    const std::string arg = argv[a];
-    auto value = [&]() -> const char*
+    for (std::size_t a = 0; a < args.size(); ++a)
     {
-      if (a + 1 >= argc)
+      if (args[a] == "--landmarks")
       {
-        std::fprintf(stderr, "%s needs a value\n", arg.c_str());
-        std::exit(2);
+        while (a + 1 < args.size() && args[a + 1][0] != '-')
+        {
+          landmarkFiles.push_back(args[++a]);
+        }
       }
-      return argv[++a];
-    };
-    if (arg == "--landmarks")
-    {
-      while (a + 1 < argc && argv[a + 1][0] != '-')
+      else if (args[a] == "-v")
       {
-        landmarkFiles.push_back(argv[++a]);
+        verbose = true;
+      }
+      else if (!parseSettingFlag(args, a, options))
+      {
+        if (args[a][0] == '-')
+        {
+          throw std::invalid_argument("unknown option '" + args[a] + "'");
+        }
+        meshes.push_back(args[a]);
       }
     }
-    else if (arg == "--landmark-iterations")
-    {
-      options.landmarkIterations = std::atoi(value());
-    }
-    else if (arg == "--coarse")
-    {
-      options.coarse.maxIterations = std::atoi(value());
-    }
-    else if (arg == "--fine")
-    {
-      options.fine.maxIterations = std::atoi(value());
-    }
-    else if (arg == "--target-error")
-    {
-      options.fine.targetError = std::atof(value());
-    }
-    else if (arg == "--fine-barrier")
-    {
-      options.fine.barrierWeight = std::atof(value());
-    }
-    else if (arg == "--coarse-error")
-    {
-      options.coarse.targetError = std::atof(value());
-    }
-    else if (arg == "--coarse-barrier")
-    {
-      options.coarse.barrierWeight = std::atof(value());
-    }
-    else if (arg == "--map-weight")
-    {
-      options.mapWeight = std::atof(value());
-    }
-    else if (arg == "--mesh-weight")
-    {
-      options.meshWeight = std::atof(value());
-    }
-    else if (arg == "--approximation-weight")
-    {
-      options.approximationWeight = std::atof(value());
-    }
-    else if (arg == "--max-error")
-    {
-      options.maxError = std::atof(value());
-    }
-    else if (arg == "--kink-retries")
-    {
-      options.kinkRetries = std::atoi(value());
-    }
-    else if (arg == "--refinement-rounds")
-    {
-      options.refinementRounds = std::atoi(value());
-    }
-    else if (arg == "--refinement-iterations")
-    {
-      options.refinementIterations = std::atoi(value());
-    }
-    else if (arg == "--refinement-distortion")
-    {
-      options.refinementDistortion = std::atof(value());
-    }
-    else if (arg == "--squeeze-distortion")
-    {
-      options.squeezeDistortion = std::atof(value());
-    }
-    else if (arg == "--refinement-growth")
-    {
-      options.refinementGrowth = std::atof(value());
-    }
-    else if (arg == "--max-point-step")
-    {
-      options.maxPointStep = std::atof(value());
-    }
-    else if (arg == "--no-landmark-relaxation")
-    {
-      options.relaxLandmarkPhase = false;
-    }
-    else if (arg == "-v")
-    {
-      verbose = true;
-    }
-    else
-    {
-      meshes.push_back(arg);
-    }
+  }
+  catch (const std::invalid_argument& e)
+  {
+    std::fprintf(stderr, "BenchmarkMap: %s\n", e.what());
+    return 2;
   }
   if (meshes.empty() || (!landmarkFiles.empty() && landmarkFiles.size() != meshes.size()))
   {
     std::fprintf(stderr,
-      "usage: BenchmarkMap A B [C...] [--landmarks FA FB ...] "
-      "[--landmark-iterations N] [--coarse N] [--fine N] [--target-error E] "
-      "[--coarse-error E] [--fine-barrier W] [--coarse-barrier W] [--map-weight W] "
-      "[--mesh-weight W] [--approximation-weight W] [--max-error F] "
-      "[--kink-retries N] [--refinement-rounds N] [--refinement-iterations N] "
-      "[--refinement-distortion D] [--squeeze-distortion D] [--refinement-growth G] "
-      "[--max-point-step S] "
-      "[--no-landmark-relaxation] [-v]\n");
+      "usage: BenchmarkMap A B [C...] [--landmarks FA FB ...] [-v] [SETTING ...]\n"
+      "settings: the flags of `surfacemap map` (`surfacemap map --help`):");
+    for (const MapSetting& s : mapSettings())
+    {
+      std::fprintf(stderr, " --%s", s.flag);
+    }
+    std::fprintf(stderr, "\n");
     return 2;
   }
   if (verbose)
@@ -225,7 +153,7 @@ int main(int argc, char* argv[])
   for (const MapPhaseReport& p : r.phases)
   {
     std::printf("| %s | %d | %s | %d | %d / %d / %d | %.2f | %.2f / %.2f / %.2f / %.2f / %.2f |\n",
-      p.name.c_str(),
+      phaseName(p.kind),
       p.iterations,
       p.converged ? "yes" : "no",
       p.vertices,
@@ -247,11 +175,11 @@ int main(int argc, char* argv[])
   std::printf("certified: %s; landmark error %.3g\n", certified ? "yes" : "NO", r.landmarkError);
   std::printf(
     "final energy %.5g: barrier %.5g, mesh %.5g, approximation %.5g, map %.5g (unweighted)\n",
-    r.energy,
-    r.barrierEnergy,
-    r.meshEnergy,
-    r.approximationEnergy,
-    r.mapEnergy);
+    r.energy.total,
+    r.energy.barrier,
+    r.energy.meshQuality,
+    r.energy.approximation,
+    r.energy.distortion);
   for (std::size_t i = 0; i < r.baseDistance.size(); ++i)
   {
     std::printf("input %zu: largest base-point distance %.4g (bound %.4g)\n",

@@ -5,7 +5,7 @@
 # differently: the normal build and one with -march=native (FMA contractions).
 # Each build is deterministic; a change to the optimisation should improve
 # both rows of a pair, not one lucky path. Extra arguments go to BenchmarkMap
-# (e.g. --coarse-barrier 1e-2). Needs ../shared/data; run on an idle machine.
+# (e.g. --coarse-barrier-weight 1e-2). Needs ../shared/data; run on an idle machine.
 #
 #   bash Testing/Benchmarks/rounding_spread.sh [BENCHMARKMAP OPTIONS]
 #

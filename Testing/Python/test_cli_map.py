@@ -66,9 +66,15 @@ def test_max_error_bounds_every_input_vertex(tmp_path):
 
 
 def test_max_error_must_be_a_fraction(tmp_path):
-    for value in ("0", "1.5", "x"):
+    for value in ("-0.1", "1.5", "x"):
         r = run("map", data("ellipsoid.obj"), "--max-error", value, "--output-dir", tmp_path / "o")
         assert r.returncode == 2 and "--max-error" in r.stderr, (value, r.stderr)
+    # 0 is the filter's MaxError 0: no bound (one settings table for both).
+    r = run("map", data("ellipsoid.obj"), *SHORT, "--max-error", "0", "--output-dir", tmp_path / "off")
+    assert r.returncode == 0, r.stderr
+    report = json.loads((tmp_path / "off" / "report.json").read_text())
+    assert report["settings"]["max_error"] == 0 and "error_bound" not in report
+    assert "bound" not in [p["name"] for p in report["phases"]]
 
 
 def test_term_weights_are_settings(tmp_path):
@@ -167,3 +173,32 @@ def test_usage(tmp_path):
     assert r.returncode == 0 and "--release-landmarks" in r.stdout and "mapped_<i>.vtp" in r.stdout
     assert "embedding_<i>.vtp" in r.stdout
     assert os.listdir(tmp_path) == []
+
+
+def test_help_and_report_hold_every_setting(tmp_path):
+    import surfacemaps
+    f = surfacemaps.vtkSurfaceMapFilter
+    n = f.GetNumberOfSettings()
+    help_text = run("map", "--help").stdout
+    for i in range(n):
+        assert "--" + f.GetSettingFlag(i) in help_text, f.GetSettingFlag(i)
+    out = tmp_path / "out"
+    r = run("map", data("ellipsoid.obj"), *SHORT, "--pairs", "all", "--release-landmarks",
+            "--refinement-distortion", "2.5", "--output-dir", out)
+    assert r.returncode == 0, r.stderr
+    settings = json.loads((out / "report.json").read_text())["settings"]
+    keys = {f.GetSettingFlag(i).replace("-", "_"): i for i in range(n)}
+    assert set(settings) == set(keys) | {"sizing_mode"}
+    given = {"landmark_iterations": 10, "coarse_iterations": 3, "fine_iterations": 3,
+             "pairs": "all", "keep_landmarks": False, "refinement_distortion": 2.5}
+    for key, i in keys.items():
+        default = f.GetSettingDefault(i)
+        if f.GetSettingType(i) == f.SETTING_SWITCH:
+            default = bool(default)
+        elif f.GetSettingType(i) == f.SETTING_CHOICE:
+            default = f.GetSettingChoices(i).split("|")[int(default)]
+        expected = given.get(key, default)
+        if isinstance(expected, float):
+            assert abs(settings[key] - expected) <= 1e-9 * abs(expected), key
+        else:
+            assert settings[key] == expected, key

@@ -9,7 +9,6 @@
 #include "mesh/Primitives.h"
 
 #include <Eigen/Eigenvalues>
-#include <Eigen/SVD>
 
 #include <omp.h>
 
@@ -520,23 +519,6 @@ std::vector<SphereEmbeddingResult> embedAllOnSphere(const std::vector<const Poly
     }
   }
   return results;
-}
-
-Eigen::Matrix3d bestRotation(const std::vector<Eigen::Vector3d>& from,
-  const std::vector<Eigen::Vector3d>& to)
-{
-  Eigen::Matrix3d M = Eigen::Matrix3d::Zero();
-  for (std::size_t k = 0; k < from.size() && k < to.size(); ++k)
-  {
-    M += to[k] * from[k].transpose();
-  }
-  Eigen::JacobiSVD<Eigen::Matrix3d> svd(M, Eigen::ComputeFullU | Eigen::ComputeFullV);
-  Eigen::Matrix3d D = Eigen::Matrix3d::Identity();
-  if ((svd.matrixU() * svd.matrixV().transpose()).determinant() < 0)
-  {
-    D(2, 2) = -1.0;
-  }
-  return svd.matrixU() * D * svd.matrixV().transpose();
 }
 
 SphereEmbeddingResult embedOnSphere(const PolygonMesh& mesh, const SphereEmbeddingOptions& options)

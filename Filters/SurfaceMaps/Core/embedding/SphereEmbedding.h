@@ -102,11 +102,6 @@ struct EmbeddingFailure : std::runtime_error
 std::vector<SphereEmbeddingResult> embedAllOnSphere(const std::vector<const PolygonMesh*>& meshes,
   const SphereEmbeddingOptions& options = SphereEmbeddingOptions());
 
-/// The rotation R (det +1) minimising sum |R a_k - b_k|^2 (Kabsch), e.g. to
-/// turn one embedding's landmark points onto another's.
-Eigen::Matrix3d bestRotation(const std::vector<Eigen::Vector3d>& from,
-  const std::vector<Eigen::Vector3d>& to);
-
 /// Symmetric Dirichlet distortion (DESIGN.md section 6) between a mesh and
 /// its chord triangles on the sphere, both at unit total area.
 double embeddingDistortion(const std::vector<Eigen::Vector3d>& input,

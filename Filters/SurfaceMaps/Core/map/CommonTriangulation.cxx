@@ -18,13 +18,12 @@ namespace surfacemaps
 namespace
 {
 constexpr double Infinity = std::numeric_limits<double>::infinity();
-} // namespace
 
-double MapSurface::sizingAt(int t, const std::array<double, 3>& w) const
+int group(MapTerm term)
 {
-  const auto& tri = this->triangles[t];
-  return w[0] * this->sizing[tri[0]] + w[1] * this->sizing[tri[1]] + w[2] * this->sizing[tri[2]];
+  return static_cast<int>(term);
 }
+} // namespace
 
 CommonTriangulation::CommonTriangulation(std::vector<MapSurface>& surfaces,
   std::vector<std::array<int, 2>> pairs)
@@ -599,17 +598,22 @@ void CommonTriangulation::buildObjective(const Snapshot& s,
       {
         objective.addTerm(
           std::make_shared<ElementTerm<3, BarrierEnergy>>("barrier", std::move(barrier)),
-          w.barrier);
+          w.barrier,
+          group(MapTerm::Barrier));
       }
       else
       {
-        objective.addTerm(std::make_shared<BijectivityBarrierTerm>(std::move(barrier)), w.barrier);
+        objective.addTerm(std::make_shared<BijectivityBarrierTerm>(std::move(barrier)),
+          w.barrier,
+          group(MapTerm::Barrier));
       }
     }
     if (w.mesh > 0.0)
     {
       MeshQualityEnergy mesh{ &s.triangles, &s.lifts, &s.lengths, i * nv };
-      objective.addTerm(std::make_shared<ElementTerm<3, MeshQualityEnergy>>("mesh", mesh), w.mesh);
+      objective.addTerm(std::make_shared<ElementTerm<3, MeshQualityEnergy>>("mesh", mesh),
+        w.mesh,
+        group(MapTerm::MeshQuality));
     }
     if (w.approximation > 0.0 && this->TrackSamples)
     {
@@ -620,7 +624,9 @@ void CommonTriangulation::buildObjective(const Snapshot& s,
       approximation.lifts = &s.lifts;
       approximation.offset = i * nv;
       approximation.bound = w.bound(i);
-      objective.addTerm(std::make_shared<ApproximationTerm>(approximation), w.approximation);
+      objective.addTerm(std::make_shared<ApproximationTerm>(approximation),
+        w.approximation,
+        group(MapTerm::Approximation));
     }
     if (w.landmark > 0.0 && i < static_cast<int>(landmarkTargets.size()))
     {
@@ -636,7 +642,8 @@ void CommonTriangulation::buildObjective(const Snapshot& s,
       }
       objective.addTerm(
         std::make_shared<ElementTerm<1, LandmarkEnergy>>("landmarks", std::move(landmarks)),
-        w.landmark);
+        w.landmark,
+        group(MapTerm::Landmarks));
     }
   }
   if (w.map > 0.0)
@@ -644,7 +651,9 @@ void CommonTriangulation::buildObjective(const Snapshot& s,
     for (const auto& pair : this->Pairs)
     {
       MapDistortionEnergy map{ &s.triangles, &s.lifts, pair[0] * nv, pair[1] * nv };
-      objective.addTerm(std::make_shared<ElementTerm<6, MapDistortionEnergy>>("map", map), w.map);
+      objective.addTerm(std::make_shared<ElementTerm<6, MapDistortionEnergy>>("map", map),
+        w.map,
+        group(MapTerm::Distortion));
     }
   }
 }

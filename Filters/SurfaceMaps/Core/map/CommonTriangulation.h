@@ -4,6 +4,7 @@
 
 #include "energy/ApproximationEnergy.h"
 #include "energy/LiftedPoint.h"
+#include "map/MapSurface.h"
 #include "optimisation/Objective.h"
 #include "geometry/SphereLocator.h"
 #include "optimisation/SpherePoints.h"
@@ -19,26 +20,15 @@
 namespace surfacemaps
 {
 
-/// One input, centred and scaled to unit area, with its fixed embedding.
-struct MapSurface
+/// The terms of the map's energy (DESIGN.md section 1.3), as the objective
+/// groups them (Objective::group).
+enum class MapTerm
 {
-  std::vector<Eigen::Vector3d> points;
-  std::vector<std::array<int, 3>> triangles;
-  std::vector<Eigen::Vector3d> sphere;
-  /// The lift of every triangle (sphere -> surface), built once.
-  std::vector<Lift> lifts;
-  std::unique_ptr<SphereLocator> locator;
-  /// Target edge length per vertex, unit-area units (set per phase).
-  std::vector<double> sizing;
-  /// Landmark id per vertex (-1 none), may be empty.
-  std::vector<int> landmarks;
-  ApproximationSamples samples;
-  /// original = points / scale + centre.
-  Eigen::Vector3d centre = Eigen::Vector3d::Zero();
-  double scale = 1.0;
-
-  /// Sizing at a point of triangle t with barycentric weights w.
-  double sizingAt(int t, const std::array<double, 3>& w) const;
+  Barrier,
+  MeshQuality,
+  Approximation,
+  Landmarks,
+  Distortion,
 };
 
 /// Weights of the energy's terms, already divided by the number of inputs
@@ -214,7 +204,8 @@ public:
   void writeBack(const Snapshot& snapshot, const SpherePoints& points);
 
   /// Builds the objective of the current weights over a snapshot (the
-  /// snapshot must outlive the objective's use). Landmark targets per input.
+  /// snapshot must outlive the objective's use), each term in the group of
+  /// its MapTerm. Landmark targets per input.
   void buildObjective(const Snapshot& snapshot,
     const std::vector<std::map<int, Eigen::Vector3d>>& landmarkTargets,
     Objective& objective) const;

@@ -109,35 +109,6 @@ std::vector<SurfacePoint> transferPoints(const std::vector<Eigen::Vector3d>& poi
   return result;
 }
 
-std::vector<SurfacePoint> transferVertices(const SurfaceMapResult& map,
-  const std::vector<MapInput>& inputs,
-  int from,
-  int to)
-{
-  const int n = static_cast<int>(map.spherePositions.size());
-  if (from < 0 || from >= n || to < 0 || to >= n || inputs.size() != map.spherePositions.size() ||
-    map.inputSpherePositions.size() != map.spherePositions.size() ||
-    map.sourcePoints.size() != map.spherePositions.size())
-  {
-    throw std::invalid_argument("no map from input " + std::to_string(from) + " to input " +
-      std::to_string(to) + " among " + std::to_string(n) + " inputs");
-  }
-  MapTransferOptions options;
-  options.identity = from == to;
-  options.startTriangles.reserve(map.sourcePoints[to].size());
-  for (const SurfacePoint& p : map.sourcePoints[to])
-  {
-    options.startTriangles.push_back(p.triangle);
-  }
-  return transferPoints(map.inputSpherePositions[from],
-    map.triangles,
-    map.spherePositions[from],
-    map.spherePositions[to],
-    map.inputSpherePositions[to],
-    inputs[to].mesh.triangles(),
-    options);
-}
-
 Eigen::Vector3d evaluateSurfacePoint(const std::vector<Eigen::Vector3d>& points,
   const std::vector<std::array<int, 3>>& triangles,
   const SurfacePoint& p)

@@ -4,7 +4,7 @@
 #pragma once
 
 #include "geometry/SphereLocator.h"
-#include "map/SurfaceMap.h"
+#include "mesh/SurfacePoint.h"
 
 #include <Eigen/Core>
 
@@ -49,15 +49,6 @@ std::vector<SurfacePoint> transferPoints(const std::vector<Eigen::Vector3d>& poi
   const std::vector<Eigen::Vector3d>& fTo,
   const std::vector<std::array<int, 3>>& toTriangles,
   const MapTransferOptions& options = MapTransferOptions());
-
-/// The vertices of input `from` mapped onto input `to` by the exact map of
-/// `map` (computed from `inputs`): transferPoints with f_from's points, the
-/// lifts of T on `to` as start triangles, the identity when from == to.
-/// With from = 0 this is SurfaceMapResult::mappedFirstSource[to].
-std::vector<SurfacePoint> transferVertices(const SurfaceMapResult& map,
-  const std::vector<MapInput>& inputs,
-  int from,
-  int to);
 
 /// Where sphere point p lies on an input, given the input's embedding
 /// (`sphere`, `triangles`) and a locator built on it, walking from triangle

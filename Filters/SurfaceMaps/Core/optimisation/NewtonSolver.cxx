@@ -86,93 +86,13 @@ NewtonStepResult newtonStep(Objective& objective,
     return objective.value(points);
   };
   clock = std::chrono::steady_clock::now();
-  double initialStep = firstStep(d);
-  LineSearchResult ls = armijoBacktracking([&](double t) { return energyAlong(d, t); },
+  const LineSearchResult ls = armijoBacktracking([&](double t) { return energyAlong(d, t); },
     result.energyBefore,
     slope,
-    initialStep,
+    firstStep(d),
     options.lineSearch);
   result.lineSearchTrials = ls.trials;
 
-  // Kinks: hold the points of the elements that leave their model at the last
-  // rejected trial, solve again with those points (nearly) fixed by a heavy
-  // diagonal (same sparsity pattern: the factorisation's analysis is kept).
-  // The latest direction tried, its slope, first step and line search.
-  Eigen::VectorXd triedD = d;
-  double triedSlope = slope, triedStep = initialStep;
-  LineSearchResult tried = ls;
-  std::vector<char> held;
-  Eigen::SparseMatrix<double> heldH;
-  double heavy = 0.0;
-  int heldCount = 0;
-  if (options.kinkRetries > 0)
-  {
-    objective.recordElementPoints();
-  }
-  for (int retry = 0; retry < options.kinkRetries &&
-       (!tried.success || tried.step < options.kinkStep * triedStep);
-       ++retry)
-  {
-    const double probe = tried.success ? tried.step / options.lineSearch.shrink
-                                       : triedStep * std::pow(options.lineSearch.shrink, 40);
-    energyAlong(triedD, probe);
-    const std::vector<int> off = objective.pointsOffModel(
-      points, probe * triedD, options.kinkShare * probe * -triedSlope);
-    if (heldH.size() == 0)
-    {
-      // Far above every diagonal entry of H, added once to each held point.
-      heldH = H;
-      heavy = 1.0;
-      for (int k = 0; k < H.outerSize(); ++k)
-      {
-        heavy = std::max(heavy, std::abs(H.coeff(k, k)));
-      }
-      heavy *= 1e8;
-      held.assign(points.size(), 0);
-    }
-    int added = 0;
-    for (int i : off)
-    {
-      const int v = points.variable(i);
-      if (!held[i] && v >= 0)
-      {
-        held[i] = 1;
-        heldH.coeffRef(v, v) += heavy;
-        heldH.coeffRef(v + 1, v + 1) += heavy;
-        ++added;
-      }
-    }
-    if (added == 0)
-    {
-      break;
-    }
-    heldCount += added;
-    Eigen::VectorXd heldD;
-    const auto solveClock = std::chrono::steady_clock::now();
-    const LinearSolveResult heldSolve = solver.solve(heldH, -g, heldD, false, options.log);
-    result.solveSeconds += secondsSince(solveClock);
-    const double heldSlope = heldSolve.success ? heldD.dot(g) : 0.0;
-    if (!(heldSlope < 0.0))
-    {
-      break;
-    }
-    triedD = heldD;
-    triedSlope = heldSlope;
-    triedStep = firstStep(heldD);
-    tried = armijoBacktracking([&](double t) { return energyAlong(triedD, t); },
-      result.energyBefore,
-      triedSlope,
-      triedStep,
-      options.lineSearch);
-    result.lineSearchTrials += tried.trials;
-    result.kinkRetries = retry + 1;
-    if (tried.success && (!ls.success || tried.energy < ls.energy))
-    {
-      ls = tried;
-      d = triedD;
-      result.heldPoints = heldCount;
-    }
-  }
   points.setPositions(start);
   if (ls.success)
   {

@@ -21,17 +21,6 @@ struct NewtonOptions
   /// direction) to respect it. 0 = no cap.
   double maxPointStep = 0.0;
   LineSearchOptions lineSearch;
-  /// Kinks: when the line search fails or accepts less than `kinkStep` of
-  /// its first trial step, the points of the elements whose energy departs
-  /// from their linear model at the last rejected trial (by more than
-  /// `kinkShare` of the decrease the model predicts there) are held in place
-  /// and the step is solved and searched again, up to `kinkRetries` times.
-  /// An element that crosses a kink (e.g. an approximation sample entering a
-  /// T triangle that is tiny on the sphere but not on the surface) can block
-  /// every step of a direction that moves everything else downhill.
-  int kinkRetries = 0;
-  double kinkStep = 0.1;
-  double kinkShare = 0.01;
   /// Extra validity check of trial positions (e.g. the embedding degree);
   /// false rejects the trial like an infinite energy. Optional.
   std::function<bool(const SpherePoints&)> acceptTrial;
@@ -46,11 +35,8 @@ struct NewtonStepResult
   double decrement = 0.0;
   /// Accepted step length (0 if the line search failed).
   double step = 0.0;
-  /// Line-search trials, summed over the kink retries.
+  /// Line-search trials.
   int lineSearchTrials = 0;
-  /// Kink retries made, and the points held in the accepted direction.
-  int kinkRetries = 0;
-  int heldPoints = 0;
   /// The Newton direction was no descent direction; -gradient was used.
   bool gradientFallback = false;
   /// The linear solve needed a diagonal shift.

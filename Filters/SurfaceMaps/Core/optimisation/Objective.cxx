@@ -28,7 +28,7 @@ double sumOrInfinity(const std::vector<double>& values)
 }
 } // namespace
 
-void Objective::addTerm(std::shared_ptr<ObjectiveTerm> term, double weight)
+void Objective::addTerm(std::shared_ptr<ObjectiveTerm> term, double weight, int group)
 {
   if (!(weight >= 0.0))
   {
@@ -37,6 +37,7 @@ void Objective::addTerm(std::shared_ptr<ObjectiveTerm> term, double weight)
   Entry entry;
   entry.Term = std::move(term);
   entry.Weight = weight;
+  entry.Group = group;
   this->Terms.push_back(std::move(entry));
   this->PatternValid = false;
 }
@@ -139,78 +140,10 @@ void Objective::evaluateDerivatives(
   }
 }
 
-void Objective::recordElementPoints()
-{
-  for (Entry& entry : this->Terms)
-  {
-    const int ne = entry.Term->numberOfElements();
-    const int nv = entry.Term->pointsPerElement();
-    entry.Points.resize(static_cast<std::size_t>(ne) * nv);
-    for (int e = 0; e < ne; ++e)
-    {
-      entry.Term->elementPoints(e, entry.Points.data() + static_cast<std::size_t>(e) * nv);
-    }
-  }
-}
-
 double Objective::gradient(const SpherePoints& points, Eigen::VectorXd& gradient)
 {
   this->evaluateDerivatives(points, 0.0, false);
   return this->assembleGradient(points, gradient);
-}
-
-std::vector<int> Objective::pointsOffModel(
-  const SpherePoints& points, const Eigen::VectorXd& step, double threshold) const
-{
-  std::vector<char> off(points.size(), 0);
-  std::vector<double> values;
-  std::vector<int> now;
-  for (const Entry& entry : this->Terms)
-  {
-    const int ne = entry.Term->numberOfElements();
-    const int nv = entry.Term->pointsPerElement();
-    if (entry.Weight == 0.0 || entry.Values.size() != static_cast<std::size_t>(ne) ||
-      entry.Points.size() != static_cast<std::size_t>(ne) * nv)
-    {
-      continue;
-    }
-    values.resize(ne);
-    entry.Term->evaluateValues(points, values.data());
-    now.resize(nv);
-    for (int e = 0; e < ne; ++e)
-    {
-      const int* before = entry.Points.data() + static_cast<std::size_t>(e) * nv;
-      const double* g = entry.Gradients.data() + static_cast<std::size_t>(e) * 2 * nv;
-      double model = entry.Values[e];
-      for (int k = 0; k < nv; ++k)
-      {
-        const int var = points.variable(before[k]);
-        if (var >= 0)
-        {
-          model += g[2 * k] * step[var] + g[2 * k + 1] * step[var + 1];
-        }
-      }
-      // Also an element that became invalid (+inf) is off its model.
-      if (!(entry.Weight * (values[e] - model) <= threshold))
-      {
-        entry.Term->elementPoints(e, now.data());
-        for (int k = 0; k < nv; ++k)
-        {
-          off[before[k]] = 1;
-          off[now[k]] = 1;
-        }
-      }
-    }
-  }
-  std::vector<int> result;
-  for (int i = 0; i < points.size(); ++i)
-  {
-    if (off[i])
-    {
-      result.push_back(i);
-    }
-  }
-  return result;
 }
 
 void Objective::buildPattern(const SpherePoints& points)

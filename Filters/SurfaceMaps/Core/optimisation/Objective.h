@@ -210,8 +210,10 @@ protected:
 class Objective
 {
 public:
-  /// Adds a term with a weight (> 0). Invalidates the sparsity structure.
-  void addTerm(std::shared_ptr<ObjectiveTerm> term, double weight = 1.0);
+  /// Adds a term with a weight (>= 0) to a group (the caller's label, e.g.
+  /// which energy term it belongs to). Invalidates the sparsity structure.
+  void addTerm(std::shared_ptr<ObjectiveTerm> term, double weight = 1.0, int group = 0);
+  int group(std::size_t term) const { return this->Terms[term].Group; }
   void setWeight(std::size_t term, double weight) { this->Terms[term].Weight = weight; }
   std::size_t numberOfTerms() const { return this->Terms.size(); }
   ObjectiveTerm& term(std::size_t i) { return *this->Terms[i].Term; }
@@ -238,28 +240,14 @@ public:
     Eigen::SparseMatrix<double>& hessian,
     bool* patternChanged = nullptr);
 
-  /// Records every element's current points, the ones pointsOffModel
-  /// compares against (call after hessian() or gradient(), before moving).
-  void recordElementPoints();
-  /// After hessian() or gradient() and recordElementPoints(): the points of the elements whose
-  /// weighted value at `points` exceeds the linear model of that call by more
-  /// than `threshold`, where `step` holds the variables' tangent displacement
-  /// from there. Such elements are not smooth between the two positions (an
-  /// approximation sample that crossed into another T triangle: a kink of the
-  /// piecewise linear lift). The points of both element versions are listed
-  /// (an element may have other points at `points`), each point once.
-  std::vector<int> pointsOffModel(
-    const SpherePoints& points, const Eigen::VectorXd& step, double threshold) const;
-
 private:
   struct Entry
   {
     std::shared_ptr<ObjectiveTerm> Term;
     double Weight = 1.0;
+    int Group = 0;
     // Per-element evaluation buffers, reused between calls.
     std::vector<double> Values, Gradients, Hessians;
-    // Each element's points at the last recordElementPoints().
-    std::vector<int> Points;
     // For each element, n*n indices into the Hessian's value array (-1: lower
     // triangle or locked variable).
     std::vector<int> Scatter;

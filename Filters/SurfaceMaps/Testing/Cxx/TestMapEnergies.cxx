@@ -5,6 +5,7 @@
 #include "energy/MapDistortionEnergy.h"
 #include "MapTestInputs.h"
 #include "energy/MeshQualityEnergy.h"
+#include "map/MapSurface.h"
 #include "map/SurfaceMap.h"
 
 #include <gtest/gtest.h>
@@ -33,7 +34,8 @@ struct EnergyCase
     {
       setLandmarks(input, { { 0, 0, 1 }, { 1, 0, 0 } });
     }
-    this->surfaces = prepareMapSurfaces(inputs);
+    this->surfaces = prepareMapSurfaces(
+      inputs, landmarkVertices(inputs), SurfaceMapOptions().approximationSamples);
     for (MapSurface& s : this->surfaces)
     {
       s.sizing.assign(s.points.size(), 0.3);

@@ -25,9 +25,9 @@ struct ThreeInputMap
   ThreeInputMap()
   {
     SurfaceMapOptions options;
-    options.coarse.maxIterations = 3;
-    options.fine.maxIterations = 4;
-    options.fine.targetError = 5e-3;
+    options.coarseIterations = 3;
+    options.fineIterations = 4;
+    options.targetError = 5e-3;
     options.pairs = PairMode::All;
     this->map = computeSurfaceMap(this->inputs, options);
   }

@@ -3,6 +3,7 @@
 #include "MapTestInputs.h"
 #include "geometry/Predicates.h"
 #include "map/Remeshing.h"
+#include "map/MapSurface.h"
 #include "map/SurfaceMap.h"
 
 #include <gtest/gtest.h>
@@ -25,7 +26,8 @@ protected:
       icosphereInput(2, 0.4, { 1.5, 1.0, 0.7 }, 0.4) };
     setLandmarks(inputs[0], { { 0, 0, 1 } });
     setLandmarks(inputs[1], { { 0, 0, 1 } });
-    this->surfaces = prepareMapSurfaces(inputs);
+    this->surfaces = prepareMapSurfaces(
+      inputs, landmarkVertices(inputs), SurfaceMapOptions().approximationSamples);
     for (MapSurface& s : this->surfaces)
     {
       s.sizing.assign(s.points.size(), 0.25);

@@ -8,6 +8,7 @@
 #include "io/PlyReader.h"
 #include "mesh/Primitives.h"
 #include "embedding/SphereEmbedding.h"
+#include "geometry/Rotation.h"
 
 #include <gtest/gtest.h>
 

@@ -15,9 +15,9 @@ SurfaceMapOptions shortSchedule(int coarse, int fine)
 {
   SurfaceMapOptions options;
   options.landmarkIterations = 20;
-  options.coarse.maxIterations = coarse;
-  options.fine.maxIterations = fine;
-  options.fine.targetError = 5e-3;
+  options.coarseIterations = coarse;
+  options.fineIterations = fine;
+  options.targetError = 5e-3;
   return options;
 }
 
@@ -52,14 +52,14 @@ TEST(SurfaceMap, PairModes)
 TEST(SurfaceMap, LandmarkPhaseCoarsensAndReachesTheLandmarks)
 {
   SurfaceMapOptions options = shortSchedule(0, 0);
-  options.coarse.enabled = false;
-  options.fine.enabled = false;
+  options.coarseIterations = 0;
+  options.fineIterations = 0;
   options.relaxLandmarkPhase = false; // ends as soon as the landmarks are reached
   const std::vector<MapInput> inputs = landmarkPair();
   const SurfaceMapResult r = computeSurfaceMap(inputs, options);
   expectCertified(r);
   ASSERT_EQ(r.phases.size(), 1u);
-  EXPECT_EQ(r.phases[0].name, "landmarks");
+  EXPECT_EQ(r.phases[0].kind, PhaseKind::Landmarks);
   EXPECT_TRUE(r.phases[0].converged);
   EXPECT_LT(r.phases[0].landmarkError, options.landmarkTolerance);
   EXPECT_LT(r.lifted[0].size(), inputs[0].mesh.points.size() / 10);
@@ -68,8 +68,8 @@ TEST(SurfaceMap, LandmarkPhaseCoarsensAndReachesTheLandmarks)
 TEST(SurfaceMap, LandmarkPhaseRelaxesWithoutChangingTheVertexCount)
 {
   SurfaceMapOptions options = shortSchedule(0, 0);
-  options.coarse.enabled = false;
-  options.fine.enabled = false;
+  options.coarseIterations = 0;
+  options.fineIterations = 0;
   options.relaxLandmarkPhase = false;
   const std::vector<MapInput> inputs = landmarkPair();
   const SurfaceMapResult quick = computeSurfaceMap(inputs, options);
@@ -117,9 +117,9 @@ TEST(SurfaceMap, SmallerTargetErrorGivesAFinerTriangulation)
   const std::vector<MapInput> inputs{ icosphereInput(3, 0.0, { 1.0, 1.0, 1.0 }, 0.5),
     icosphereInput(3, 0.2, { 1.3, 1.0, 0.8 }, 0.2) };
   SurfaceMapOptions options = shortSchedule(3, 6);
-  options.fine.targetError = 1e-2;
+  options.targetError = 1e-2;
   const SurfaceMapResult coarse = computeSurfaceMap(inputs, options);
-  options.fine.targetError = 2e-3;
+  options.targetError = 2e-3;
   const SurfaceMapResult fine = computeSurfaceMap(inputs, options);
   expectCertified(coarse);
   expectCertified(fine);
@@ -203,13 +203,13 @@ TEST(SurfaceMap, RefinementRunsWhereTheExactMapIsDistorted)
   options.refinementIterations = 3;
   options.refinementDistortion = 1e9; // nothing that distorted: no refinement
   const SurfaceMapResult plain = computeSurfaceMap(inputs, options);
-  EXPECT_EQ(plain.phases.back().name, "fine");
+  EXPECT_EQ(plain.phases.back().kind, PhaseKind::Fine);
   // Every input triangle is distorted beyond 1 + 1e-9: the sizing shrinks
   // everywhere, so the refinement adds vertices, and the map stays certified.
   options.refinementDistortion = 1.0 + 1e-9;
   const SurfaceMapResult refined = computeSurfaceMap(inputs, options);
   expectCertified(refined);
-  ASSERT_EQ(refined.phases.back().name, "refine");
+  ASSERT_EQ(refined.phases.back().kind, PhaseKind::Refine);
   EXPECT_GE(refined.phases.back().iterations, 1);
   EXPECT_GT(refined.phases.back().vertices, plain.phases.back().vertices);
 }
@@ -226,7 +226,7 @@ TEST(SurfaceMap, LaterRefinementRoundsOnlyRepairSqueezes)
     int rounds = 0;
     for (const MapPhaseReport& phase : r.phases)
     {
-      rounds += phase.name == "refine";
+      rounds += phase.kind == PhaseKind::Refine;
     }
     return rounds;
   };
@@ -258,8 +258,8 @@ TEST(SurfaceMap, RefinementGrowthBoundsTheFirstRound)
   options.refinementGrowth = 1e9;
   const SurfaceMapResult halved = computeSurfaceMap(inputs, options);
   expectCertified(halved);
-  ASSERT_EQ(kept.phases.back().name, "refine");
-  ASSERT_EQ(halved.phases.back().name, "refine");
+  ASSERT_EQ(kept.phases.back().kind, PhaseKind::Refine);
+  ASSERT_EQ(halved.phases.back().kind, PhaseKind::Refine);
   EXPECT_GT(halved.phases.back().vertices, 1.5 * kept.phases.back().vertices);
 }
 
@@ -267,7 +267,7 @@ TEST(SurfaceMap, ErrorBoundHoldsAtEveryInputVertex)
 {
   const std::vector<MapInput> inputs = landmarkPair();
   SurfaceMapOptions options = shortSchedule(3, 4);
-  options.fine.targetError = 1e-2; // leaves vertices beyond the bound: refinement must run
+  options.targetError = 1e-2; // leaves vertices beyond the bound: refinement must run
   options.maxError = 2e-3;
   options.boundRefinementIterations = 4;
   options.boundIterations = 4;
@@ -276,10 +276,10 @@ TEST(SurfaceMap, ErrorBoundHoldsAtEveryInputVertex)
   int refinements = 0;
   for (const MapPhaseReport& phase : r.phases)
   {
-    refinements += phase.name == "refine";
+    refinements += phase.kind == PhaseKind::Refine;
   }
   EXPECT_GT(refinements, 0);
-  EXPECT_EQ(r.phases.back().name, "bound");
+  EXPECT_EQ(r.phases.back().kind, PhaseKind::Bound);
   for (std::size_t i = 0; i < inputs.size(); ++i)
   {
     const PolygonMesh& mesh = inputs[i].mesh;

@@ -5,9 +5,9 @@
 #include "vtkSurfaceMapsConversion.h"
 #include "vtkSurfaceMeshReader.h"
 
-#include "mesh/Primitives.h"
-#include "geometry/SphericalTriangulation.h"
 #include "base/ThreadCount.h"
+#include "geometry/SphericalTriangulation.h"
+#include "mesh/Primitives.h"
 
 #include "vtkAlgorithmOutput.h"
 #include "vtkCallbackCommand.h"
@@ -29,6 +29,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
+#include <set>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -438,7 +440,6 @@ TEST(SurfaceMapFilter, RefinementSettingsReachTheEngine)
   filter->SetRefinementRounds(1);
   filter->SetRefinementIterations(2);
   filter->SetRefinementDistortion(1.0 + 1e-9);
-  filter->SetKinkRetries(1);
   Events events;
   watch(filter, events);
   filter->AddInputData(ellipsoid(2, 1.0, 0.8, 0.6));
@@ -622,64 +623,98 @@ TEST(SurfaceMapFilter, AbortLeavesEmptyOutputs)
   EXPECT_TRUE(events.Texts.empty());
 }
 
-TEST(SurfaceMapFilter, SettingsDefaultsAndPrintSelf)
+TEST(SurfaceMapFilter, SettingsComeFromTheEngineTable)
 {
   vtkNew<vtkSurfaceMapFilter> filter;
-  EXPECT_EQ(filter->GetTargetError(), 1e-3);
-  EXPECT_EQ(filter->GetCoarseError(), 1e-2);
-  EXPECT_EQ(filter->GetLandmarkIterations(), 100);
-  EXPECT_EQ(filter->GetCoarseIterations(), 50);
-  EXPECT_EQ(filter->GetFineIterations(), 50);
-  EXPECT_EQ(filter->GetFineBarrierWeight(), 1e-6);
-  EXPECT_EQ(filter->GetCoarseBarrierWeight(), 1e-3);
-  EXPECT_EQ(filter->GetLandmarkWeight(), 1e6);
-  EXPECT_TRUE(filter->GetKeepLandmarks());
-  EXPECT_EQ(filter->GetPairMode(), vtkSurfaceMapFilter::PAIRS_STAR);
-  EXPECT_EQ(filter->GetOutputMode(), vtkSurfaceMapFilter::COMMON_TRIANGULATION);
-  EXPECT_EQ(filter->GetMaxError(), 0.0);
-  EXPECT_EQ(filter->GetBoundIterations(), 20);
-  EXPECT_EQ(filter->GetMeshWeight(), 0.5);
-  EXPECT_EQ(filter->GetMapWeight(), 1.0);
-  EXPECT_EQ(filter->GetApproximationWeight(), 0.25);
-  EXPECT_EQ(filter->GetRefinementRounds(), 3);
-  EXPECT_EQ(filter->GetRefinementIterations(), 10);
-  EXPECT_EQ(filter->GetRefinementDistortion(), 1.4);
-  EXPECT_EQ(filter->GetRefinementGrowth(), 0.25);
-  EXPECT_EQ(filter->GetSqueezeDistortion(), 10.0);
-  EXPECT_EQ(filter->GetKinkRetries(), 0);
+  const int n = vtkSurfaceMapFilter::GetNumberOfSettings();
+  ASSERT_GE(n, 30);
+  std::set<std::string> names, flags;
+  for (int i = 0; i < n; ++i)
+  {
+    const std::string name = vtkSurfaceMapFilter::GetSettingName(i);
+    EXPECT_TRUE(names.insert(name).second) << name;
+    EXPECT_TRUE(flags.insert(vtkSurfaceMapFilter::GetSettingFlag(i)).second) << name;
+    EXPECT_GT(std::strlen(vtkSurfaceMapFilter::GetSettingDocumentation(i)), 20u) << name;
+    // A new filter starts at the table's default, inside the table's range.
+    const double value = filter->GetSetting(i);
+    EXPECT_EQ(value, vtkSurfaceMapFilter::GetSettingDefault(i)) << name;
+    EXPECT_GE(value, vtkSurfaceMapFilter::GetSettingMinimum(i)) << name;
+    EXPECT_LE(value, vtkSurfaceMapFilter::GetSettingMaximum(i)) << name;
+    EXPECT_EQ(vtkSurfaceMapFilter::GetSettingOffFlag(i) != nullptr,
+      vtkSurfaceMapFilter::GetSettingType(i) == vtkSurfaceMapFilter::SETTING_SWITCH)
+      << name;
+    // Setting clamps into the range and marks the filter modified.
+    const vtkMTimeType before = filter->GetMTime();
+    filter->SetSetting(i, vtkSurfaceMapFilter::GetSettingMaximum(i) * 2 + 1);
+    EXPECT_EQ(filter->GetSetting(i), vtkSurfaceMapFilter::GetSettingMaximum(i)) << name;
+    EXPECT_EQ(filter->GetMTime() > before, value != filter->GetSetting(i)) << name;
+    filter->SetSetting(i, vtkSurfaceMapFilter::GetSettingMinimum(i) - 1);
+    EXPECT_EQ(filter->GetSetting(i), vtkSurfaceMapFilter::GetSettingMinimum(i)) << name;
+  }
+  EXPECT_EQ(vtkSurfaceMapFilter::GetSettingName(n), nullptr);
+  EXPECT_TRUE(std::isnan(filter->GetSetting(-1)));
+  for (const char* name : { "TargetError", "RefinementDistortion", "KeepLandmarks", "PairMode" })
+  {
+    EXPECT_EQ(names.count(name), 1u) << name;
+  }
+}
+
+TEST(SurfaceMapFilter, NamedSettersUseTheTable)
+{
+  vtkNew<vtkSurfaceMapFilter> filter;
+  const auto index = [](const char* name)
+  {
+    for (int i = 0; i < vtkSurfaceMapFilter::GetNumberOfSettings(); ++i)
+    {
+      if (std::string(vtkSurfaceMapFilter::GetSettingName(i)) == name)
+      {
+        return i;
+      }
+    }
+    return -1;
+  };
+  const int refinement = index("RefinementDistortion");
+  ASSERT_GE(refinement, 0);
+  EXPECT_EQ(filter->GetRefinementDistortion(), vtkSurfaceMapFilter::GetSettingDefault(refinement));
+  EXPECT_EQ(
+    filter->GetRefinementDistortionMinValue(), vtkSurfaceMapFilter::GetSettingMinimum(refinement));
   filter->SetRefinementDistortion(0.5);
-  EXPECT_EQ(filter->GetRefinementDistortion(), 1.0);
-  filter->SetRefinementGrowth(-1.0);
-  EXPECT_EQ(filter->GetRefinementGrowth(), 0.0);
-  filter->SetSqueezeDistortion(0.5);
-  EXPECT_EQ(filter->GetSqueezeDistortion(), 1.0);
-  filter->SetKinkRetries(99);
-  EXPECT_EQ(filter->GetKinkRetries(), 10);
-  EXPECT_EQ(filter->GetNumberOfThreads(), 0);
+  EXPECT_EQ(filter->GetRefinementDistortion(), filter->GetRefinementDistortionMinValue());
+  filter->SetRefinementDistortion(2.5);
+  EXPECT_EQ(filter->GetSetting(refinement), 2.5);
+  filter->SetFineIterations(-3);
+  EXPECT_EQ(filter->GetFineIterations(), 0);
+  filter->SetFineIterations(7);
+  EXPECT_EQ(filter->GetSetting(index("FineIterations")), 7.0);
   filter->SetPairModeToCycle();
   EXPECT_EQ(filter->GetPairMode(), vtkSurfaceMapFilter::PAIRS_CYCLE);
   filter->SetPairMode(17);
   EXPECT_EQ(filter->GetPairMode(), vtkSurfaceMapFilter::PAIRS_ALL);
-  filter->SetTargetError(0.0);
-  EXPECT_EQ(filter->GetTargetError(), 1e-6);
-  filter->SetFineIterations(-3);
-  EXPECT_EQ(filter->GetFineIterations(), 0);
+  filter->KeepLandmarksOff();
+  EXPECT_FALSE(filter->GetKeepLandmarks());
+  EXPECT_EQ(filter->GetSetting(index("KeepLandmarks")), 0.0);
+}
+
+TEST(SurfaceMapFilter, PrintSelfPrintsEverySetting)
+{
+  vtkNew<vtkSurfaceMapFilter> filter;
+  filter->SetPairModeToAll();
+  filter->KeepLandmarksOff();
+  filter->SetRefinementDistortion(2.5);
   std::ostringstream print;
   filter->Print(print);
-  for (const char* name : { "TargetError: 1e-06",
-         "PairMode: 3",
-         "KeepLandmarks: 1",
+  for (int i = 0; i < vtkSurfaceMapFilter::GetNumberOfSettings(); ++i)
+  {
+    const std::string name = vtkSurfaceMapFilter::GetSettingName(i);
+    EXPECT_NE(print.str().find(name + ": "), std::string::npos) << name;
+  }
+  for (const char* line : { "PairMode: all\n",
+         "KeepLandmarks: off\n",
+         "RefinementDistortion: 2.5\n",
          "OutputMode: 0",
          "NumberOfThreads: 0",
-         "SizingMode: 0",
-         "ApproximationSamples: 50000",
-         "RefinementRounds: 3",
-         "RefinementIterations: 10",
-         "RefinementDistortion: 1\n",
-         "RefinementGrowth: 0\n",
-         "SqueezeDistortion: 1\n",
-         "KinkRetries: 10" })
+         "SizingMode: 0" })
   {
-    EXPECT_NE(print.str().find(name), std::string::npos) << name;
+    EXPECT_NE(print.str().find(line), std::string::npos) << line;
   }
 }

@@ -308,10 +308,10 @@ TEST(SurfaceMapTransfer, MappedInputCarriesAnyInputWithoutRecomputing)
   EXPECT_EQ(events.Errors.size(), 1u);
   EXPECT_FALSE(computedTheMap(events));
   EXPECT_EQ(connectivity(filter->GetOutput(0)), connectivity(c));
-  // The former name still means input 0.
+  // Mapped first input: input 0 in MAPPED_INPUT mode.
   filter->SetOutputModeToMappedFirstInput();
   EXPECT_EQ(filter->GetMappedInput(), 0);
-  EXPECT_EQ(filter->GetOutputMode(), vtkSurfaceMapFilter::MAPPED_FIRST_INPUT);
+  EXPECT_EQ(filter->GetOutputMode(), vtkSurfaceMapFilter::MAPPED_INPUT);
 }
 
 TEST(SurfaceMapTransfer, InputEmbeddingsAreInTheFrameOfTheCommonTriangulation)

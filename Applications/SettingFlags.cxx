@@ -1,0 +1,205 @@
+#include "SettingFlags.h"
+
+#include "CommandSupport.h"
+#include "Commands.h"
+
+#include "vtkSurfaceMapFilter.h"
+
+#include <cmath>
+#include <sstream>
+
+namespace surfacemap
+{
+
+namespace
+{
+
+std::vector<std::string> choiceNames(int k)
+{
+  std::vector<std::string> names;
+  const char* choices = vtkSurfaceMapFilter::GetSettingChoices(k);
+  std::istringstream text(choices ? choices : "");
+  for (std::string name; std::getline(text, name, '|');)
+  {
+    names.push_back(name);
+  }
+  return names;
+}
+
+std::string number(double value)
+{
+  std::ostringstream text;
+  text << value;
+  return text.str();
+}
+
+std::string formatted(int k, double value)
+{
+  switch (vtkSurfaceMapFilter::GetSettingType(k))
+  {
+    case vtkSurfaceMapFilter::SETTING_SWITCH:
+      return value != 0.0 ? "on" : "off";
+    case vtkSurfaceMapFilter::SETTING_CHOICE:
+      return choiceNames(k).at(static_cast<std::size_t>(value));
+    default:
+      return number(value);
+  }
+}
+
+/// The value of flag `option` for setting k; UsageError naming the range.
+double parseValue(int k, const std::string& option, const std::string& text)
+{
+  const int type = vtkSurfaceMapFilter::GetSettingType(k);
+  const double lo = vtkSurfaceMapFilter::GetSettingMinimum(k);
+  const double hi = vtkSurfaceMapFilter::GetSettingMaximum(k);
+  if (type == vtkSurfaceMapFilter::SETTING_CHOICE)
+  {
+    const std::vector<std::string> names = choiceNames(k);
+    for (std::size_t c = 0; c < names.size(); ++c)
+    {
+      if (names[c] == text)
+      {
+        return static_cast<double>(c);
+      }
+    }
+    std::string list;
+    for (std::size_t c = 0; c < names.size(); ++c)
+    {
+      list += (c == 0 ? "" : c + 1 == names.size() ? " or " : ", ") + names[c];
+    }
+    throw UsageError{ option + " is " + list + ", not '" + text + "'" };
+  }
+  std::size_t used = 0;
+  double value = std::nan("");
+  try
+  {
+    value = std::stod(text, &used);
+  }
+  catch (const std::exception&)
+  {
+    used = 0;
+  }
+  const bool whole = type == vtkSurfaceMapFilter::SETTING_COUNT;
+  if (used != text.size() || !(value >= lo && value <= hi) || (whole && value != std::floor(value)))
+  {
+    throw UsageError{ option + (whole ? " needs a whole number from " : " needs a number from ") +
+      number(lo) + " to " + number(hi) + ", not '" + text + "'" };
+  }
+  return value;
+}
+
+/// `text` wrapped to `width` columns, every line indented by `indent`.
+std::string wrapped(const std::string& text, std::size_t indent, std::size_t width)
+{
+  std::istringstream words(text);
+  std::string out, line;
+  for (std::string word; words >> word;)
+  {
+    if (!line.empty() && indent + line.size() + 1 + word.size() > width)
+    {
+      out += std::string(indent, ' ') + line + "\n";
+      line.clear();
+    }
+    line += (line.empty() ? "" : " ") + word;
+  }
+  if (!line.empty())
+  {
+    out += std::string(indent, ' ') + line + "\n";
+  }
+  return out;
+}
+
+} // namespace
+
+bool parseSettingFlag(vtkSurfaceMapFilter* map, const std::vector<std::string>& args, std::size_t& i)
+{
+  const std::string& arg = args[i];
+  for (int k = 0; k < vtkSurfaceMapFilter::GetNumberOfSettings(); ++k)
+  {
+    const char* off = vtkSurfaceMapFilter::GetSettingOffFlag(k);
+    if (vtkSurfaceMapFilter::GetSettingType(k) == vtkSurfaceMapFilter::SETTING_SWITCH)
+    {
+      if (arg == std::string("--") + vtkSurfaceMapFilter::GetSettingFlag(k) ||
+        (off && arg == std::string("--") + off))
+      {
+        map->SetSetting(k, arg == std::string("--") + vtkSurfaceMapFilter::GetSettingFlag(k));
+        return true;
+      }
+      continue;
+    }
+    if (arg != std::string("--") + vtkSurfaceMapFilter::GetSettingFlag(k))
+    {
+      continue;
+    }
+    if (i + 1 >= args.size())
+    {
+      throw UsageError{ arg + " needs a value" };
+    }
+    map->SetSetting(k, parseValue(k, arg, args[++i]));
+    return true;
+  }
+  return false;
+}
+
+std::string settingsHelp()
+{
+  std::string help;
+  for (int k = 0; k < vtkSurfaceMapFilter::GetNumberOfSettings(); ++k)
+  {
+    const int type = vtkSurfaceMapFilter::GetSettingType(k);
+    std::string flag = std::string("  --") + vtkSurfaceMapFilter::GetSettingFlag(k);
+    std::string range;
+    switch (type)
+    {
+      case vtkSurfaceMapFilter::SETTING_SWITCH:
+        flag += std::string(" | --") + vtkSurfaceMapFilter::GetSettingOffFlag(k);
+        break;
+      case vtkSurfaceMapFilter::SETTING_CHOICE:
+        flag += " " + std::string(vtkSurfaceMapFilter::GetSettingChoices(k));
+        break;
+      default:
+        flag += type == vtkSurfaceMapFilter::SETTING_COUNT ? " N" : " X";
+        range = "; " + number(vtkSurfaceMapFilter::GetSettingMinimum(k)) + " to " +
+          number(vtkSurfaceMapFilter::GetSettingMaximum(k));
+    }
+    help += flag + "\n";
+    help += wrapped(std::string(vtkSurfaceMapFilter::GetSettingDocumentation(k)) + " (default " +
+        formatted(k, vtkSurfaceMapFilter::GetSettingDefault(k)) + range + ")",
+      6,
+      79);
+  }
+  return help;
+}
+
+std::string settingsJson(vtkSurfaceMapFilter* map)
+{
+  std::string json = "{";
+  for (int k = 0; k < vtkSurfaceMapFilter::GetNumberOfSettings(); ++k)
+  {
+    std::string key = vtkSurfaceMapFilter::GetSettingFlag(k);
+    for (char& c : key)
+    {
+      c = c == '-' ? '_' : c;
+    }
+    const double value = map->GetSetting(k);
+    std::string text;
+    switch (vtkSurfaceMapFilter::GetSettingType(k))
+    {
+      case vtkSurfaceMapFilter::SETTING_SWITCH:
+        text = value != 0.0 ? "true" : "false";
+        break;
+      case vtkSurfaceMapFilter::SETTING_CHOICE:
+        text = jsonString(formatted(k, value));
+        break;
+      default:
+        text = jsonNumber(value);
+    }
+    json += (k == 0 ? " " : ", ") + jsonString(key) + ": " + text;
+  }
+  json += ", \"sizing_mode\": " +
+    jsonString(map->GetSizingMode() == vtkSurfaceMapFilter::SIZING_CURVATURE ? "curvature"
+                                                                             : "array_or_curvature");
+  return json + " }";
+}
+
+} // namespace surfacemap

@@ -1,0 +1,27 @@
+// The `surfacemap` command line: the map's settings as flags, derived from
+// vtkSurfaceMapFilter's settings table (one flag per setting, its range
+// checked, its documentation and default in --help, its value in
+// report.json).
+#pragma once
+
+#include <string>
+#include <vector>
+
+class vtkSurfaceMapFilter;
+
+namespace surfacemap
+{
+
+/// If args[i] is a setting's flag, sets the setting on `map` (consuming its
+/// value, i then at the value) and returns true; throws UsageError naming
+/// the flag and its range for a bad value. False for any other argument.
+bool parseSettingFlag(vtkSurfaceMapFilter* map, const std::vector<std::string>& args, std::size_t& i);
+
+/// Every setting's flag with its documentation, default and range, for --help.
+std::string settingsHelp();
+
+/// Every setting of `map` as one JSON object: { "target_error": 0.001, ...,
+/// "pairs": "star", "keep_landmarks": true }.
+std::string settingsJson(vtkSurfaceMapFilter* map);
+
+} // namespace surfacemap

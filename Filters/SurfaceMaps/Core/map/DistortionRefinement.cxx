@@ -1,0 +1,161 @@
+#include "map/DistortionRefinement.h"
+
+#include "geometry/MapMetrics.h"
+#include "map/MapTransfer.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <sstream>
+
+namespace surfacemaps
+{
+
+namespace
+{
+
+/// What markExactMapDistortion found.
+struct DistortedTriangles
+{
+  int count = 0;       // over all pairs
+  double worst = 0.0;  // the largest distortion
+  double area = 0.0;   // the largest area fraction of one pair
+  double factor = 1.0; // the smallest sizing factor applied
+};
+
+/// Where T hides a distorted exact map: for every pair (i, j) of the map
+/// term, the triangles of input i whose exact-map distortion (input i ->
+/// input j through T) exceeds `threshold`. T's own map only sees T's
+/// vertices; inside a T triangle the exact map follows the two sphere
+/// embeddings, which can squeeze a whole input triangle where they differ.
+/// Lowers `factor` at their corners on input i and at the corners of the
+/// input-j triangles those land in, to 1 / sqrt(1 + growth / area) (area:
+/// their unit-area fraction of input i) but at least 0.5: the vertex density
+/// there grows about 1 + growth / area times, at most 4 times (infinite
+/// growth: halved sizing). T is garbage-collected first, for its flat
+/// triangle list.
+DistortedTriangles markExactMapDistortion(CommonTriangulation& T,
+  const std::vector<MapSurface>& surfaces,
+  const std::vector<std::array<int, 2>>& pairs,
+  double threshold,
+  double growth,
+  std::vector<std::vector<double>>& factor)
+{
+  SurfaceMesh& mesh = T.mesh();
+  mesh.garbage_collection();
+  const std::vector<std::array<int, 3>> triangles = faceTriangles(mesh);
+  DistortedTriangles found;
+  for (const auto& [i, j] : pairs)
+  {
+    std::vector<Eigen::Vector3d> gi(mesh.n_vertices()), gj(mesh.n_vertices());
+    for (auto v : mesh.vertices())
+    {
+      gi[v.idx()] = T.g(v, i);
+      gj[v.idx()] = T.g(v, j);
+    }
+    const std::vector<SurfacePoint> images = transferPoints(
+      surfaces[i].sphere, triangles, gi, gj, surfaces[j].sphere, surfaces[j].triangles);
+    std::vector<Eigen::Vector3d> mapped(images.size());
+    for (std::size_t v = 0; v < images.size(); ++v)
+    {
+      mapped[v] = evaluateSurfacePoint(surfaces[j].points, surfaces[j].triangles, images[v]);
+    }
+    const MapMetrics metrics = measureMap(surfaces[i].points, mapped, surfaces[i].triangles);
+    double area = 0.0;
+    std::vector<int> distorted;
+    for (std::size_t t = 0; t < surfaces[i].triangles.size(); ++t)
+    {
+      if (metrics.distortion[t] > threshold)
+      {
+        distorted.push_back(static_cast<int>(t));
+        area += metrics.areaP[t];
+        found.worst = std::max(found.worst, metrics.distortion[t]);
+      }
+    }
+    // Where much of the input is distorted, T must not grow by 4 times there.
+    const double f = std::clamp(1.0 / std::sqrt(1.0 + growth / std::max(area, 1e-12)), 0.5, 1.0);
+    found.count += static_cast<int>(distorted.size());
+    found.area = std::max(found.area, area);
+    if (!distorted.empty())
+    {
+      found.factor = std::min(found.factor, f);
+    }
+    for (const int t : distorted)
+    {
+      for (const int v : surfaces[i].triangles[t])
+      {
+        factor[i][v] = std::min(factor[i][v], f);
+        for (const int w : surfaces[j].triangles[images[v].triangle])
+        {
+          factor[j][w] = std::min(factor[j][w], f);
+        }
+      }
+    }
+  }
+  return found;
+}
+
+} // namespace
+
+DistortionRefinement::DistortionRefinement(
+  const SurfaceMapOptions& options, const ScheduleContext& context)
+  : Options(options)
+  , Context(context)
+{
+}
+
+std::optional<MapPhase> DistortionRefinement::next(
+  CommonTriangulation& T, std::vector<MapSurface>& surfaces)
+{
+  const SurfaceMapOptions& options = this->Options;
+  if (this->Context.pairs == 0 || options.fineIterations <= 0)
+  {
+    return std::nullopt;
+  }
+  while (this->Round < options.refinementRounds)
+  {
+    const int round = this->Round++;
+    std::vector<std::vector<double>> factor;
+    for (const MapSurface& s : surfaces)
+    {
+      factor.emplace_back(s.points.size(), 1.0);
+    }
+    const double threshold = round == 0 ? options.refinementDistortion : options.squeezeDistortion;
+    const DistortedTriangles found = markExactMapDistortion(T,
+      surfaces,
+      T.pairs(),
+      threshold,
+      round == 0 ? options.refinementGrowth : std::numeric_limits<double>::infinity(),
+      factor);
+    std::ostringstream message;
+    message << "exact map: " << found.count << " input triangles with distortion above "
+            << threshold;
+    if (found.count > 0)
+    {
+      message << " (largest " << found.worst << ", area fraction " << found.area
+              << "): sizing around them times " << found.factor;
+    }
+    options.log(Logger::Info, message.str());
+    if (found.count == 0)
+    {
+      if (round == 0 && options.squeezeDistortion < options.refinementDistortion)
+      {
+        continue; // nothing above the first threshold, but squeezes may be
+      }
+      this->Round = options.refinementRounds;
+      return std::nullopt;
+    }
+    for (std::size_t k = 0; k < surfaces.size(); ++k)
+    {
+      scaleSizingAround(surfaces[k], factor[k]);
+    }
+    T.invalidateFaceEnergies();
+    return finePhase(PhaseKind::Refine,
+      std::min(options.refinementIterations, options.fineIterations),
+      options,
+      this->Context);
+  }
+  return std::nullopt;
+}
+
+} // namespace surfacemaps

@@ -1,0 +1,22 @@
+// SurfaceMaps engine: which pairs of inputs the map-distortion term measures.
+#pragma once
+
+#include <array>
+#include <vector>
+
+namespace surfacemaps
+{
+
+/// Which pairs of inputs the map-distortion term measures (DESIGN.md 1.8).
+enum class PairMode
+{
+  Star,     ///< (0, i) for every i > 0
+  Sequence, ///< (i, i + 1)
+  Cycle,    ///< (i, i + 1) and (N - 1, 0)
+  All,      ///< every pair i < j
+};
+
+/// The pairs (i, j) of a mode for n inputs.
+std::vector<std::array<int, 2>> mapPairs(PairMode mode, int n);
+
+} // namespace surfacemaps

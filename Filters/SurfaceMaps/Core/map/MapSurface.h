@@ -1,0 +1,75 @@
+// SurfaceMaps engine: an input as the map's energy sees it.
+#pragma once
+
+#include "base/Log.h"
+#include "energy/ApproximationEnergy.h"
+#include "energy/LiftedPoint.h"
+#include "geometry/SphereLocator.h"
+#include "map/MapInput.h"
+
+#include <Eigen/Core>
+
+#include <array>
+#include <map>
+#include <memory>
+#include <vector>
+
+namespace surfacemaps
+{
+
+/// One input, centred and scaled to unit area, with its fixed embedding.
+struct MapSurface
+{
+  std::vector<Eigen::Vector3d> points;
+  std::vector<std::array<int, 3>> triangles;
+  std::vector<Eigen::Vector3d> sphere;
+  /// The lift of every triangle (sphere -> surface), built once.
+  std::vector<Lift> lifts;
+  std::unique_ptr<SphereLocator> locator;
+  /// Target edge length per vertex, unit-area units (set per phase).
+  std::vector<double> sizing;
+  /// The sizing is the user's (MapInput::sizing): no phase replaces it.
+  bool userSizing = false;
+  /// Landmark id per vertex (-1 none), may be empty.
+  std::vector<int> landmarks;
+  ApproximationSamples samples;
+  /// original = points / scale + centre.
+  Eigen::Vector3d centre = Eigen::Vector3d::Zero();
+  double scale = 1.0;
+
+  /// Sizing at a point of triangle t with barycentric weights w.
+  double sizingAt(int t, const std::array<double, 3>& w) const;
+};
+
+/// The inputs as the energy sees them: centred, unit area, the embeddings
+/// of inputs 1.. rotated onto input 0's through the landmarks, lifts and
+/// approximation samples (at most `samples` per input; 0: every vertex).
+/// `landmarks`: landmarkVertices(inputs).
+/// The surfaces refer to their own members: keep the returned vector as it
+/// is (no insertion) while a CommonTriangulation uses it. Throws
+/// std::invalid_argument when an input's arrays do not fit its mesh, it has
+/// no area, or the landmark ids do not correspond.
+std::vector<MapSurface> prepareMapSurfaces(const std::vector<MapInput>& inputs,
+  const std::vector<std::map<int, int>>& landmarks,
+  int samples,
+  const Logger& log = Logger());
+
+/// Landmark id -> vertex of each input; every id must be on every input
+/// (std::invalid_argument otherwise, naming the input and the id).
+std::vector<std::map<int, int>> landmarkVertices(const std::vector<MapInput>& inputs);
+
+/// Recomputes the curvature sizing of every surface without a user sizing
+/// for the approximation error eps (DESIGN.md section 1.7), edge lengths
+/// clamped to [minEdgeLength, maxEdgeLength].
+void setCurvatureSizing(
+  std::vector<MapSurface>& surfaces, double eps, double minEdgeLength, double maxEdgeLength);
+
+/// Multiplies each vertex's sizing by the smallest factor on its one-ring
+/// (factor: per vertex, 1 = unchanged).
+void scaleSizingAround(MapSurface& surface, const std::vector<double>& factor);
+
+/// Landmark id -> the landmark's point on each input's (aligned) sphere.
+std::vector<std::map<int, Eigen::Vector3d>> landmarkTargets(
+  const std::vector<MapSurface>& surfaces);
+
+} // namespace surfacemaps

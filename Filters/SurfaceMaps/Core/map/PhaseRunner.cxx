@@ -1,0 +1,222 @@
+#include "map/PhaseRunner.h"
+
+#include "base/Aborted.h"
+#include "map/Remeshing.h"
+#include "optimisation/NewtonSolver.h"
+#include "geometry/Predicates.h"
+
+#include <algorithm>
+#include <chrono>
+#include <sstream>
+#include <stdexcept>
+
+namespace surfacemaps
+{
+
+namespace
+{
+using Clock = std::chrono::steady_clock;
+
+double secondsSince(Clock::time_point start)
+{
+  return std::chrono::duration<double>(Clock::now() - start).count();
+}
+} // namespace
+
+PhaseRunner::PhaseRunner(CommonTriangulation& T,
+  std::vector<MapSurface>& surfaces,
+  const SurfaceMapOptions& options,
+  std::vector<std::map<int, Eigen::Vector3d>> targets,
+  int plannedIterations)
+  : T(T)
+  , Surfaces(surfaces)
+  , Options(options)
+  , Targets(std::move(targets))
+  , PlannedIterations(std::max(1, plannedIterations))
+{
+}
+
+double PhaseRunner::landmarkError() const
+{
+  double error = 0.0;
+  for (auto v : this->T.mesh().vertices())
+  {
+    const int id = this->T.landmark(v);
+    for (int i = 0; id >= 0 && i < this->T.numberOfInputs(); ++i)
+    {
+      const auto it = this->Targets[i].find(id);
+      if (it != this->Targets[i].end())
+      {
+        error = std::max(error, (this->T.g(v, i) - it->second).norm());
+      }
+    }
+  }
+  return error;
+}
+
+MapPhaseReport PhaseRunner::run(const MapPhase& phase)
+{
+  const auto start = Clock::now();
+  const char* name = phaseName(phase.kind);
+  if (phase.sizingError > 0.0)
+  {
+    setCurvatureSizing(
+      this->Surfaces, phase.sizingError, this->Options.minEdgeLength, this->Options.maxEdgeLength);
+  }
+  this->T.weights = phase.weights;
+  MapPhaseReport report;
+  report.kind = phase.kind;
+  // Kept across iterations: an unchanged Hessian pattern (no edit that
+  // changed T) lets the solver keep its symbolic analysis.
+  LinearSolver solver;
+  Objective objective;
+  bool reached = false;
+  for (int it = 0; it < phase.iterations; ++it)
+  {
+    auto clock = Clock::now();
+    if (this->T.weights.mesh > 0.0)
+    {
+      this->T.updateTargetLengths();
+    }
+    report.bookkeepingSeconds += secondsSince(clock);
+    RemeshingOptions remeshing;
+    if (phase.untilLandmarks && reached)
+    {
+      // Relaxing after the landmarks were reached: T keeps its vertices.
+      remeshing.collapse = false;
+      remeshing.split = false;
+    }
+    const RemeshingResult edits = remesh(this->T, remeshing);
+    report.splits += edits.splits;
+    report.collapses += edits.collapses;
+    report.flips += edits.flips;
+    report.remeshSeconds += edits.seconds;
+
+    clock = Clock::now();
+    CommonTriangulation::Snapshot snapshot;
+    SpherePoints points;
+    this->T.snapshot(snapshot, points, phase.lockLandmarks);
+    this->T.buildObjective(snapshot, this->Targets, objective);
+    report.bookkeepingSeconds += secondsSince(clock);
+    NewtonOptions newton;
+    newton.maxPointStep = this->Options.maxPointStep;
+    newton.acceptTrial = [&](const SpherePoints& trial) { return this->T.update(snapshot, trial); };
+    newton.log = this->Options.log;
+    const NewtonStepResult step = newtonStep(objective, points, solver, newton);
+    clock = Clock::now();
+    if (!this->T.update(snapshot, points))
+    {
+      throw std::logic_error("the accepted Newton step left an invalid embedding");
+    }
+    this->T.writeBack(snapshot, points);
+    report.bookkeepingSeconds += secondsSince(clock);
+
+    report.iterations = it + 1;
+    report.energy = step.energyAfter;
+    report.derivativeSeconds += step.derivativeSeconds;
+    report.solveSeconds += step.solveSeconds;
+    report.lineSearchSeconds += step.lineSearchSeconds;
+    report.vertices = snapshot.vertices;
+
+    std::ostringstream message;
+    message << name << " iteration " << it + 1 << ": " << snapshot.vertices << " vertices, E "
+            << step.energyAfter << ", decrement " << step.decrement << ", step " << step.step
+            << " (" << step.lineSearchTrials << " trials"
+            << (step.gradientFallback ? ", gradient" : "") << "), edits " << edits.splits << "/"
+            << edits.collapses << "/" << edits.flips;
+    this->Options.log(Logger::Detail, message.str());
+    this->reportProgress(phase, it + 1, snapshot.vertices, step.energyAfter);
+
+    const bool settled = edits.splits + edits.collapses + edits.flips == 0 &&
+      step.decrement < this->Options.decrementTolerance;
+    if (phase.untilLandmarks)
+    {
+      report.landmarkError = this->landmarkError();
+      reached = reached || report.landmarkError < this->Options.landmarkTolerance;
+      if (report.landmarkError < this->Options.landmarkTolerance &&
+        (!phase.relaxAfterLandmarks || settled))
+      {
+        report.converged = true;
+        break;
+      }
+    }
+    else if (settled)
+    {
+      report.converged = true;
+      break;
+    }
+  }
+  report.seconds = secondsSince(start);
+  std::ostringstream message;
+  message << name << " phase: " << report.iterations << " iterations"
+          << (report.converged ? " (converged)" : " (iteration cap)") << ", " << report.vertices
+          << " vertices, " << report.seconds << " s";
+  this->Options.log(Logger::Info, message.str());
+  if (phase.untilLandmarks && !report.converged)
+  {
+    this->Options.log(Logger::Warning,
+      "landmark phase stopped at its cap with landmark error " +
+        std::to_string(report.landmarkError) + " (tolerance " +
+        std::to_string(this->Options.landmarkTolerance) + "); going on");
+  }
+  return report;
+}
+
+void PhaseRunner::reportProgress(const MapPhase& phase, int iteration, int vertices, double energy)
+{
+  ++this->Done;
+  if (!this->Options.progress)
+  {
+    return;
+  }
+  SurfaceMapProgress progress;
+  progress.phase = phaseName(phase.kind);
+  progress.iteration = iteration;
+  progress.fraction = std::min(1.0, static_cast<double>(this->Done) / this->PlannedIterations);
+  progress.vertices = vertices;
+  progress.energy = energy;
+  if (!this->Options.progress(progress))
+  {
+    throw Aborted();
+  }
+}
+
+int PhaseRunner::snapLandmarks()
+{
+  int missed = 0;
+  SurfaceMesh& mesh = this->T.mesh();
+  for (auto v : mesh.vertices())
+  {
+    const int id = this->T.landmark(v);
+    if (id < 0)
+    {
+      continue;
+    }
+    MapVertex data = this->T.vertex(v);
+    for (int i = 0; i < this->T.numberOfInputs(); ++i)
+    {
+      const Eigen::Vector3d target = this->Targets[i].at(id);
+      bool positive = true;
+      for (auto h : mesh.voh_range(v))
+      {
+        const auto a = mesh.to_vertex_handle(h);
+        const auto b = mesh.to_vertex_handle(mesh.next_halfedge_handle(h));
+        positive = positive && orient3dOrigin(target, this->T.g(a, i), this->T.g(b, i)) > 0;
+      }
+      if (positive)
+      {
+        data.g[i] = target;
+      }
+      else
+      {
+        ++missed;
+      }
+    }
+    this->T.relocate(data);
+    this->T.setVertex(v, data);
+  }
+  this->T.invalidateFaceEnergies();
+  return missed;
+}
+
+} // namespace surfacemaps

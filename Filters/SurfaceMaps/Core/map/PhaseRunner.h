@@ -1,0 +1,56 @@
+// SurfaceMaps engine: runs one phase of the map's schedule on T.
+#pragma once
+
+#include "map/CommonTriangulation.h"
+#include "map/MapOptions.h"
+#include "map/MapPhase.h"
+
+#include <Eigen/Core>
+
+#include <map>
+#include <vector>
+
+namespace surfacemaps
+{
+
+/// Runs phases on a common triangulation: per iteration the improving
+/// splits, collapses and flips, then one projected-Newton step on every
+/// embedding of T (DESIGN.md section 1.4), until the phase's cap or its end
+/// condition. Reports progress per iteration and throws Aborted when the
+/// progress callback says so.
+class PhaseRunner
+{
+public:
+  /// `targets`: landmark id -> target point on each input's sphere;
+  /// `plannedIterations`: the whole schedule's, for the progress fraction.
+  PhaseRunner(CommonTriangulation& T,
+    std::vector<MapSurface>& surfaces,
+    const SurfaceMapOptions& options,
+    std::vector<std::map<int, Eigen::Vector3d>> targets,
+    int plannedIterations);
+
+  /// Sets the phase's weights (and sizing), then iterates.
+  MapPhaseReport run(const MapPhase& phase);
+
+  /// Largest sphere distance of a landmark vertex from its target.
+  double landmarkError() const;
+
+  /// Puts every landmark vertex exactly on its input vertex on every sphere
+  /// where its star stays positively oriented (exact); returns how many
+  /// (vertex, sphere) pairs could not be snapped.
+  int snapLandmarks();
+
+  const std::vector<std::map<int, Eigen::Vector3d>>& targets() const { return this->Targets; }
+
+private:
+  void reportProgress(const MapPhase& phase, int iteration, int vertices, double energy);
+
+  CommonTriangulation& T;
+  std::vector<MapSurface>& Surfaces;
+  const SurfaceMapOptions& Options;
+  std::vector<std::map<int, Eigen::Vector3d>> Targets;
+  int PlannedIterations;
+  int Done = 0;
+};
+
+} // namespace surfacemaps

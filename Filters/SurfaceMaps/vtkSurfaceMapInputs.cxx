@@ -1,0 +1,224 @@
+#include "vtkSurfaceMapInputs.h"
+
+#include "vtkSurfaceMapsConversion.h"
+
+#include "base/Aborted.h"
+#include "base/InputError.h"
+#include "embedding/SphereEmbedding.h"
+#include "geometry/SphericalTriangulation.h"
+#include "mesh/MeshValidation.h"
+
+#include "vtkDataArray.h"
+#include "vtkPointData.h"
+#include "vtkPolyData.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+namespace
+{
+const char* const SizingName = "Sizing";
+const char* const SpherePositionName = "SpherePosition";
+
+std::string joined(const std::vector<std::string>& messages)
+{
+  std::string text;
+  for (const std::string& m : messages)
+  {
+    text += (text.empty() ? "" : "; ") + m;
+  }
+  return text;
+}
+
+// The "Sizing" array of an input (empty if absent); defects are reported.
+std::vector<double> readSizing(vtkPolyData* input,
+  const std::string& name,
+  std::vector<std::string>& defects)
+{
+  std::vector<double> sizing;
+  vtkDataArray* array = input->GetPointData()->GetArray(SizingName);
+  if (!array)
+  {
+    return sizing;
+  }
+  if (array->GetNumberOfComponents() != 1 ||
+    array->GetNumberOfTuples() != input->GetNumberOfPoints())
+  {
+    defects.push_back(name + " has a Sizing array of the wrong shape (" +
+      std::to_string(array->GetNumberOfTuples()) + " x " +
+      std::to_string(array->GetNumberOfComponents()) + " values for " +
+      std::to_string(input->GetNumberOfPoints()) + " points)");
+    return sizing;
+  }
+  sizing.resize(static_cast<std::size_t>(array->GetNumberOfTuples()));
+  for (vtkIdType v = 0; v < array->GetNumberOfTuples(); ++v)
+  {
+    sizing[v] = array->GetComponent(v, 0);
+    if (!std::isfinite(sizing[v]) || sizing[v] <= 0.0)
+    {
+      defects.push_back(name + " has a Sizing value that is not a positive length (" +
+        std::to_string(sizing[v]) + " at point " + std::to_string(v) + ")");
+      sizing.clear();
+      break;
+    }
+  }
+  return sizing;
+}
+
+// A present "SpherePosition" array, normalised and certified; empty if absent.
+std::vector<Eigen::Vector3d> givenEmbedding(vtkPolyData* input,
+  const surfacemaps::MapInput& mapInput,
+  const std::string& name)
+{
+  vtkDataArray* array = input->GetPointData()->GetArray(SpherePositionName);
+  if (!array)
+  {
+    return {};
+  }
+  std::vector<Eigen::Vector3d> positions = vtkSurfaceMapsConversion::SpherePositions(input);
+  if (positions.empty())
+  {
+    throw surfacemaps::InputError(name + " has a SpherePosition array of the wrong shape (" +
+      std::to_string(array->GetNumberOfTuples()) + " x " +
+      std::to_string(array->GetNumberOfComponents()) + " values for " +
+      std::to_string(input->GetNumberOfPoints()) + " points)");
+  }
+  for (std::size_t v = 0; v < positions.size(); ++v)
+  {
+    const double length = positions[v].norm();
+    if (!std::isfinite(length) || length == 0.0)
+    {
+      throw surfacemaps::InputError(
+        name + " has a SpherePosition that is not a direction at point " + std::to_string(v));
+    }
+    positions[v] /= length;
+  }
+  const surfacemaps::BijectivityCertificate certificate =
+    surfacemaps::certifyBijective(positions, mapInput.mesh.triangles());
+  if (!certificate.bijective)
+  {
+    throw surfacemaps::InputError(name +
+      " has a SpherePosition array that is not a bijective embedding: " + certificate.reason);
+  }
+  return positions;
+}
+
+} // namespace
+
+std::string vtkSurfaceMapInputs::Name(vtkPolyData* input, int index)
+{
+  const std::string plain = "input " + std::to_string(index);
+  const std::string name = vtkSurfaceMapsConversion::InputName(input, index);
+  return name == plain ? plain : plain + " (" + name + ")";
+}
+
+std::vector<surfacemaps::MapInput> vtkSurfaceMapInputs::Read(
+  const std::vector<vtkPolyData*>& inputs,
+  bool useSizing)
+{
+  const int n = static_cast<int>(inputs.size());
+  std::vector<surfacemaps::MapInput> result(n);
+  std::vector<std::string> defects, names(n);
+  std::vector<std::vector<int>> landmarks(n);
+  bool anyLandmarks = false;
+  for (int i = 0; i < n; ++i)
+  {
+    names[i] = vtkSurfaceMapInputs::Name(inputs[i], i);
+    result[i].mesh = vtkSurfaceMapsConversion::ToPolygonMesh(inputs[i]);
+    for (const std::string& d : surfacemaps::validateMesh(result[i].mesh).defects)
+    {
+      defects.push_back(names[i] + " " + d);
+    }
+
+    landmarks[i] = vtkSurfaceMapsConversion::LandmarkIds(inputs[i]);
+    if (!landmarks[i].empty() && landmarks[i].size() != result[i].mesh.points.size())
+    {
+      defects.push_back(names[i] + " has a Landmarks array of the wrong length (" +
+        std::to_string(landmarks[i].size()) + " values for " +
+        std::to_string(result[i].mesh.points.size()) + " points)");
+      landmarks[i].clear();
+    }
+    for (const std::string& d : surfacemaps::checkLandmarkIds(landmarks[i]))
+    {
+      defects.push_back(names[i] + " " + d);
+    }
+    anyLandmarks = anyLandmarks ||
+      std::any_of(landmarks[i].begin(), landmarks[i].end(), [](int id) { return id >= 0; });
+
+    if (useSizing)
+    {
+      result[i].sizing = readSizing(inputs[i], names[i], defects);
+    }
+  }
+  if (anyLandmarks && n > 1)
+  {
+    for (const auto& perInput : surfacemaps::checkLandmarkCorrespondence(landmarks, names))
+    {
+      defects.insert(defects.end(), perInput.begin(), perInput.end());
+    }
+  }
+  if (!defects.empty())
+  {
+    throw surfacemaps::InputError(joined(defects));
+  }
+  for (int i = 0; i < n && anyLandmarks; ++i)
+  {
+    result[i].landmarks = landmarks[i].empty() ? std::vector<int>(result[i].mesh.points.size(), -1)
+                                               : std::move(landmarks[i]);
+  }
+  return result;
+}
+
+std::vector<double> vtkSurfaceMapInputs::Embed(const std::vector<vtkPolyData*>& inputs,
+  std::vector<surfacemaps::MapInput>& mapInputs,
+  const std::function<bool(double, const std::string&)>& progress)
+{
+  const int n = static_cast<int>(inputs.size());
+  std::vector<double> seconds(n, 0.0);
+  std::vector<int> missing;
+  for (int i = 0; i < n; ++i)
+  {
+    mapInputs[i].spherePositions = givenEmbedding(inputs[i], mapInputs[i], Name(inputs[i], i));
+    if (mapInputs[i].spherePositions.empty())
+    {
+      missing.push_back(i);
+    }
+  }
+  if (missing.empty())
+  {
+    return seconds;
+  }
+  // All missing embeddings at once, one per thread.
+  const std::string text = missing.size() == 1
+    ? "Sphere embedding of " + Name(inputs[missing[0]], missing[0])
+    : "Sphere embeddings of " + std::to_string(missing.size()) + " inputs";
+  if (!progress(0.0, text))
+  {
+    throw surfacemaps::Aborted();
+  }
+  std::vector<const surfacemaps::PolygonMesh*> meshes;
+  for (int i : missing)
+  {
+    meshes.push_back(&mapInputs[i].mesh);
+  }
+  surfacemaps::SphereEmbeddingOptions options;
+  options.progress = [&](double fraction) { return progress(fraction, text); };
+  options.log = vtkSurfaceMapsConversion::EngineLog();
+  try
+  {
+    std::vector<surfacemaps::SphereEmbeddingResult> embeddings =
+      surfacemaps::embedAllOnSphere(meshes, options);
+    for (std::size_t k = 0; k < missing.size(); ++k)
+    {
+      mapInputs[missing[k]].spherePositions = std::move(embeddings[k].positions);
+      seconds[missing[k]] = embeddings[k].seconds;
+    }
+  }
+  catch (const surfacemaps::EmbeddingFailure& e)
+  {
+    const int i = missing[e.index];
+    throw std::runtime_error(Name(inputs[i], i) + ": " + e.what());
+  }
+  return seconds;
+}
