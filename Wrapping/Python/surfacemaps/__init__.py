@@ -18,7 +18,7 @@ Helpers:
     the mesh with the point array "SpherePosition"; raises InputError.
 ``evaluate_map(source, target, source_original=None, target_original=None)``
     The metrics of vtkSurfaceMapEvaluation as a dictionary.
-``map_surfaces(meshes, landmarks=None, target_error=1e-3, pairs="star", keep_landmarks=True, **settings)``
+``map_surfaces(meshes, landmarks=None, target_error=None, pairs=None, keep_landmarks=None, **settings)``
     Certified bijective map between meshes (vtkSurfaceMapFilter); returns one
     output per mesh (the common triangulation lifted onto each), or with
     ``mapped=True`` also the first mesh mapped onto each; raises InputError or
@@ -187,7 +187,27 @@ def _with_landmarks(mesh, landmarks):
     return copy
 
 
-def map_surfaces(meshes, landmarks=None, target_error=1e-3, pairs="star", keep_landmarks=True, mapped=False,
+def settings_table():
+    """The surface map's settings, one dict per setting, from the engine's one
+    table (vtkSurfaceMapFilter.GetSettingName(i) and friends): name (the
+    filter's Set<name>/Get<name>), flag (``surfacemap map --<flag>``), type
+    ("real", "count", "switch", "choice"), minimum, maximum, default,
+    choices (for "choice"), doc."""
+    f = vtkSurfaceMapFilter
+    types = {f.SETTING_REAL: "real", f.SETTING_COUNT: "count", f.SETTING_SWITCH: "switch",
+             f.SETTING_CHOICE: "choice"}
+    rows = []
+    for i in range(f.GetNumberOfSettings()):
+        choices = f.GetSettingChoices(i)
+        rows.append({"name": f.GetSettingName(i), "flag": f.GetSettingFlag(i),
+                     "type": types[f.GetSettingType(i)], "minimum": f.GetSettingMinimum(i),
+                     "maximum": f.GetSettingMaximum(i), "default": f.GetSettingDefault(i),
+                     "choices": choices.split("|") if choices else None,
+                     "doc": f.GetSettingDocumentation(i)})
+    return rows
+
+
+def map_surfaces(meshes, landmarks=None, target_error=None, pairs=None, keep_landmarks=None, mapped=False,
                  **settings):
     """Certified bijective map between closed genus-0 meshes through one common triangulation.
 
@@ -204,8 +224,10 @@ def map_surfaces(meshes, landmarks=None, target_error=1e-3, pairs="star", keep_l
       distortion is minimised with three or more meshes.
     - `keep_landmarks`: lock landmarks exactly after the landmark phase (True)
       or release them.
-    - `settings`: any other vtkSurfaceMapFilter setting by name, e.g.
-      ``CoarseIterations=10``, ``FineIterations=20``, ``MapWeight=2.0``.
+    - `settings`: any other setting of vtkSurfaceMapFilter's settings table by
+      name, e.g. ``CoarseIterations=10``, ``FineIterations=20``,
+      ``MapWeight=2.0`` (``settings_table()`` lists them).
+    A setting left at None keeps the filter's default (the settings table's).
 
     Returns the list of outputs, one per mesh: the common triangulation lifted
     onto mesh i, same triangles for all, with the point arrays
@@ -225,18 +247,21 @@ def map_surfaces(meshes, landmarks=None, target_error=1e-3, pairs="star", keep_l
         landmarks = list(landmarks)
         if len(landmarks) != len(meshes):
             raise InputError(f"{len(meshes)} meshes but {len(landmarks)} landmark entries")
-    if pairs not in _PAIR_MODES:
+    if pairs is not None and pairs not in _PAIR_MODES:
         raise ValueError(f"pairs is one of {sorted(_PAIR_MODES)}, not {pairs!r}")
     f = vtkSurfaceMapFilter()
     errors = _collect_errors(f)
-    f.SetTargetError(target_error)
-    f.SetPairMode(_PAIR_MODES[pairs])
-    f.SetKeepLandmarks(bool(keep_landmarks))
+    if target_error is not None:
+        f.SetTargetError(target_error)
+    if pairs is not None:
+        f.SetPairMode(_PAIR_MODES[pairs])
+    if keep_landmarks is not None:
+        f.SetKeepLandmarks(bool(keep_landmarks))
+    known = {row["name"] for row in settings_table()} | {"SizingMode", "NumberOfThreads"}
     for name, value in settings.items():
-        setter = getattr(f, "Set" + name, None)
-        if setter is None:
+        if name not in known:
             raise TypeError(f"vtkSurfaceMapFilter has no setting {name!r}")
-        setter(value)
+        getattr(f, "Set" + name)(value)
     for k, mesh in enumerate(meshes):
         f.AddInputData(_with_landmarks(mesh, None if landmarks is None else landmarks[k]))
 

@@ -1,14 +1,17 @@
-// SurfaceMaps engine: the common triangulation T with its N sphere embeddings,
-// the inputs it maps between, and the energy of DESIGN.md section 1.3.
+// SurfaceMaps engine: the common triangulation T with its N sphere embeddings
+// and the energy of DESIGN.md section 1.3 (defined in CommonTriangulation.cxx:
+// connectivity, vertex data, samples; CommonTriangulationEnergy.cxx: local
+// energies and the objective; CommonTriangulationSnapshot.cxx: the flat copy
+// the Newton step works on).
 #pragma once
 
 #include "energy/ApproximationEnergy.h"
 #include "energy/LiftedPoint.h"
-#include "map/MapSurface.h"
-#include "optimisation/Objective.h"
 #include "geometry/SphereLocator.h"
-#include "optimisation/SpherePoints.h"
+#include "map/MapSurface.h"
 #include "mesh/SurfaceMesh.h"
+#include "optimisation/Objective.h"
+#include "optimisation/SpherePoints.h"
 
 #include <Eigen/Core>
 
@@ -218,7 +221,24 @@ private:
   /// Calls function(face, a, b, c) for every face with its corners' data,
   /// in parallel: function may write that face's properties only.
   template<typename Function>
-  void forEachFace(Function function);
+  void forEachFace(Function function)
+  {
+    std::vector<OpenMesh::FaceHandle> faces;
+    faces.reserve(this->Mesh.n_faces());
+    for (auto f : this->Mesh.faces())
+    {
+      faces.push_back(f);
+    }
+#pragma omp parallel for schedule(dynamic, 256)
+    for (long long k = 0; k < static_cast<long long>(faces.size()); ++k)
+    {
+      auto it = this->Mesh.cfv_iter(faces[k]);
+      const MapVertex a = this->vertex(*it);
+      const MapVertex b = this->vertex(*++it);
+      const MapVertex c = this->vertex(*++it);
+      function(faces[k], a, b, c);
+    }
+  }
 
   std::vector<MapSurface>& Surfaces;
   std::vector<std::array<int, 2>> Pairs;

@@ -97,15 +97,15 @@ DistortedTriangles markExactMapDistortion(CommonTriangulation& T,
 
 } // namespace
 
-DistortionRefinement::DistortionRefinement(
-  const SurfaceMapOptions& options, const ScheduleContext& context)
+DistortionRefinement::DistortionRefinement(const SurfaceMapOptions& options,
+  const ScheduleContext& context)
   : Options(options)
   , Context(context)
 {
 }
 
-std::optional<MapPhase> DistortionRefinement::next(
-  CommonTriangulation& T, std::vector<MapSurface>& surfaces)
+std::optional<MapPhase> DistortionRefinement::next(CommonTriangulation& T,
+  std::vector<MapSurface>& surfaces)
 {
   const SurfaceMapOptions& options = this->Options;
   if (this->Context.pairs == 0 || options.fineIterations <= 0)

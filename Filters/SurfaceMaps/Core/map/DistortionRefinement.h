@@ -1,8 +1,8 @@
 // SurfaceMaps engine: refining T where the exact map is distorted.
 #pragma once
 
-#include "map/MapPhase.h"
 #include "map/MapOptions.h"
+#include "map/MapPhase.h"
 #include "map/Schedule.h"
 
 #include <optional>

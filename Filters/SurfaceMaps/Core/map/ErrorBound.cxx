@@ -121,8 +121,9 @@ std::optional<MapPhase> ErrorBound::next(CommonTriangulation& T)
   std::ostringstream message;
   message << "error bound " << options.maxError
           << " of the bounding-box diagonal: " << violations.count << " input vertices beyond "
-          << options.boundMargin << " of it (largest " << violations.worst << " of the bound, input "
-          << violations.worstInput << " vertex " << violations.worstVertex << ")";
+          << options.boundMargin << " of it (largest " << violations.worst
+          << " of the bound, input " << violations.worstInput << " vertex "
+          << violations.worstVertex << ")";
   options.log(Logger::Info, message.str());
   if (violations.count > 0)
   {
@@ -137,8 +138,7 @@ std::optional<MapPhase> ErrorBound::next(CommonTriangulation& T)
     ++this->Round;
     refineAround(this->Surfaces, violations, options.boundMargin);
     T.invalidateFaceEnergies();
-    return finePhase(
-      PhaseKind::Refine, options.boundRefinementIterations, options, this->Context);
+    return finePhase(PhaseKind::Refine, options.boundRefinementIterations, options, this->Context);
   }
   for (std::size_t i = 0; i < this->Surfaces.size(); ++i)
   {
@@ -166,8 +166,8 @@ void certifyBaseDistances(const CommonTriangulation& T,
     }
     if (!bounds.empty() && !(d < bounds[i]))
     {
-      throw std::runtime_error("input " + std::to_string(i) + " is not within the error bound: " +
-        std::to_string(d / bounds[i]) + " times the bound");
+      throw std::runtime_error("input " + std::to_string(i) +
+        " is not within the error bound: " + std::to_string(d / bounds[i]) + " times the bound");
     }
     largest.push_back(d / surfaces[i].scale);
     bound.push_back(bounds.empty() ? 0.0 : bounds[i] / surfaces[i].scale);

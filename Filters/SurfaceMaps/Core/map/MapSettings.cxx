@@ -59,9 +59,9 @@ MapSetting toggle(const char* name,
   return s;
 }
 
-std::vector<MapSetting> buildTable()
+/// Which pairs the distortion term measures.
+void pairSettings(std::vector<MapSetting>& table)
 {
-  std::vector<MapSetting> table;
   MapSetting pairs{ "PairMode",
     "pairs",
     nullptr,
@@ -74,7 +74,11 @@ std::vector<MapSetting> buildTable()
     [](const Options& o) { return static_cast<double>(o.pairs); },
     [](Options& o, double value) { o.pairs = static_cast<PairMode>(static_cast<int>(value)); } };
   table.push_back(pairs);
+}
 
+/// The landmark phase.
+void landmarkSettings(std::vector<MapSetting>& table)
+{
   table.push_back(count("LandmarkIterations",
     "landmark-iterations",
     &Options::landmarkIterations,
@@ -113,7 +117,11 @@ std::vector<MapSetting> buildTable()
     &Options::keepLandmarks,
     "After the landmark phase, snap T's landmark vertices exactly onto their input vertices and "
     "lock them; off: release them to the optimisation."));
+}
 
+/// The coarse and fine phases and the weights of the energy.
+void phaseSettings(std::vector<MapSetting>& table)
+{
   table.push_back(count("CoarseIterations",
     "coarse-iterations",
     &Options::coarseIterations,
@@ -172,7 +180,11 @@ std::vector<MapSetting> buildTable()
     1e6,
     "Weight of the surface-approximation term (coarse phase on): more, a T and an exact map "
     "closer to the inputs."));
+}
 
+/// The refinement where the exact map is distorted.
+void refinementSettings(std::vector<MapSetting>& table)
+{
   table.push_back(count("RefinementRounds",
     "refinement-rounds",
     &Options::refinementRounds,
@@ -209,7 +221,11 @@ std::vector<MapSetting> buildTable()
     "Bounds the first round's refinement: with a fraction `area` of an input above the "
     "threshold the sizing there shrinks by 1/sqrt(1 + growth/area), at most by half (0: the "
     "round only iterates)."));
+}
 
+/// Error-bounded remeshing.
+void boundSettings(std::vector<MapSetting>& table)
+{
   table.push_back(real("MaxError",
     "max-error",
     &Options::maxError,
@@ -244,7 +260,11 @@ std::vector<MapSetting> buildTable()
     0,
     100000,
     "Iterations with the hard bound as a barrier when MaxError is set."));
+}
 
+/// Energy and solver details.
+void detailSettings(std::vector<MapSetting>& table)
+{
   table.push_back(count("ApproximationSamples",
     "approximation-samples",
     &Options::approximationSamples,
@@ -278,6 +298,17 @@ std::vector<MapSetting> buildTable()
     1e3,
     "Largest tangent step (tan of the angle) of one point in a Newton step; the whole step is "
     "scaled down to respect it, never clamped per point."));
+}
+
+std::vector<MapSetting> buildTable()
+{
+  std::vector<MapSetting> table;
+  pairSettings(table);
+  landmarkSettings(table);
+  phaseSettings(table);
+  refinementSettings(table);
+  boundSettings(table);
+  detailSettings(table);
   return table;
 }
 
@@ -354,8 +385,9 @@ const MapSetting* findMapSetting(const std::string& name)
   return nullptr;
 }
 
-bool parseSettingFlag(
-  const std::vector<std::string>& args, std::size_t& i, SurfaceMapOptions& options)
+bool parseSettingFlag(const std::vector<std::string>& args,
+  std::size_t& i,
+  SurfaceMapOptions& options)
 {
   const std::string& arg = args[i];
   for (const MapSetting& s : mapSettings())

@@ -66,7 +66,8 @@ const MapSetting* findMapSetting(const std::string& name);
 /// any other argument. Throws std::invalid_argument naming the flag and its
 /// range for a missing or bad value. (The command line `surfacemap map` does
 /// the same through vtkSurfaceMapFilter's copy of this table.)
-bool parseSettingFlag(
-  const std::vector<std::string>& args, std::size_t& i, SurfaceMapOptions& options);
+bool parseSettingFlag(const std::vector<std::string>& args,
+  std::size_t& i,
+  SurfaceMapOptions& options);
 
 } // namespace surfacemaps

@@ -235,8 +235,10 @@ std::vector<MapSurface> prepareMapSurfaces(const std::vector<MapInput>& inputs,
   return surfaces;
 }
 
-void setCurvatureSizing(
-  std::vector<MapSurface>& surfaces, double eps, double minEdgeLength, double maxEdgeLength)
+void setCurvatureSizing(std::vector<MapSurface>& surfaces,
+  double eps,
+  double minEdgeLength,
+  double maxEdgeLength)
 {
   for (MapSurface& s : surfaces)
   {

@@ -61,8 +61,10 @@ std::vector<std::map<int, int>> landmarkVertices(const std::vector<MapInput>& in
 /// Recomputes the curvature sizing of every surface without a user sizing
 /// for the approximation error eps (DESIGN.md section 1.7), edge lengths
 /// clamped to [minEdgeLength, maxEdgeLength].
-void setCurvatureSizing(
-  std::vector<MapSurface>& surfaces, double eps, double minEdgeLength, double maxEdgeLength);
+void setCurvatureSizing(std::vector<MapSurface>& surfaces,
+  double eps,
+  double minEdgeLength,
+  double maxEdgeLength);
 
 /// Multiplies each vertex's sizing by the smallest factor on its one-ring
 /// (factor: per vertex, 1 = unchanged).

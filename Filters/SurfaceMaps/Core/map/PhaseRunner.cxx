@@ -1,9 +1,9 @@
 #include "map/PhaseRunner.h"
 
 #include "base/Aborted.h"
+#include "geometry/Predicates.h"
 #include "map/Remeshing.h"
 #include "optimisation/NewtonSolver.h"
-#include "geometry/Predicates.h"
 
 #include <algorithm>
 #include <chrono>

@@ -76,8 +76,8 @@ MapPhase finePhase(PhaseKind kind,
     kind, iterations, options.targetError, options.fineBarrierWeight, options, context, bounds);
 }
 
-std::vector<MapPhase> distortionPhases(
-  const SurfaceMapOptions& options, const ScheduleContext& context)
+std::vector<MapPhase> distortionPhases(const SurfaceMapOptions& options,
+  const ScheduleContext& context)
 {
   std::vector<MapPhase> phases;
   if (options.coarseIterations > 0)

@@ -32,8 +32,8 @@ MapPhase finePhase(PhaseKind kind,
   const std::vector<double>& bounds = {});
 
 /// The coarse and fine phases that run (iteration cap > 0), in order.
-std::vector<MapPhase> distortionPhases(
-  const SurfaceMapOptions& options, const ScheduleContext& context);
+std::vector<MapPhase> distortionPhases(const SurfaceMapOptions& options,
+  const ScheduleContext& context);
 
 /// The iterations the schedule is expected to run (for progress): every
 /// planned phase and the first refinement round, which nearly always runs.

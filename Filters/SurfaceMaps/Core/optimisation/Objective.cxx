@@ -119,8 +119,9 @@ double Objective::assembleGradient(const SpherePoints& points, Eigen::VectorXd& 
   return total;
 }
 
-void Objective::evaluateDerivatives(
-  const SpherePoints& points, double projectionEps, bool withHessian)
+void Objective::evaluateDerivatives(const SpherePoints& points,
+  double projectionEps,
+  bool withHessian)
 {
   for (Entry& entry : this->Terms)
   {
@@ -153,14 +154,23 @@ void Objective::buildPattern(const SpherePoints& points)
   // column) as 64-bit keys column * blocks + row, sorted column-major (four
   // times fewer keys than single entries), then lay out the entries.
   const int nvars = points.numberOfVariables();
-  const std::int64_t nb = nvars / 2;
+  const std::vector<std::int64_t> keys = this->blockKeys(points);
+  const std::vector<int> blockStart = this->layOutPattern(nvars, keys);
+  this->buildScatter(points, keys, blockStart);
+  this->PatternVariables = nvars;
+  this->PatternValid = true;
+}
+
+std::vector<std::int64_t> Objective::blockKeys(const SpherePoints& points) const
+{
+  const std::int64_t nb = points.numberOfVariables() / 2;
   std::vector<std::int64_t> keys;
   std::vector<int> idx;
   for (std::int64_t b = 0; b < nb; ++b)
   {
     keys.push_back(b * nb + b); // keep the diagonal
   }
-  for (Entry& entry : this->Terms)
+  for (const Entry& entry : this->Terms)
   {
     const int ne = entry.Term->numberOfElements();
     const int nv = entry.Term->pointsPerElement();
@@ -185,6 +195,12 @@ void Objective::buildPattern(const SpherePoints& points)
   std::sort(keys.begin(), keys.end());
   keys.erase(std::unique(keys.begin(), keys.end()), keys.end());
 
+  return keys;
+}
+
+std::vector<int> Objective::layOutPattern(int nvars, const std::vector<std::int64_t>& keys)
+{
+  const std::int64_t nb = nvars / 2;
   // Block column B holds blocks rows r_0 < ... < r_k = B (the diagonal last):
   // variable column 2B has rows 2 r_j, 2 r_j + 1 (j < k) and 2B; column
   // 2B + 1 has the same plus 2B + 1.
@@ -231,6 +247,16 @@ void Objective::buildPattern(const SpherePoints& points)
     std::equal(outer, outer + nvars + 1, previous.outerIndexPtr()) &&
     std::equal(inner, inner + nnz, previous.innerIndexPtr());
 
+  return blockStart;
+}
+
+void Objective::buildScatter(const SpherePoints& points,
+  const std::vector<std::int64_t>& keys,
+  const std::vector<int>& blockStart)
+{
+  const std::int64_t nb = points.numberOfVariables() / 2;
+  const int* outer = this->Pattern.outerIndexPtr();
+  std::vector<int> idx;
   // Position of block (row, column) among its block column's blocks.
   auto blockIndex = [&](int row, int column)
   {
@@ -277,8 +303,6 @@ void Objective::buildPattern(const SpherePoints& points)
       }
     }
   }
-  this->PatternVariables = nvars;
-  this->PatternValid = true;
 }
 
 double Objective::hessian(const SpherePoints& points,

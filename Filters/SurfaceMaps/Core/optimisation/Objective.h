@@ -9,6 +9,7 @@
 #include <Eigen/SparseCore>
 
 #include <array>
+#include <cstdint>
 #include <limits>
 #include <memory>
 #include <string>
@@ -187,7 +188,8 @@ public:
       return;
     }
     const int ne = this->numberOfElements();
-#pragma omp parallel for schedule(static) if (ne > ElementTerm<NV, Energy>::ParallelDerivativeThreshold)
+#pragma omp parallel for schedule(                                                                 \
+  static) if (ne > ElementTerm <NV, Energy>::ParallelDerivativeThreshold)
     for (int e = 0; e < ne; ++e)
     {
       Eigen::Map<Eigen::Matrix<double, N, 1>> gradient(gradients + static_cast<std::size_t>(e) * N);
@@ -198,7 +200,10 @@ public:
   }
 
 protected:
-  virtual bool useGaussNewton() const { return true; }
+  virtual bool useGaussNewton() const
+  {
+    return true;
+  }
   /// Element e's value; its gradient and Gauss-Newton Hessian into the maps.
   virtual double gaussNewton(const SpherePoints& points,
     int e,
@@ -253,6 +258,16 @@ private:
     std::vector<int> Scatter;
   };
   void buildPattern(const SpherePoints& points);
+  /// The upper-triangle 2x2 blocks of the Hessian (diagonal included) as
+  /// sorted keys column * blocks + row.
+  std::vector<std::int64_t> blockKeys(const SpherePoints& points) const;
+  /// Lays out Pattern from the block keys (remembering whether it changed);
+  /// returns the first key of each block column.
+  std::vector<int> layOutPattern(int nvars, const std::vector<std::int64_t>& keys);
+  /// Each element's Hessian entries' positions in Pattern's value array.
+  void buildScatter(const SpherePoints& points,
+    const std::vector<std::int64_t>& keys,
+    const std::vector<int>& blockStart);
   double assembleGradient(const SpherePoints& points, Eigen::VectorXd& gradient);
   void evaluateDerivatives(const SpherePoints& points, double projectionEps, bool withHessian);
 

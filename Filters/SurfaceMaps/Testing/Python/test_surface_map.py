@@ -162,3 +162,17 @@ def test_settings_round_trip_and_clamp():
     assert f.GetMappedInput() == 0
     f.SetTargetError(10.0)
     assert f.GetTargetError() == 1.0
+
+
+def test_settings_table_is_the_filters():
+    rows = surfacemaps.settings_table()
+    f = surfacemaps.vtkSurfaceMapFilter()
+    assert len(rows) == f.GetNumberOfSettings() >= 30
+    by_name = {row["name"]: row for row in rows}
+    assert by_name["PairMode"]["choices"] == ["star", "sequence", "cycle", "all"]
+    assert by_name["KeepLandmarks"]["type"] == "switch"
+    for row in rows:
+        assert getattr(f, "Get" + row["name"])() == row["default"], row["name"]
+        assert row["minimum"] <= row["default"] <= row["maximum"], row["name"]
+    with pytest.raises(TypeError):
+        surfacemaps.map_surfaces(["never_read.obj"], KinkRetries=1)  # removed setting

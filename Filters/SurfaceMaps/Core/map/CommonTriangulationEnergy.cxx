@@ -1,0 +1,307 @@
+// The energy of T (DESIGN.md section 1.3): local energies for remeshing, cached
+// face energies, and the objective of the Newton step.
+#include "map/CommonTriangulation.h"
+
+#include "energy/BarrierEnergy.h"
+#include "energy/BijectivityBarrier.h"
+#include "energy/LandmarkEnergy.h"
+#include "energy/MapDistortionEnergy.h"
+#include "energy/MeshQualityEnergy.h"
+#include "geometry/Predicates.h"
+#include "geometry/SphericalTriangulation.h"
+
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+
+namespace surfacemaps
+{
+
+namespace
+{
+constexpr double Infinity = std::numeric_limits<double>::infinity();
+
+int group(MapTerm term)
+{
+  return static_cast<int>(term);
+}
+} // namespace
+
+double CommonTriangulation::triangleEnergy(const MapVertex& a,
+  const MapVertex& b,
+  const MapVertex& c,
+  double length) const
+{
+  const MapEnergyWeights& w = this->weights;
+  double energy = 0.0;
+  for (int i = 0; i < this->numberOfInputs(); ++i)
+  {
+    if (w.barrier > 0.0)
+    {
+      const double barrier = orientationBarrier<double>(a.g[i], b.g[i], c.g[i]);
+      if (!std::isfinite(barrier))
+      {
+        return Infinity;
+      }
+      energy += w.barrier * barrier;
+    }
+    if (w.mesh > 0.0)
+    {
+      energy += w.mesh * meshQualityEnergy<double>(a.lifted[i], b.lifted[i], c.lifted[i], length);
+    }
+  }
+  if (w.map > 0.0)
+  {
+    for (const auto& pair : this->Pairs)
+    {
+      const int i = pair[0], j = pair[1];
+      energy += w.map *
+        mapDistortionEnergy<double>(
+          { a.lifted[i], b.lifted[i], c.lifted[i] }, { a.lifted[j], b.lifted[j], c.lifted[j] });
+    }
+  }
+  return std::isfinite(energy) ? energy : Infinity;
+}
+
+double CommonTriangulation::sampleEnergy(int i,
+  int s,
+  const MapVertex& a,
+  const MapVertex& b,
+  const MapVertex& c) const
+{
+  const ApproximationSamples& samples = this->Surfaces[i].samples;
+  const double d2 = squaredBaseDistance<double>(samples.spherePoints[s],
+    samples.positions[s],
+    { a.g[i], b.g[i], c.g[i] },
+    { a.lifted[i], b.lifted[i], c.lifted[i] });
+  return approximationEnergy<double>(
+    d2, this->weights.approximation * samples.weights[s], this->weights.bound(i));
+}
+
+std::vector<double> CommonTriangulation::baseDistances(int i) const
+{
+  const ApproximationSamples& samples = this->Surfaces[i].samples;
+  std::vector<double> distances(samples.positions.size(), Infinity);
+  for (auto f : this->Mesh.faces())
+  {
+    const std::vector<int>& inside = this->faceSamples(f, i);
+    if (inside.empty())
+    {
+      continue;
+    }
+    auto fv = this->Mesh.cfv_iter(f);
+    const MapVertex a = this->vertex(*fv);
+    const MapVertex b = this->vertex(*++fv);
+    const MapVertex c = this->vertex(*++fv);
+    for (int s : inside)
+    {
+      distances[s] = std::sqrt(squaredBaseDistance<double>(samples.spherePoints[s],
+        samples.positions[s],
+        { a.g[i], b.g[i], c.g[i] },
+        { a.lifted[i], b.lifted[i], c.lifted[i] }));
+    }
+  }
+  return distances;
+}
+
+bool CommonTriangulation::validTriangle(const MapVertex& a,
+  const MapVertex& b,
+  const MapVertex& c) const
+{
+  for (int i = 0; i < this->numberOfInputs(); ++i)
+  {
+    if (!(a.g[i].dot(b.g[i].cross(c.g[i])) > minDet) || orient3dOrigin(a.g[i], b.g[i], c.g[i]) <= 0)
+    {
+      return false;
+    }
+  }
+  return true;
+}
+
+double CommonTriangulation::localEnergy(const std::vector<MapVertex>& vertices,
+  const std::vector<std::array<int, 3>>& triangles,
+  const std::vector<double>& lengths,
+  const std::vector<std::vector<int>>& samples,
+  bool validate,
+  LocalAssignment* assignment,
+  std::vector<double>* perTriangle) const
+{
+  const int n = this->numberOfInputs();
+  double energy = 0.0;
+  if (perTriangle)
+  {
+    perTriangle->assign(triangles.size(), 0.0);
+  }
+  for (std::size_t t = 0; t < triangles.size(); ++t)
+  {
+    const MapVertex& a = vertices[triangles[t][0]];
+    const MapVertex& b = vertices[triangles[t][1]];
+    const MapVertex& c = vertices[triangles[t][2]];
+    if (validate && !this->validTriangle(a, b, c))
+    {
+      return Infinity;
+    }
+    const double e = this->triangleEnergy(a, b, c, lengths[t]);
+    energy += e;
+    if (perTriangle)
+    {
+      (*perTriangle)[t] += e;
+    }
+  }
+  if (assignment)
+  {
+    assignment->assign(n, {});
+  }
+  if (this->TrackSamples && !samples.empty())
+  {
+    for (int i = 0; i < n; ++i)
+    {
+      for (int s : samples[i])
+      {
+        const Eigen::Vector3d& q = this->Surfaces[i].samples.spherePoints[s];
+        int found = -1;
+        for (std::size_t t = 0; t < triangles.size() && found < 0; ++t)
+        {
+          const auto& tri = triangles[t];
+          if (rayMeetsTriangle(
+                vertices[tri[0]].g[i], vertices[tri[1]].g[i], vertices[tri[2]].g[i], q))
+          {
+            found = static_cast<int>(t);
+          }
+        }
+        if (found < 0)
+        {
+          return Infinity;
+        }
+        if (assignment)
+        {
+          (*assignment)[i].push_back(found);
+        }
+        if (this->weights.approximation > 0.0)
+        {
+          const auto& tri = triangles[found];
+          const double e =
+            this->sampleEnergy(i, s, vertices[tri[0]], vertices[tri[1]], vertices[tri[2]]);
+          energy += e;
+          if (perTriangle)
+          {
+            (*perTriangle)[found] += e;
+          }
+        }
+      }
+    }
+  }
+  return std::isfinite(energy) ? energy : Infinity;
+}
+
+void CommonTriangulation::updateFaceEnergies()
+{
+  const int n = this->numberOfInputs();
+  this->forEachFace(
+    [this, n](OpenMesh::FaceHandle f, const MapVertex& a, const MapVertex& b, const MapVertex& c)
+    {
+      double energy = this->triangleEnergy(a, b, c, this->targetLength(f));
+      if (this->TrackSamples && this->weights.approximation > 0.0)
+      {
+        for (int i = 0; i < n; ++i)
+        {
+          for (int s : this->faceSamples(f, i))
+          {
+            energy += this->sampleEnergy(i, s, a, b, c);
+          }
+        }
+      }
+      this->Mesh.property(this->Energy, f) = energy;
+    });
+  this->FaceEnergiesValid = true;
+}
+
+void CommonTriangulation::buildObjective(const Snapshot& s,
+  const std::vector<std::map<int, Eigen::Vector3d>>& landmarkTargets,
+  Objective& objective) const
+{
+  objective.clear();
+  const MapEnergyWeights& w = this->weights;
+  const int nv = s.vertices;
+  for (int i = 0; i < this->numberOfInputs(); ++i)
+  {
+    if (w.barrier > 0.0)
+    {
+      BarrierEnergy barrier;
+      barrier.triangles = s.triangles;
+      barrier.offset = i * nv;
+      if (w.exactBarrierHessian)
+      {
+        objective.addTerm(
+          std::make_shared<ElementTerm<3, BarrierEnergy>>("barrier", std::move(barrier)),
+          w.barrier,
+          group(MapTerm::Barrier));
+      }
+      else
+      {
+        objective.addTerm(std::make_shared<BijectivityBarrierTerm>(std::move(barrier)),
+          w.barrier,
+          group(MapTerm::Barrier));
+      }
+    }
+    if (w.mesh > 0.0)
+    {
+      MeshQualityEnergy mesh{ &s.triangles, &s.lifts, &s.lengths, i * nv };
+      objective.addTerm(std::make_shared<ElementTerm<3, MeshQualityEnergy>>("mesh", mesh),
+        w.mesh,
+        group(MapTerm::MeshQuality));
+    }
+    if (w.approximation > 0.0 && this->TrackSamples)
+    {
+      ApproximationEnergy approximation;
+      approximation.samples = &this->Surfaces[i].samples;
+      approximation.sampleTriangle = &s.sampleTriangle[i];
+      approximation.triangles = &s.triangles;
+      approximation.lifts = &s.lifts;
+      approximation.offset = i * nv;
+      approximation.bound = w.bound(i);
+      objective.addTerm(std::make_shared<ApproximationTerm>(approximation),
+        w.approximation,
+        group(MapTerm::Approximation));
+    }
+    if (w.landmark > 0.0 && i < static_cast<int>(landmarkTargets.size()))
+    {
+      LandmarkEnergy landmarks;
+      for (auto v : this->Mesh.vertices())
+      {
+        const auto it = landmarkTargets[i].find(this->Mesh.property(this->Landmark, v));
+        if (it != landmarkTargets[i].end())
+        {
+          landmarks.points_.push_back(i * nv + v.idx());
+          landmarks.targets.push_back(it->second);
+        }
+      }
+      objective.addTerm(
+        std::make_shared<ElementTerm<1, LandmarkEnergy>>("landmarks", std::move(landmarks)),
+        w.landmark,
+        group(MapTerm::Landmarks));
+    }
+  }
+  if (w.map > 0.0)
+  {
+    for (const auto& pair : this->Pairs)
+    {
+      MapDistortionEnergy map{ &s.triangles, &s.lifts, pair[0] * nv, pair[1] * nv };
+      objective.addTerm(std::make_shared<ElementTerm<6, MapDistortionEnergy>>("map", map),
+        w.map,
+        group(MapTerm::Distortion));
+    }
+  }
+}
+
+double CommonTriangulation::totalEnergy()
+{
+  Snapshot s;
+  SpherePoints points;
+  this->snapshot(s, points, false);
+  Objective objective;
+  this->buildObjective(s, {}, objective);
+  return objective.value(points);
+}
+
+} // namespace surfacemaps
