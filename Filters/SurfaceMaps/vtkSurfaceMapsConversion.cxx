@@ -9,9 +9,9 @@
 #include "vtkDoubleArray.h"
 #include "vtkFieldData.h"
 #include "vtkIdTypeArray.h"
+#include "vtkLogger.h"
 #include "vtkPointData.h"
 #include "vtkPoints.h"
-#include "vtkLogger.h"
 #include "vtkPolyData.h"
 #include "vtkStringArray.h"
 
@@ -125,13 +125,13 @@ vtkSmartPointer<vtkPolyData> vtkSurfaceMapsConversion::ToPolyData(
   return output;
 }
 
-surfacemaps::SurfaceMesh vtkSurfaceMapsConversion::ToSurfaceMesh(vtkPolyData* input)
+surfacemaps::HalfedgeMesh vtkSurfaceMapsConversion::ToHalfedgeMesh(vtkPolyData* input)
 {
-  return surfacemaps::toSurfaceMesh(ToPolygonMesh(input));
+  return surfacemaps::toHalfedgeMesh(ToPolygonMesh(input));
 }
 
 vtkSmartPointer<vtkPolyData> vtkSurfaceMapsConversion::ToPolyData(
-  const surfacemaps::SurfaceMesh& mesh)
+  const surfacemaps::HalfedgeMesh& mesh)
 {
   return ToPolyData(surfacemaps::toPolygonMesh(mesh));
 }

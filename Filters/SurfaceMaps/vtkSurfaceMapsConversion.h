@@ -11,8 +11,8 @@
 #define vtkSurfaceMapsConversion_h
 
 #include "base/Log.h"
+#include "mesh/HalfedgeMesh.h"
 #include "mesh/PolygonMesh.h"
-#include "mesh/SurfaceMesh.h"
 #include "mesh/SurfacePoint.h"
 
 #include "vtkSmartPointer.h"
@@ -33,8 +33,8 @@ public:
   static vtkSmartPointer<vtkPolyData> ToPolyData(const surfacemaps::PolygonMesh& mesh);
 
   /// Half-edge mesh of a valid triangle mesh; throws std::invalid_argument otherwise.
-  static surfacemaps::SurfaceMesh ToSurfaceMesh(vtkPolyData* input);
-  static vtkSmartPointer<vtkPolyData> ToPolyData(const surfacemaps::SurfaceMesh& mesh);
+  static surfacemaps::HalfedgeMesh ToHalfedgeMesh(vtkPolyData* input);
+  static vtkSmartPointer<vtkPolyData> ToPolyData(const surfacemaps::HalfedgeMesh& mesh);
 
   /// The "SpherePosition" point array (3 components, one per point); empty if
   /// absent or of the wrong shape.

@@ -1,6 +1,6 @@
 #include "embedding/Decimation.h"
 
-#include "mesh/SurfaceMesh.h"
+#include "mesh/HalfedgeMesh.h"
 
 #include <Eigen/Dense>
 
@@ -14,7 +14,7 @@ namespace surfacemaps
 namespace
 {
 
-using Mesh = SurfaceMesh;
+using Mesh = HalfedgeMesh;
 using Quadric = Eigen::Matrix4d;
 
 Eigen::Vector3d point(const Mesh& mesh, Mesh::VertexHandle v)
@@ -104,7 +104,7 @@ bool geometryOk(const Mesh& mesh, Mesh::HalfedgeHandle h, double minArea, double
 
 DecimationResult decimateToTetrahedron(const PolygonMesh& input, const DecimationOptions& options)
 {
-  Mesh mesh = toSurfaceMesh(input);
+  Mesh mesh = toHalfedgeMesh(input);
   DecimationResult result;
   result.triangles = input.triangles();
 

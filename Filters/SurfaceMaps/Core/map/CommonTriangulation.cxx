@@ -16,13 +16,13 @@ constexpr double Infinity = std::numeric_limits<double>::infinity();
 
 } // namespace
 
-CommonTriangulation::CommonTriangulation(std::vector<MapSurface>& surfaces,
+CommonTriangulation::CommonTriangulation(std::vector<PreparedInput>& surfaces,
   std::vector<std::array<int, 2>> pairs)
   : Surfaces(surfaces)
   , Pairs(std::move(pairs))
 {
   const int n = this->numberOfInputs();
-  for (const MapSurface& s : surfaces)
+  for (const PreparedInput& s : surfaces)
   {
     this->SurfaceNeighbours.push_back(triangleNeighbours(s.triangles));
   }
@@ -39,10 +39,10 @@ CommonTriangulation::CommonTriangulation(std::vector<MapSurface>& surfaces,
   this->Mesh.add_property(this->Length);
   this->Mesh.add_property(this->Energy);
 
-  const MapSurface& first = surfaces[0];
+  const PreparedInput& first = surfaces[0];
   for (const Eigen::Vector3d& p : first.points)
   {
-    this->Mesh.add_vertex(SurfaceMesh::Point(p[0], p[1], p[2]));
+    this->Mesh.add_vertex(HalfedgeMesh::Point(p[0], p[1], p[2]));
   }
   for (const auto& t : first.triangles)
   {
@@ -104,14 +104,14 @@ void CommonTriangulation::setVertex(OpenMesh::VertexHandle v, const MapVertex& d
   }
   this->Mesh.property(this->Landmark, v) = data.landmark;
   const Eigen::Vector3d& p = data.lifted[0];
-  this->Mesh.set_point(v, SurfaceMesh::Point(p[0], p[1], p[2]));
+  this->Mesh.set_point(v, HalfedgeMesh::Point(p[0], p[1], p[2]));
 }
 
 void CommonTriangulation::relocate(MapVertex& data) const
 {
   for (int i = 0; i < this->numberOfInputs(); ++i)
   {
-    const MapSurface& s = this->Surfaces[i];
+    const PreparedInput& s = this->Surfaces[i];
     const SphereLocation loc = walkOnSphere(
       data.g[i], data.liftTriangle[i], s.triangles, this->SurfaceNeighbours[i], s.sphere.data());
     data.liftTriangle[i] = loc.triangle;
@@ -178,7 +178,7 @@ double CommonTriangulation::targetLength(const MapVertex& a,
   double length = Infinity;
   for (int i = 0; i < this->numberOfInputs(); ++i)
   {
-    const MapSurface& s = this->Surfaces[i];
+    const PreparedInput& s = this->Surfaces[i];
     const Eigen::Vector3d centroid = (a.g[i] + b.g[i] + c.g[i]).normalized();
     const SphereLocation loc = walkOnSphere(
       centroid, a.liftTriangle[i], s.triangles, this->SurfaceNeighbours[i], s.sphere.data());

@@ -8,8 +8,8 @@
 #include "energy/ApproximationEnergy.h"
 #include "energy/LiftedPoint.h"
 #include "geometry/SphereLocator.h"
-#include "map/MapSurface.h"
-#include "mesh/SurfaceMesh.h"
+#include "map/PreparedInput.h"
+#include "mesh/HalfedgeMesh.h"
 #include "optimisation/Objective.h"
 #include "optimisation/SpherePoints.h"
 
@@ -73,14 +73,14 @@ class CommonTriangulation
 {
 public:
   /// T := copy of input 0 with g_i := f_0 for every input i.
-  CommonTriangulation(std::vector<MapSurface>& surfaces, std::vector<std::array<int, 2>> pairs);
+  CommonTriangulation(std::vector<PreparedInput>& surfaces, std::vector<std::array<int, 2>> pairs);
 
   int numberOfInputs() const { return static_cast<int>(this->Surfaces.size()); }
-  MapSurface& surface(int i) { return this->Surfaces[i]; }
-  const MapSurface& surface(int i) const { return this->Surfaces[i]; }
+  PreparedInput& surface(int i) { return this->Surfaces[i]; }
+  const PreparedInput& surface(int i) const { return this->Surfaces[i]; }
   const std::vector<std::array<int, 2>>& pairs() const { return this->Pairs; }
-  SurfaceMesh& mesh() { return this->Mesh; }
-  const SurfaceMesh& mesh() const { return this->Mesh; }
+  HalfedgeMesh& mesh() { return this->Mesh; }
+  const HalfedgeMesh& mesh() const { return this->Mesh; }
 
   const Eigen::Vector3d& g(OpenMesh::VertexHandle v, int i) const
   {
@@ -240,9 +240,9 @@ private:
     }
   }
 
-  std::vector<MapSurface>& Surfaces;
+  std::vector<PreparedInput>& Surfaces;
   std::vector<std::array<int, 2>> Pairs;
-  SurfaceMesh Mesh;
+  HalfedgeMesh Mesh;
   std::vector<OpenMesh::VPropHandleT<Eigen::Vector3d>> G;
   std::vector<OpenMesh::VPropHandleT<int>> LiftTriangle;
   OpenMesh::VPropHandleT<int> Landmark;

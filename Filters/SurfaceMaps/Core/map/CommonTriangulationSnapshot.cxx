@@ -100,7 +100,7 @@ bool CommonTriangulation::update(Snapshot& s, const SpherePoints& points) const
   for (long long k = 0; k < np; ++k)
   {
     const int i = static_cast<int>(k / nv);
-    const MapSurface& surface = this->Surfaces[i];
+    const PreparedInput& surface = this->Surfaces[i];
     try
     {
       const int t = walkOnSphere(positions[k],
@@ -159,7 +159,7 @@ void CommonTriangulation::writeBack(const Snapshot& s, const SpherePoints& point
       if (i == 0)
       {
         const Eigen::Vector3d p = (*s.lifts[k])(points.position(k));
-        this->Mesh.set_point(v, SurfaceMesh::Point(p[0], p[1], p[2]));
+        this->Mesh.set_point(v, HalfedgeMesh::Point(p[0], p[1], p[2]));
       }
     }
     if (this->TrackSamples)

@@ -35,13 +35,13 @@ struct DistortedTriangles
 /// growth: halved sizing). T is garbage-collected first, for its flat
 /// triangle list.
 DistortedTriangles markExactMapDistortion(CommonTriangulation& T,
-  const std::vector<MapSurface>& surfaces,
+  const std::vector<PreparedInput>& surfaces,
   const std::vector<std::array<int, 2>>& pairs,
   double threshold,
   double growth,
   std::vector<std::vector<double>>& factor)
 {
-  SurfaceMesh& mesh = T.mesh();
+  HalfedgeMesh& mesh = T.mesh();
   mesh.garbage_collection();
   const std::vector<std::array<int, 3>> triangles = faceTriangles(mesh);
   DistortedTriangles found;
@@ -105,7 +105,7 @@ DistortionRefinement::DistortionRefinement(const SurfaceMapOptions& options,
 }
 
 std::optional<MapPhase> DistortionRefinement::next(CommonTriangulation& T,
-  std::vector<MapSurface>& surfaces)
+  std::vector<PreparedInput>& surfaces)
 {
   const SurfaceMapOptions& options = this->Options;
   if (this->Context.pairs == 0 || options.fineIterations <= 0)
@@ -116,7 +116,7 @@ std::optional<MapPhase> DistortionRefinement::next(CommonTriangulation& T,
   {
     const int round = this->Round++;
     std::vector<std::vector<double>> factor;
-    for (const MapSurface& s : surfaces)
+    for (const PreparedInput& s : surfaces)
     {
       factor.emplace_back(s.points.size(), 1.0);
     }

@@ -32,7 +32,7 @@ public:
 
   /// Measures, refines the sizing and returns the phase to run next, or
   /// nothing when the refinement is over.
-  std::optional<MapPhase> next(CommonTriangulation& T, std::vector<MapSurface>& surfaces);
+  std::optional<MapPhase> next(CommonTriangulation& T, std::vector<PreparedInput>& surfaces);
 
 private:
   const SurfaceMapOptions& Options;

@@ -70,13 +70,13 @@ BoundViolations boundViolations(const CommonTriangulation& T,
 /// edge length squared, so by sqrt(margin / ratio), at least by 0.7 and at
 /// most by 0.25) so that the mesh-quality term asks for smaller triangles
 /// there, and weights those samples 4 times more in the soft term.
-void refineAround(std::vector<MapSurface>& surfaces,
+void refineAround(std::vector<PreparedInput>& surfaces,
   const BoundViolations& violations,
   double margin)
 {
   for (std::size_t i = 0; i < surfaces.size(); ++i)
   {
-    MapSurface& s = surfaces[i];
+    PreparedInput& s = surfaces[i];
     std::vector<double> factor(s.points.size(), 1.0);
     for (const auto& [sample, ratio] : violations.samples[i])
     {
@@ -92,12 +92,12 @@ void refineAround(std::vector<MapSurface>& surfaces,
 
 ErrorBound::ErrorBound(const SurfaceMapOptions& options,
   const ScheduleContext& context,
-  std::vector<MapSurface>& surfaces)
+  std::vector<PreparedInput>& surfaces)
   : Options(options)
   , Context(context)
   , Surfaces(surfaces)
 {
-  for (const MapSurface& s : surfaces)
+  for (const PreparedInput& s : surfaces)
   {
     this->Bounds.push_back(options.maxError * boundingBoxDiagonal(s.points));
     this->SampleWeights.push_back(s.samples.weights);
@@ -150,7 +150,7 @@ std::optional<MapPhase> ErrorBound::next(CommonTriangulation& T)
 }
 
 void certifyBaseDistances(const CommonTriangulation& T,
-  const std::vector<MapSurface>& surfaces,
+  const std::vector<PreparedInput>& surfaces,
   const std::vector<double>& bounds,
   std::vector<double>& largest,
   std::vector<double>& bound)

@@ -23,10 +23,10 @@ class ErrorBound
 {
 public:
   /// Every input vertex must be an approximation sample (see
-  /// prepareMapSurfaces). Sets the fine phase's sizing when no fine phase ran.
+  /// prepareInputs). Sets the fine phase's sizing when no fine phase ran.
   ErrorBound(const SurfaceMapOptions& options,
     const ScheduleContext& context,
-    std::vector<MapSurface>& surfaces);
+    std::vector<PreparedInput>& surfaces);
 
   /// The next phase to run, or nothing when the bound phase has run.
   std::optional<MapPhase> next(CommonTriangulation& T);
@@ -37,7 +37,7 @@ public:
 private:
   const SurfaceMapOptions& Options;
   ScheduleContext Context;
-  std::vector<MapSurface>& Surfaces;
+  std::vector<PreparedInput>& Surfaces;
   std::vector<double> Bounds;
   /// The samples' weights before the refinement boosted some.
   std::vector<std::vector<double>> SampleWeights;
@@ -50,7 +50,7 @@ private:
 /// input when one is not within. Per input: the largest distance and the
 /// bound, both in the input's own units (0 without bounds).
 void certifyBaseDistances(const CommonTriangulation& T,
-  const std::vector<MapSurface>& surfaces,
+  const std::vector<PreparedInput>& surfaces,
   const std::vector<double>& bounds,
   std::vector<double>& largest,
   std::vector<double>& bound);

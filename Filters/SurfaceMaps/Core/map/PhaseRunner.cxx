@@ -24,7 +24,7 @@ double secondsSince(Clock::time_point start)
 } // namespace
 
 PhaseRunner::PhaseRunner(CommonTriangulation& T,
-  std::vector<MapSurface>& surfaces,
+  std::vector<PreparedInput>& surfaces,
   const SurfaceMapOptions& options,
   std::vector<std::map<int, Eigen::Vector3d>> targets,
   int plannedIterations)
@@ -184,7 +184,7 @@ void PhaseRunner::reportProgress(const MapPhase& phase, int iteration, int verti
 int PhaseRunner::snapLandmarks()
 {
   int missed = 0;
-  SurfaceMesh& mesh = this->T.mesh();
+  HalfedgeMesh& mesh = this->T.mesh();
   for (auto v : mesh.vertices())
   {
     const int id = this->T.landmark(v);

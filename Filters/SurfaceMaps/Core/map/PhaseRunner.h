@@ -24,7 +24,7 @@ public:
   /// `targets`: landmark id -> target point on each input's sphere;
   /// `plannedIterations`: the whole schedule's, for the progress fraction.
   PhaseRunner(CommonTriangulation& T,
-    std::vector<MapSurface>& surfaces,
+    std::vector<PreparedInput>& surfaces,
     const SurfaceMapOptions& options,
     std::vector<std::map<int, Eigen::Vector3d>> targets,
     int plannedIterations);
@@ -46,7 +46,7 @@ private:
   void reportProgress(const MapPhase& phase, int iteration, int vertices, double energy);
 
   CommonTriangulation& T;
-  std::vector<MapSurface>& Surfaces;
+  std::vector<PreparedInput>& Surfaces;
   const SurfaceMapOptions& Options;
   std::vector<std::map<int, Eigen::Vector3d>> Targets;
   int PlannedIterations;

@@ -52,7 +52,7 @@ int localIndex(const CommonTriangulation& T, LocalEdit& edit, VertexHandle v)
 
 void addFace(const CommonTriangulation& T, LocalEdit& edit, FaceHandle f)
 {
-  const SurfaceMesh& mesh = T.mesh();
+  const HalfedgeMesh& mesh = T.mesh();
   std::array<int, 3> tri;
   int k = 0;
   for (auto v : mesh.fv_range(f))
@@ -147,7 +147,7 @@ struct EdgeStar
   VertexHandle u, v, x, y;
 };
 
-EdgeStar edgeStar(const SurfaceMesh& mesh, OpenMesh::HalfedgeHandle h)
+EdgeStar edgeStar(const HalfedgeMesh& mesh, OpenMesh::HalfedgeHandle h)
 {
   EdgeStar s;
   s.h = h;
@@ -162,7 +162,7 @@ EdgeStar edgeStar(const SurfaceMesh& mesh, OpenMesh::HalfedgeHandle h)
 // The link condition for collapsing u -> v in a closed triangle mesh: u and
 // v have exactly two common neighbours, x and y. (OpenMesh's own check tags
 // vertices and cannot run in parallel.)
-bool collapseKeepsManifold(const SurfaceMesh& mesh, const EdgeStar& s)
+bool collapseKeepsManifold(const HalfedgeMesh& mesh, const EdgeStar& s)
 {
   int common = 0;
   for (auto a : mesh.vv_range(s.u))
@@ -177,7 +177,7 @@ bool collapseKeepsManifold(const SurfaceMesh& mesh, const EdgeStar& s)
 
 bool buildSplit(const CommonTriangulation& T, OpenMesh::EdgeHandle e, LocalEdit& edit)
 {
-  const SurfaceMesh& mesh = T.mesh();
+  const HalfedgeMesh& mesh = T.mesh();
   if (mesh.status(e).deleted())
   {
     return false;
@@ -196,7 +196,7 @@ bool buildSplit(const CommonTriangulation& T, OpenMesh::EdgeHandle e, LocalEdit&
 
 bool buildCollapse(const CommonTriangulation& T, OpenMesh::HalfedgeHandle h, LocalEdit& edit)
 {
-  const SurfaceMesh& mesh = T.mesh();
+  const HalfedgeMesh& mesh = T.mesh();
   if (mesh.status(mesh.edge_handle(h)).deleted())
   {
     return false;
@@ -245,7 +245,7 @@ bool buildCollapse(const CommonTriangulation& T, OpenMesh::HalfedgeHandle h, Loc
 
 bool buildFlip(const CommonTriangulation& T, OpenMesh::EdgeHandle e, LocalEdit& edit)
 {
-  const SurfaceMesh& mesh = T.mesh();
+  const HalfedgeMesh& mesh = T.mesh();
   if (mesh.status(e).deleted() || !mesh.is_flip_ok(e))
   {
     return false;
@@ -267,7 +267,7 @@ bool buildFlip(const CommonTriangulation& T, OpenMesh::EdgeHandle e, LocalEdit& 
 /// After an edit: the faces' target lengths and samples from the local edit.
 void writeFaces(CommonTriangulation& T, const LocalEdit& edit, const std::vector<FaceHandle>& faces)
 {
-  const SurfaceMesh& mesh = T.mesh();
+  const HalfedgeMesh& mesh = T.mesh();
   for (FaceHandle f : faces)
   {
     std::array<VertexHandle, 3> corners;
@@ -353,7 +353,7 @@ bool worthApplying(const CommonTriangulation& T,
   return true;
 }
 
-std::vector<FaceHandle> facesAround(const SurfaceMesh& mesh, VertexHandle v)
+std::vector<FaceHandle> facesAround(const HalfedgeMesh& mesh, VertexHandle v)
 {
   std::vector<FaceHandle> faces;
   for (auto f : mesh.vf_range(v))
@@ -428,9 +428,9 @@ bool applySplit(CommonTriangulation& T, OpenMesh::EdgeHandle e, double minGain, 
   {
     return false;
   }
-  SurfaceMesh& mesh = T.mesh();
+  HalfedgeMesh& mesh = T.mesh();
   const Eigen::Vector3d& p = edit.moved.lifted[0];
-  const VertexHandle m = mesh.add_vertex(SurfaceMesh::Point(p[0], p[1], p[2]));
+  const VertexHandle m = mesh.add_vertex(HalfedgeMesh::Point(p[0], p[1], p[2]));
   mesh.split(e, m);
   T.setVertex(m, edit.moved);
   edit.handles.push_back(m);
@@ -448,7 +448,7 @@ bool applyCollapse(CommonTriangulation& T,
   {
     return false;
   }
-  SurfaceMesh& mesh = T.mesh();
+  HalfedgeMesh& mesh = T.mesh();
   const VertexHandle kept = mesh.to_vertex_handle(h);
   mesh.collapse(h);
   T.setVertex(kept, edit.moved);
@@ -463,7 +463,7 @@ bool applyFlip(CommonTriangulation& T, OpenMesh::EdgeHandle e, double minGain, d
   {
     return false;
   }
-  SurfaceMesh& mesh = T.mesh();
+  HalfedgeMesh& mesh = T.mesh();
   mesh.flip(e);
   writeFaces(T,
     edit,
@@ -475,7 +475,7 @@ RemeshingResult remesh(CommonTriangulation& T, const RemeshingOptions& options)
 {
   const auto start = std::chrono::steady_clock::now();
   RemeshingResult result;
-  SurfaceMesh& mesh = T.mesh();
+  HalfedgeMesh& mesh = T.mesh();
   T.updateFaceEnergies();
   auto allEdges = [&]()
   {

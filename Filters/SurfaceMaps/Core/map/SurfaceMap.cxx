@@ -3,9 +3,9 @@
 #include "map/CommonTriangulation.h"
 #include "map/DistortionRefinement.h"
 #include "map/ErrorBound.h"
-#include "map/MapSurface.h"
 #include "map/MapTransfer.h"
 #include "map/PhaseRunner.h"
+#include "map/PreparedInput.h"
 #include "map/Schedule.h"
 
 #include <algorithm>
@@ -24,12 +24,12 @@ namespace
 /// T certified on every sphere and lifted onto every input: the result's
 /// triangles, embeddings, certificates, lifts and landmark ids.
 void liftCommonTriangulation(CommonTriangulation& T,
-  const std::vector<MapSurface>& surfaces,
+  const std::vector<PreparedInput>& surfaces,
   const std::vector<MapInput>& inputs,
   SurfaceMapResult& result)
 {
   const int n = static_cast<int>(inputs.size());
-  SurfaceMesh& mesh = T.mesh();
+  HalfedgeMesh& mesh = T.mesh();
   mesh.garbage_collection();
   const int nv = static_cast<int>(mesh.n_vertices());
   result.triangles = faceTriangles(mesh);
@@ -37,7 +37,7 @@ void liftCommonTriangulation(CommonTriangulation& T,
   result.lifted.assign(n, std::vector<Eigen::Vector3d>(nv));
   result.sourcePoints.assign(n, std::vector<SurfacePoint>(nv));
   result.landmarks.assign(nv, -1);
-  for (const MapSurface& s : surfaces)
+  for (const PreparedInput& s : surfaces)
   {
     result.inputSpherePositions.push_back(s.sphere);
   }
@@ -91,7 +91,7 @@ double keptLandmarkError(const SurfaceMapResult& result,
 /// The exact map on input 0's vertices: f_0, then T's embedding 0 inverted
 /// (barycentric in T), T's embedding j, f_j inverted (MapTransfer.h).
 void mapFirstInput(const std::vector<MapInput>& inputs,
-  const std::vector<MapSurface>& surfaces,
+  const std::vector<PreparedInput>& surfaces,
   SurfaceMapResult& result)
 {
   const int n = static_cast<int>(inputs.size());
@@ -155,7 +155,7 @@ SurfaceMapResult computeSurfaceMap(const std::vector<MapInput>& inputs,
   }
   const std::vector<std::map<int, int>> landmarks = landmarkVertices(inputs);
   // Every input vertex is a sample under an error bound, which must hold for all.
-  std::vector<MapSurface> surfaces = prepareMapSurfaces(
+  std::vector<PreparedInput> surfaces = prepareInputs(
     inputs, landmarks, options.maxError > 0.0 ? 0 : options.approximationSamples, options.log);
   ScheduleContext context;
   context.inputs = static_cast<int>(inputs.size());

@@ -14,7 +14,7 @@ namespace surfacemaps
 /// Indexed polygon mesh with optional per-corner texture coordinates. This is
 /// what readers produce and what validation inspects; it may hold anything a
 /// file can contain (non-triangles, bad indices, non-manifold configurations).
-/// Once validated it is turned into a SurfaceMesh for the algorithms.
+/// Once validated it is turned into a HalfedgeMesh for the algorithms.
 struct PolygonMesh
 {
   std::vector<Eigen::Vector3d> points;

@@ -1,11 +1,11 @@
 // The surface map's energy terms: derivatives against finite differences.
-#include "energy/ApproximationEnergy.h"
-#include "map/CommonTriangulation.h"
 #include "FiniteDifferences.h"
-#include "energy/MapDistortionEnergy.h"
 #include "MapTestInputs.h"
+#include "energy/ApproximationEnergy.h"
+#include "energy/MapDistortionEnergy.h"
 #include "energy/MeshQualityEnergy.h"
-#include "map/MapSurface.h"
+#include "map/CommonTriangulation.h"
+#include "map/PreparedInput.h"
 #include "map/SurfaceMap.h"
 
 #include <gtest/gtest.h>
@@ -21,7 +21,7 @@ namespace
 {
 struct EnergyCase
 {
-  std::vector<MapSurface> surfaces;
+  std::vector<PreparedInput> surfaces;
   std::unique_ptr<CommonTriangulation> T;
   CommonTriangulation::Snapshot snapshot;
   SpherePoints points;
@@ -34,9 +34,9 @@ struct EnergyCase
     {
       setLandmarks(input, { { 0, 0, 1 }, { 1, 0, 0 } });
     }
-    this->surfaces = prepareMapSurfaces(
-      inputs, landmarkVertices(inputs), SurfaceMapOptions().approximationSamples);
-    for (MapSurface& s : this->surfaces)
+    this->surfaces =
+      prepareInputs(inputs, landmarkVertices(inputs), SurfaceMapOptions().approximationSamples);
+    for (PreparedInput& s : this->surfaces)
     {
       s.sizing.assign(s.points.size(), 0.3);
     }
@@ -121,8 +121,9 @@ TEST(MapEnergies, ApproximationGaussNewtonHessian)
   ASSERT_NE(term, nullptr);
   const int ne = term->numberOfElements();
   ASSERT_GT(ne, 10);
-  auto derivatives = [&](double projectionEps, std::vector<double>& v, std::vector<double>& g,
-                       std::vector<double>& h)
+  auto derivatives =
+    [&](
+      double projectionEps, std::vector<double>& v, std::vector<double>& g, std::vector<double>& h)
   {
     v.assign(ne, 0.0);
     g.assign(ne * 6, 0.0);
@@ -157,8 +158,9 @@ TEST(MapEnergies, ApproximationGaussNewtonHessian)
   for (int e = 0; e < ne; ++e)
   {
     const std::array<int, 3> idx = energy.points(e);
-    const std::array<Eigen::Vector3d, 3> p{ c.points.position(idx[0]), c.points.position(idx[1]),
-      c.points.position(idx[2]) };
+    const std::array<Eigen::Vector3d, 3> p{
+      c.points.position(idx[0]), c.points.position(idx[1]), c.points.position(idx[2])
+    };
     samples.positions[e] -= energy.residual<double>(e, p);
   }
   derivatives(-1.0, v0, g0, h0);

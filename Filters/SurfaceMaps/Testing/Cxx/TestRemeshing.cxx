@@ -2,8 +2,8 @@
 // the total energy by exactly its local gain and keeps every invariant.
 #include "MapTestInputs.h"
 #include "geometry/Predicates.h"
+#include "map/PreparedInput.h"
 #include "map/Remeshing.h"
-#include "map/MapSurface.h"
 #include "map/SurfaceMap.h"
 
 #include <gtest/gtest.h>
@@ -26,9 +26,9 @@ protected:
       icosphereInput(2, 0.4, { 1.5, 1.0, 0.7 }, 0.4) };
     setLandmarks(inputs[0], { { 0, 0, 1 } });
     setLandmarks(inputs[1], { { 0, 0, 1 } });
-    this->surfaces = prepareMapSurfaces(
-      inputs, landmarkVertices(inputs), SurfaceMapOptions().approximationSamples);
-    for (MapSurface& s : this->surfaces)
+    this->surfaces =
+      prepareInputs(inputs, landmarkVertices(inputs), SurfaceMapOptions().approximationSamples);
+    for (PreparedInput& s : this->surfaces)
     {
       s.sizing.assign(s.points.size(), 0.25);
     }
@@ -46,7 +46,7 @@ protected:
   /// exactly one face that contains it, landmarks kept.
   void expectInvariants()
   {
-    SurfaceMesh& mesh = this->T->mesh();
+    HalfedgeMesh& mesh = this->T->mesh();
     mesh.garbage_collection();
     long long boundary = 0;
     for (auto e : mesh.edges())
@@ -117,7 +117,7 @@ protected:
     return done;
   }
 
-  std::vector<MapSurface> surfaces;
+  std::vector<PreparedInput> surfaces;
   std::unique_ptr<CommonTriangulation> T;
 };
 } // namespace
@@ -155,7 +155,7 @@ TEST_F(RemeshingTest, FlipChangesTheEnergyByItsLocalGain)
 
 TEST_F(RemeshingTest, NoEditTouchesALandmarkEdgeOrJoinsTwoLandmarks)
 {
-  SurfaceMesh& mesh = this->T->mesh();
+  HalfedgeMesh& mesh = this->T->mesh();
   for (auto h : mesh.halfedges())
   {
     if (this->T->landmark(mesh.from_vertex_handle(h)) >= 0 ||

@@ -15,14 +15,14 @@
 
 using namespace surfacemaps;
 
-TEST(SurfaceMapsConversion, PolyDataToSurfaceMeshAndBack)
+TEST(SurfaceMapsConversion, PolyDataToHalfedgeMeshAndBack)
 {
   const PolygonMesh ico = makeIcosphere(2);
   vtkSmartPointer<vtkPolyData> poly = vtkSurfaceMapsConversion::ToPolyData(ico);
   ASSERT_EQ(poly->GetNumberOfPoints(), 162);
   ASSERT_EQ(poly->GetNumberOfPolys(), 320);
 
-  const SurfaceMesh mesh = vtkSurfaceMapsConversion::ToSurfaceMesh(poly);
+  const HalfedgeMesh mesh = vtkSurfaceMapsConversion::ToHalfedgeMesh(poly);
   EXPECT_EQ(mesh.n_vertices(), 162u);
   EXPECT_EQ(mesh.n_faces(), 320u);
 

@@ -8,7 +8,7 @@
 namespace surfacemaps
 {
 
-struct SurfaceMeshTraits : public OpenMesh::DefaultTraits
+struct HalfedgeMeshTraits : public OpenMesh::DefaultTraits
 {
   using Point = OpenMesh::Vec3d;
   using Normal = OpenMesh::Vec3d;
@@ -21,18 +21,18 @@ struct SurfaceMeshTraits : public OpenMesh::DefaultTraits
 
 /// Half-edge triangle mesh (OpenMesh) with double-precision points. Vertex i
 /// and face f keep the indices they had in the PolygonMesh they came from.
-using SurfaceMesh = OpenMesh::TriMesh_ArrayKernelT<SurfaceMeshTraits>;
+using HalfedgeMesh = OpenMesh::TriMesh_ArrayKernelT<HalfedgeMeshTraits>;
 
 /// Builds the half-edge mesh of a validated triangle mesh (see validateMesh).
 /// Throws std::invalid_argument when a face cannot be added (the mesh was not
 /// validated, or is not a manifold triangle mesh).
-SurfaceMesh toSurfaceMesh(const PolygonMesh& mesh);
+HalfedgeMesh toHalfedgeMesh(const PolygonMesh& mesh);
 
 /// The faces of a half-edge mesh as vertex-index triples, in face order
 /// (deleted faces skipped; after garbage collection entry f is face f).
-std::vector<std::array<int, 3>> faceTriangles(const SurfaceMesh& mesh);
+std::vector<std::array<int, 3>> faceTriangles(const HalfedgeMesh& mesh);
 
 /// Points and triangles of a half-edge mesh (no texture coordinates).
-PolygonMesh toPolygonMesh(const SurfaceMesh& mesh);
+PolygonMesh toPolygonMesh(const HalfedgeMesh& mesh);
 
 } // namespace surfacemaps

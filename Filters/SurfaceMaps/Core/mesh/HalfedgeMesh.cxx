@@ -1,4 +1,4 @@
-#include "mesh/SurfaceMesh.h"
+#include "mesh/HalfedgeMesh.h"
 
 #include <stdexcept>
 #include <string>
@@ -6,13 +6,13 @@
 namespace surfacemaps
 {
 
-SurfaceMesh toSurfaceMesh(const PolygonMesh& polygons)
+HalfedgeMesh toHalfedgeMesh(const PolygonMesh& polygons)
 {
-  SurfaceMesh mesh;
+  HalfedgeMesh mesh;
   mesh.reserve(polygons.points.size(), 3 * polygons.numberOfFaces() / 2, polygons.numberOfFaces());
   for (const Eigen::Vector3d& p : polygons.points)
   {
-    mesh.add_vertex(SurfaceMesh::Point(p.x(), p.y(), p.z()));
+    mesh.add_vertex(HalfedgeMesh::Point(p.x(), p.y(), p.z()));
   }
   for (std::size_t f = 0; f < polygons.numberOfFaces(); ++f)
   {
@@ -21,7 +21,7 @@ SurfaceMesh toSurfaceMesh(const PolygonMesh& polygons)
       throw std::invalid_argument("face " + std::to_string(f) + " is not a triangle");
     }
     const int* t = polygons.face(f);
-    const SurfaceMesh::FaceHandle fh =
+    const HalfedgeMesh::FaceHandle fh =
       mesh.add_face(mesh.vertex_handle(t[0]), mesh.vertex_handle(t[1]), mesh.vertex_handle(t[2]));
     if (!fh.is_valid())
     {
@@ -31,13 +31,13 @@ SurfaceMesh toSurfaceMesh(const PolygonMesh& polygons)
   return mesh;
 }
 
-PolygonMesh toPolygonMesh(const SurfaceMesh& mesh)
+PolygonMesh toPolygonMesh(const HalfedgeMesh& mesh)
 {
   PolygonMesh polygons;
   polygons.points.reserve(mesh.n_vertices());
   for (const auto vh : mesh.vertices())
   {
-    const SurfaceMesh::Point& p = mesh.point(vh);
+    const HalfedgeMesh::Point& p = mesh.point(vh);
     polygons.points.emplace_back(p[0], p[1], p[2]);
   }
   polygons.faceVertices.reserve(3 * mesh.n_faces());
@@ -48,7 +48,7 @@ PolygonMesh toPolygonMesh(const SurfaceMesh& mesh)
   return polygons;
 }
 
-std::vector<std::array<int, 3>> faceTriangles(const SurfaceMesh& mesh)
+std::vector<std::array<int, 3>> faceTriangles(const HalfedgeMesh& mesh)
 {
   std::vector<std::array<int, 3>> triangles;
   triangles.reserve(mesh.n_faces());

@@ -1,4 +1,4 @@
-#include "map/MapSurface.h"
+#include "map/PreparedInput.h"
 
 #include "geometry/Rotation.h"
 #include "geometry/Sizing.h"
@@ -14,7 +14,7 @@
 namespace surfacemaps
 {
 
-double MapSurface::sizingAt(int t, const std::array<double, 3>& w) const
+double PreparedInput::sizingAt(int t, const std::array<double, 3>& w) const
 {
   const auto& tri = this->triangles[t];
   return w[0] * this->sizing[tri[0]] + w[1] * this->sizing[tri[1]] + w[2] * this->sizing[tri[2]];
@@ -29,9 +29,9 @@ std::string inputName(int i)
 }
 
 /// Centres an input, scales it to unit area and builds what the energy needs.
-MapSurface prepareSurface(const MapInput& input, int index)
+PreparedInput prepareSurface(const MapInput& input, int index)
 {
-  MapSurface s;
+  PreparedInput s;
   s.triangles = input.mesh.triangles();
   const std::size_t nv = input.mesh.points.size();
   if (input.spherePositions.size() != nv)
@@ -91,7 +91,7 @@ MapSurface prepareSurface(const MapInput& input, int index)
 
 /// Approximation samples: every vertex, or an evenly strided subset of large
 /// inputs; weights = barycentric vertex areas normalised to sum 1.
-void buildSamples(MapSurface& s, int samples)
+void buildSamples(PreparedInput& s, int samples)
 {
   s.samples = ApproximationSamples();
   const std::size_t nv = s.points.size();
@@ -122,7 +122,7 @@ void buildSamples(MapSurface& s, int samples)
   }
 }
 
-void buildLifts(MapSurface& s)
+void buildLifts(PreparedInput& s)
 {
   s.lifts.resize(s.triangles.size());
   for (std::size_t t = 0; t < s.triangles.size(); ++t)
@@ -140,7 +140,7 @@ void buildLifts(MapSurface& s)
 
 /// Rotates each embedding onto input 0's through the landmarks (Kabsch),
 /// keeping the original where the rotated one does not certify.
-void alignEmbeddings(std::vector<MapSurface>& surfaces,
+void alignEmbeddings(std::vector<PreparedInput>& surfaces,
   const std::vector<std::map<int, int>>& ids,
   const Logger& log)
 {
@@ -215,19 +215,19 @@ std::vector<std::map<int, int>> landmarkVertices(const std::vector<MapInput>& in
   return ids;
 }
 
-std::vector<MapSurface> prepareMapSurfaces(const std::vector<MapInput>& inputs,
+std::vector<PreparedInput> prepareInputs(const std::vector<MapInput>& inputs,
   const std::vector<std::map<int, int>>& landmarks,
   int samples,
   const Logger& log)
 {
-  std::vector<MapSurface> surfaces;
+  std::vector<PreparedInput> surfaces;
   surfaces.reserve(inputs.size());
   for (std::size_t i = 0; i < inputs.size(); ++i)
   {
     surfaces.push_back(prepareSurface(inputs[i], static_cast<int>(i)));
   }
   alignEmbeddings(surfaces, landmarks, log);
-  for (MapSurface& s : surfaces)
+  for (PreparedInput& s : surfaces)
   {
     buildSamples(s, samples > 0 ? samples : std::numeric_limits<int>::max());
     buildLifts(s);
@@ -235,12 +235,12 @@ std::vector<MapSurface> prepareMapSurfaces(const std::vector<MapInput>& inputs,
   return surfaces;
 }
 
-void setCurvatureSizing(std::vector<MapSurface>& surfaces,
+void setCurvatureSizing(std::vector<PreparedInput>& surfaces,
   double eps,
   double minEdgeLength,
   double maxEdgeLength)
 {
-  for (MapSurface& s : surfaces)
+  for (PreparedInput& s : surfaces)
   {
     if (s.userSizing)
     {
@@ -254,7 +254,7 @@ void setCurvatureSizing(std::vector<MapSurface>& surfaces,
   }
 }
 
-void scaleSizingAround(MapSurface& s, const std::vector<double>& factor)
+void scaleSizingAround(PreparedInput& s, const std::vector<double>& factor)
 {
   std::vector<double> ring(factor);
   for (const auto& t : s.triangles)
@@ -271,7 +271,8 @@ void scaleSizingAround(MapSurface& s, const std::vector<double>& factor)
   }
 }
 
-std::vector<std::map<int, Eigen::Vector3d>> landmarkTargets(const std::vector<MapSurface>& surfaces)
+std::vector<std::map<int, Eigen::Vector3d>> landmarkTargets(
+  const std::vector<PreparedInput>& surfaces)
 {
   std::vector<std::map<int, Eigen::Vector3d>> targets(surfaces.size());
   for (std::size_t i = 0; i < surfaces.size(); ++i)

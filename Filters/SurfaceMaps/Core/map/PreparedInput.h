@@ -18,7 +18,7 @@ namespace surfacemaps
 {
 
 /// One input, centred and scaled to unit area, with its fixed embedding.
-struct MapSurface
+struct PreparedInput
 {
   std::vector<Eigen::Vector3d> points;
   std::vector<std::array<int, 3>> triangles;
@@ -49,7 +49,7 @@ struct MapSurface
 /// is (no insertion) while a CommonTriangulation uses it. Throws
 /// std::invalid_argument when an input's arrays do not fit its mesh, it has
 /// no area, or the landmark ids do not correspond.
-std::vector<MapSurface> prepareMapSurfaces(const std::vector<MapInput>& inputs,
+std::vector<PreparedInput> prepareInputs(const std::vector<MapInput>& inputs,
   const std::vector<std::map<int, int>>& landmarks,
   int samples,
   const Logger& log = Logger());
@@ -61,17 +61,17 @@ std::vector<std::map<int, int>> landmarkVertices(const std::vector<MapInput>& in
 /// Recomputes the curvature sizing of every surface without a user sizing
 /// for the approximation error eps (DESIGN.md section 1.7), edge lengths
 /// clamped to [minEdgeLength, maxEdgeLength].
-void setCurvatureSizing(std::vector<MapSurface>& surfaces,
+void setCurvatureSizing(std::vector<PreparedInput>& surfaces,
   double eps,
   double minEdgeLength,
   double maxEdgeLength);
 
 /// Multiplies each vertex's sizing by the smallest factor on its one-ring
 /// (factor: per vertex, 1 = unchanged).
-void scaleSizingAround(MapSurface& surface, const std::vector<double>& factor);
+void scaleSizingAround(PreparedInput& surface, const std::vector<double>& factor);
 
 /// Landmark id -> the landmark's point on each input's (aligned) sphere.
 std::vector<std::map<int, Eigen::Vector3d>> landmarkTargets(
-  const std::vector<MapSurface>& surfaces);
+  const std::vector<PreparedInput>& surfaces);
 
 } // namespace surfacemaps

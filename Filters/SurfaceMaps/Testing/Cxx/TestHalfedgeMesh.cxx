@@ -1,6 +1,6 @@
+#include "mesh/HalfedgeMesh.h"
 #include "mesh/MeshValidation.h"
 #include "mesh/Primitives.h"
-#include "mesh/SurfaceMesh.h"
 
 #include <gtest/gtest.h>
 
@@ -27,10 +27,10 @@ std::multiset<std::array<int, 3>> orientedTriangles(const PolygonMesh& m)
 }
 } // namespace
 
-TEST(SurfaceMesh, RoundTripKeepsIndicesAndOrientation)
+TEST(HalfedgeMesh, RoundTripKeepsIndicesAndOrientation)
 {
   const PolygonMesh ico = makeIcosphere(2);
-  const SurfaceMesh mesh = toSurfaceMesh(ico);
+  const HalfedgeMesh mesh = toHalfedgeMesh(ico);
   EXPECT_EQ(mesh.n_vertices(), ico.points.size());
   EXPECT_EQ(mesh.n_faces(), ico.numberOfFaces());
   EXPECT_EQ(mesh.n_edges(), 480u);
@@ -48,13 +48,13 @@ TEST(SurfaceMesh, RoundTripKeepsIndicesAndOrientation)
   EXPECT_TRUE(validateMesh(back).valid());
 }
 
-TEST(SurfaceMesh, RejectsNonManifoldInput)
+TEST(HalfedgeMesh, RejectsNonManifoldInput)
 {
   PolygonMesh m = makeTetrahedron();
   m.addFace({ 0, 1, 2 }); // the same oriented triangle twice
-  EXPECT_THROW(toSurfaceMesh(m), std::invalid_argument);
+  EXPECT_THROW(toHalfedgeMesh(m), std::invalid_argument);
   PolygonMesh quad;
   quad.points = { { 0, 0, 0 }, { 1, 0, 0 }, { 1, 1, 0 }, { 0, 1, 0 } };
   quad.addFace({ 0, 1, 2, 3 });
-  EXPECT_THROW(toSurfaceMesh(quad), std::invalid_argument);
+  EXPECT_THROW(toHalfedgeMesh(quad), std::invalid_argument);
 }
