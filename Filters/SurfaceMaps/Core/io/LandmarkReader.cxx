@@ -26,8 +26,9 @@ std::vector<int> parseLandmarks(const std::string& text, const std::string& name
     long long index;
     if (!parseInt(token, index) || index < 0 || index > std::numeric_limits<int>::max())
     {
-      throw InputError(name + ":" + std::to_string(scanner.lineNumber()) +
-        ": expected a 0-based vertex index, got '" + std::string(token) + "'");
+      failAtLine(name,
+        scanner.lineNumber(),
+        "expected a 0-based vertex index, got '" + std::string(token) + "'");
     }
     // The rest of a .vts line is the vertex position, which we do not need;
     // it must still be numbers, or this is not a landmark file.
@@ -36,8 +37,9 @@ std::vector<int> parseLandmarks(const std::string& text, const std::string& name
       double ignored;
       if (!parseDouble(token, ignored))
       {
-        throw InputError(name + ":" + std::to_string(scanner.lineNumber()) + ": unexpected '" +
-          std::string(token) + "' after the vertex index");
+        failAtLine(name,
+          scanner.lineNumber(),
+          "unexpected '" + std::string(token) + "' after the vertex index");
       }
     }
     indices.push_back(static_cast<int>(index));

@@ -11,12 +11,6 @@ namespace surfacemaps
 namespace
 {
 
-[[noreturn]] void fail(const std::string& name, const TextScanner& scanner, const std::string& what)
-{
-  std::string message = name + ":" + std::to_string(scanner.lineNumber()) + ": " + what;
-  throw InputError(message);
-}
-
 // Resolves a 1-based (or negative, relative) OBJ index against the `count`
 // entries defined so far; returns -1 if it refers to none of them.
 long long resolveIndex(long long index, std::size_t count)
@@ -32,149 +26,195 @@ long long resolveIndex(long long index, std::size_t count)
   return -1;
 }
 
+// Reads an OBJ file line by line. Indices are resolved as they come: OBJ
+// refers only to vertices and texture coordinates defined before.
+class ObjParser
+{
+public:
+  ObjParser(const std::string& text, const std::string& name)
+    : Name(name)
+    , Scanner(text)
+  {
+  }
+
+  PolygonMesh parse();
+
+private:
+  [[noreturn]] void fail(const std::string& what) const
+  {
+    failAtLine(this->Name, this->Scanner.lineNumber(), what);
+  }
+
+  int readNumbers(const char* what, double* values, int keep);
+  void readVertex();
+  void readTexCoord();
+  void readFace();
+  void readCorner(std::string_view token);
+  PolygonMesh finish();
+
+  const std::string& Name;
+  TextScanner Scanner;
+  PolygonMesh Mesh;
+  std::vector<Eigen::Vector2d> TexCoords;
+  std::vector<long long> CornerTex; // index into TexCoords per corner, -1 none
+  std::vector<int> Corners;
+  bool AnyTex = false;
+};
+
+PolygonMesh ObjParser::parse()
+{
+  while (this->Scanner.nextLine())
+  {
+    const std::string_view keyword = this->Scanner.nextToken();
+    if (keyword == "v")
+    {
+      this->readVertex();
+    }
+    else if (keyword == "vt")
+    {
+      this->readTexCoord();
+    }
+    else if (keyword == "f")
+    {
+      this->readFace();
+    }
+    else if (keyword == "l" || keyword == "p")
+    {
+      ++this->Mesh.nonPolygonCells;
+    }
+    // Empty lines, vn, vp, o, g, s, usemtl, mtllib and others carry nothing we use.
+  }
+  return this->finish();
+}
+
+// The rest of the line as numbers, the first `keep` of them into `values`;
+// returns how many there were.
+int ObjParser::readNumbers(const char* what, double* values, int keep)
+{
+  int n = 0;
+  for (std::string_view token = this->Scanner.nextToken(); !token.empty();
+       token = this->Scanner.nextToken())
+  {
+    double value;
+    if (!parseDouble(token, value))
+    {
+      this->fail(std::string("bad ") + what + " '" + std::string(token) + "'");
+    }
+    if (n < keep)
+    {
+      values[n] = value;
+    }
+    ++n;
+  }
+  return n;
+}
+
+void ObjParser::readVertex()
+{
+  double xyz[3];
+  const int n = this->readNumbers("vertex coordinate", xyz, 3);
+  // 3 coordinates, optionally w or an RGB colour.
+  if (n != 3 && n != 4 && n != 6 && n != 7)
+  {
+    this->fail("vertex has " + std::to_string(n) + " coordinates (3 expected)" +
+      (this->Scanner.truncatedHere() ? "; the file ends without a newline and looks truncated"
+                                     : ""));
+  }
+  this->Mesh.points.emplace_back(xyz[0], xyz[1], xyz[2]);
+}
+
+void ObjParser::readTexCoord()
+{
+  double uv[2] = { 0.0, 0.0 };
+  const int n = this->readNumbers("texture coordinate", uv, 2);
+  if (n < 1 || n > 3)
+  {
+    this->fail("texture coordinate has " + std::to_string(n) + " values");
+  }
+  this->TexCoords.emplace_back(uv[0], uv[1]);
+}
+
+void ObjParser::readFace()
+{
+  this->Corners.clear();
+  for (std::string_view token = this->Scanner.nextToken(); !token.empty();
+       token = this->Scanner.nextToken())
+  {
+    this->readCorner(token);
+  }
+  const std::size_t n = this->Corners.size();
+  if (n < 3)
+  {
+    std::string what =
+      "face has " + std::to_string(n) + (n == 1 ? " vertex" : " vertices") + " (at least 3 needed)";
+    if (this->Scanner.truncatedHere())
+    {
+      what += "; the file ends without a newline and looks truncated";
+    }
+    this->fail(what);
+  }
+  this->Mesh.addFace(this->Corners.begin(), this->Corners.end());
+}
+
+// One corner "v", "v/t", "v//n" or "v/t/n"; normals are ignored.
+void ObjParser::readCorner(std::string_view token)
+{
+  const std::size_t slash = token.find('/');
+  long long v;
+  if (!parseInt(token.substr(0, slash), v))
+  {
+    this->fail("bad face corner '" + std::string(token) + "'");
+  }
+  const long long vi = resolveIndex(v, this->Mesh.points.size());
+  if (vi < 0)
+  {
+    this->fail("face refers to vertex " + std::to_string(v) + ", but " +
+      std::to_string(this->Mesh.points.size()) + " vertices are defined before it");
+  }
+  long long ti = -1;
+  if (slash != std::string_view::npos)
+  {
+    std::string_view rest = token.substr(slash + 1);
+    const std::string_view tex = rest.substr(0, rest.find('/'));
+    if (!tex.empty())
+    {
+      long long t;
+      if (!parseInt(tex, t) || (ti = resolveIndex(t, this->TexCoords.size())) < 0)
+      {
+        this->fail("bad texture index in face corner '" + std::string(token) + "'");
+      }
+      this->AnyTex = true;
+    }
+  }
+  this->Corners.push_back(static_cast<int>(vi));
+  this->CornerTex.push_back(ti);
+}
+
+PolygonMesh ObjParser::finish()
+{
+  if (this->Scanner.endsWithoutNewline() && this->Mesh.numberOfFaces() == 0 &&
+    !this->Mesh.points.empty())
+  {
+    throw InputError(
+      this->Name + ": the file ends in the vertex list without faces; it looks truncated");
+  }
+  if (this->AnyTex)
+  {
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    this->Mesh.cornerTexCoords.reserve(this->CornerTex.size());
+    for (long long t : this->CornerTex)
+    {
+      this->Mesh.cornerTexCoords.push_back(t >= 0 ? this->TexCoords[t] : Eigen::Vector2d(nan, nan));
+    }
+  }
+  return std::move(this->Mesh);
+}
+
 } // namespace
 
 PolygonMesh parseObj(const std::string& text, const std::string& name)
 {
-  PolygonMesh mesh;
-  std::vector<Eigen::Vector2d> texCoords;
-  std::vector<long long> cornerTex; // index into texCoords per corner, -1 none
-  std::vector<int> corners;
-  bool anyTex = false;
-
-  TextScanner scanner(text);
-  while (scanner.nextLine())
-  {
-    const std::string_view keyword = scanner.nextToken();
-    if (keyword.empty())
-    {
-      continue;
-    }
-    if (keyword == "v")
-    {
-      double xyz[3];
-      int n = 0;
-      for (std::string_view token = scanner.nextToken(); !token.empty();
-           token = scanner.nextToken())
-      {
-        double value;
-        if (!parseDouble(token, value))
-        {
-          fail(name, scanner, "bad vertex coordinate '" + std::string(token) + "'");
-        }
-        if (n < 3)
-        {
-          xyz[n] = value;
-        }
-        ++n;
-      }
-      // 3 coordinates, optionally w or an RGB colour.
-      if (n != 3 && n != 4 && n != 6 && n != 7)
-      {
-        fail(name,
-          scanner,
-          "vertex has " + std::to_string(n) + " coordinates (3 expected)" +
-            (scanner.truncatedHere() ? "; the file ends without a newline and looks truncated"
-                                     : ""));
-      }
-      mesh.points.emplace_back(xyz[0], xyz[1], xyz[2]);
-    }
-    else if (keyword == "vt")
-    {
-      double uv[2] = { 0.0, 0.0 };
-      int n = 0;
-      for (std::string_view token = scanner.nextToken(); !token.empty();
-           token = scanner.nextToken())
-      {
-        double value;
-        if (!parseDouble(token, value))
-        {
-          fail(name, scanner, "bad texture coordinate '" + std::string(token) + "'");
-        }
-        if (n < 2)
-        {
-          uv[n] = value;
-        }
-        ++n;
-      }
-      if (n < 1 || n > 3)
-      {
-        fail(name, scanner, "texture coordinate has " + std::to_string(n) + " values");
-      }
-      texCoords.emplace_back(uv[0], uv[1]);
-    }
-    else if (keyword == "f")
-    {
-      corners.clear();
-      for (std::string_view token = scanner.nextToken(); !token.empty();
-           token = scanner.nextToken())
-      {
-        const std::size_t slash = token.find('/');
-        long long v;
-        if (!parseInt(token.substr(0, slash), v))
-        {
-          fail(name, scanner, "bad face corner '" + std::string(token) + "'");
-        }
-        const long long vi = resolveIndex(v, mesh.points.size());
-        if (vi < 0)
-        {
-          fail(name,
-            scanner,
-            "face refers to vertex " + std::to_string(v) + ", but " +
-              std::to_string(mesh.points.size()) + " vertices are defined before it");
-        }
-        long long ti = -1;
-        if (slash != std::string_view::npos)
-        {
-          std::string_view rest = token.substr(slash + 1);
-          const std::string_view tex = rest.substr(0, rest.find('/'));
-          if (!tex.empty())
-          {
-            long long t;
-            if (!parseInt(tex, t) || (ti = resolveIndex(t, texCoords.size())) < 0)
-            {
-              fail(name, scanner, "bad texture index in face corner '" + std::string(token) + "'");
-            }
-            anyTex = true;
-          }
-        }
-        corners.push_back(static_cast<int>(vi));
-        cornerTex.push_back(ti);
-      }
-      if (corners.size() < 3)
-      {
-        std::string what = "face has " + std::to_string(corners.size()) +
-          (corners.size() == 1 ? " vertex" : " vertices") + " (at least 3 needed)";
-        if (scanner.truncatedHere())
-        {
-          what += "; the file ends without a newline and looks truncated";
-        }
-        fail(name, scanner, what);
-      }
-      mesh.addFace(corners.begin(), corners.end());
-    }
-    else if (keyword == "l" || keyword == "p")
-    {
-      ++mesh.nonPolygonCells;
-    }
-    // vn, vp, o, g, s, usemtl, mtllib and others carry nothing we use.
-  }
-
-  if (scanner.endsWithoutNewline() && mesh.numberOfFaces() == 0 && !mesh.points.empty())
-  {
-    throw InputError(name + ": the file ends in the vertex list without faces; it looks truncated");
-  }
-
-  if (anyTex)
-  {
-    const double nan = std::numeric_limits<double>::quiet_NaN();
-    mesh.cornerTexCoords.reserve(cornerTex.size());
-    for (long long t : cornerTex)
-    {
-      mesh.cornerTexCoords.push_back(t >= 0 ? texCoords[t] : Eigen::Vector2d(nan, nan));
-    }
-  }
-  return mesh;
+  return ObjParser(text, name).parse();
 }
 
 PolygonMesh readObj(const std::string& path)

@@ -11,64 +11,88 @@ namespace surfacemaps
 namespace
 {
 
-[[noreturn]] void fail(const std::string& name, const TextScanner& scanner, const std::string& what)
+// Reads the sections of an OFF file in order: header keyword, counts,
+// vertices, faces. Each step leaves the scanner where the next one starts.
+class OffParser
 {
-  throw InputError(name + ":" + std::to_string(scanner.lineNumber()) + ": " + what);
-}
-
-// Next line that has a token; returns its first token (empty at end of text).
-std::string_view firstTokenOfNextLine(TextScanner& scanner)
-{
-  while (scanner.nextLine())
+public:
+  OffParser(const std::string& text, const std::string& name)
+    : Name(name)
+    , Scanner(text)
   {
-    std::string_view token = scanner.nextToken();
-    if (!token.empty())
-    {
-      return token;
-    }
   }
-  return {};
-}
 
-} // namespace
+  PolygonMesh parse()
+  {
+    this->readCounts(this->readHeader());
+    this->Mesh.points.reserve(static_cast<std::size_t>(this->NumberOfVertices));
+    for (long long v = 0; v < this->NumberOfVertices; ++v)
+    {
+      this->readVertex(v);
+    }
+    for (long long f = 0; f < this->NumberOfFaces; ++f)
+    {
+      this->readFace(f);
+    }
+    return std::move(this->Mesh);
+  }
 
-PolygonMesh parseOff(const std::string& text, const std::string& name)
+private:
+  [[noreturn]] void fail(const std::string& what) const
+  {
+    failAtLine(this->Name, this->Scanner.lineNumber(), what);
+  }
+
+  std::string_view readHeader();
+  void readCounts(std::string_view token);
+  void readVertex(long long v);
+  void readFace(long long f);
+
+  const std::string& Name;
+  TextScanner Scanner;
+  PolygonMesh Mesh;
+  long long NumberOfVertices = 0;
+  long long NumberOfFaces = 0;
+  std::vector<int> Corners;
+};
+
+// The header keyword is optional; returns the first token of the counts.
+std::string_view OffParser::readHeader()
 {
-  TextScanner scanner(text);
-  std::string_view token = firstTokenOfNextLine(scanner);
+  std::string_view token = this->Scanner.firstTokenOfNextLine();
   if (token.empty())
   {
-    throw InputError(name + ": the file is empty");
+    throw InputError(this->Name + ": the file is empty");
   }
   const bool hasHeader = token.size() >= 3 && token.substr(token.size() - 3) == "OFF";
-  if (hasHeader)
-  {
-    if (token != "OFF" && token != "COFF" && token != "NOFF" && token != "CNOFF")
-    {
-      fail(name, scanner, "unsupported OFF variant '" + std::string(token) + "'");
-    }
-    if (!scanner.lineExhausted())
-    {
-      token = scanner.nextToken();
-      if (token == "BINARY")
-      {
-        fail(name, scanner, "binary OFF is not supported; convert the file to ASCII");
-      }
-    }
-    else
-    {
-      token = firstTokenOfNextLine(scanner);
-    }
-  }
-  else
+  if (!hasHeader)
   {
     long long probe;
     if (!parseInt(token, probe))
     {
-      fail(name, scanner, "not an OFF file: it starts with '" + std::string(token) + "'");
+      this->fail("not an OFF file: it starts with '" + std::string(token) + "'");
     }
+    return token;
   }
+  if (token != "OFF" && token != "COFF" && token != "NOFF" && token != "CNOFF")
+  {
+    this->fail("unsupported OFF variant '" + std::string(token) + "'");
+  }
+  if (this->Scanner.lineExhausted())
+  {
+    return this->Scanner.firstTokenOfNextLine();
+  }
+  token = this->Scanner.nextToken();
+  if (token == "BINARY")
+  {
+    this->fail("binary OFF is not supported; convert the file to ASCII");
+  }
+  return token;
+}
 
+// Vertex, face and (optional) edge counts, starting at `token`.
+void OffParser::readCounts(std::string_view token)
+{
   long long counts[3] = { 0, 0, 0 };
   for (int i = 0; i < 3; ++i)
   {
@@ -78,87 +102,85 @@ PolygonMesh parseOff(const std::string& text, const std::string& name)
     }
     if (!parseInt(token, counts[i]) || counts[i] < 0)
     {
-      fail(
-        name, scanner, "expected vertex, face and edge counts, got '" + std::string(token) + "'");
+      this->fail("expected vertex, face and edge counts, got '" + std::string(token) + "'");
     }
-    token = scanner.nextToken();
+    token = this->Scanner.nextToken();
   }
-  const long long nv = counts[0];
-  const long long nf = counts[1];
+  this->NumberOfVertices = counts[0];
+  this->NumberOfFaces = counts[1];
+}
 
-  PolygonMesh mesh;
-  mesh.points.reserve(static_cast<std::size_t>(nv));
-  for (long long v = 0; v < nv; ++v)
+// Vertex `v` of the declared count; anything after x y z is a colour or normal.
+void OffParser::readVertex(long long v)
+{
+  std::string_view token = this->Scanner.firstTokenOfNextLine();
+  if (token.empty())
   {
-    token = firstTokenOfNextLine(scanner);
+    throw InputError(this->Name + ": the header declares " +
+      std::to_string(this->NumberOfVertices) + " vertices, but the file ends after " +
+      std::to_string(v) + "; it looks truncated");
+  }
+  double xyz[3];
+  for (int k = 0; k < 3; ++k)
+  {
+    if (!parseDouble(token, xyz[k]))
+    {
+      this->fail(token.empty() ? "vertex has " + std::to_string(k) + " coordinates (3 expected)" +
+            (this->Scanner.truncatedHere() ? "; the file looks truncated" : "")
+                               : "bad vertex coordinate '" + std::string(token) + "'");
+    }
+    token = this->Scanner.nextToken();
+  }
+  this->Mesh.points.emplace_back(xyz[0], xyz[1], xyz[2]);
+}
+
+// Face `f` of the declared count; anything after its indices is a colour.
+void OffParser::readFace(long long f)
+{
+  std::string_view token = this->Scanner.firstTokenOfNextLine();
+  if (token.empty())
+  {
+    throw InputError(this->Name + ": the header declares " + std::to_string(this->NumberOfFaces) +
+      " faces, but the file ends after " + std::to_string(f) + "; it looks truncated");
+  }
+  long long n;
+  if (!parseInt(token, n) || n < 1)
+  {
+    this->fail("bad face vertex count '" + std::string(token) + "'");
+  }
+  this->Corners.clear();
+  for (long long k = 0; k < n; ++k)
+  {
+    token = this->Scanner.nextToken();
+    long long index;
     if (token.empty())
     {
-      throw InputError(name + ": the header declares " + std::to_string(nv) +
-        " vertices, but the file ends after " + std::to_string(v) + "; it looks truncated");
+      this->fail("face declares " + std::to_string(n) + " vertices but lists " + std::to_string(k) +
+        (this->Scanner.truncatedHere() ? "; the file looks truncated" : ""));
     }
-    double xyz[3];
-    for (int k = 0; k < 3; ++k)
+    if (!parseInt(token, index))
     {
-      if (!parseDouble(token, xyz[k]))
-      {
-        fail(name,
-          scanner,
-          token.empty() ? "vertex has " + std::to_string(k) + " coordinates (3 expected)" +
-              (scanner.truncatedHere() ? "; the file looks truncated" : "")
-                        : "bad vertex coordinate '" + std::string(token) + "'");
-      }
-      token = scanner.nextToken();
+      this->fail("bad vertex index '" + std::string(token) + "'");
     }
-    mesh.points.emplace_back(xyz[0], xyz[1], xyz[2]);
+    if (index < 0 || index >= this->NumberOfVertices)
+    {
+      this->fail("face refers to vertex " + std::to_string(index) + ", but the file has " +
+        std::to_string(this->NumberOfVertices) + " vertices");
+    }
+    this->Corners.push_back(static_cast<int>(index));
   }
-
-  std::vector<int> corners;
-  for (long long f = 0; f < nf; ++f)
+  if (n < 3)
   {
-    token = firstTokenOfNextLine(scanner);
-    if (token.empty())
-    {
-      throw InputError(name + ": the header declares " + std::to_string(nf) +
-        " faces, but the file ends after " + std::to_string(f) + "; it looks truncated");
-    }
-    long long n;
-    if (!parseInt(token, n) || n < 1)
-    {
-      fail(name, scanner, "bad face vertex count '" + std::string(token) + "'");
-    }
-    corners.clear();
-    for (long long k = 0; k < n; ++k)
-    {
-      token = scanner.nextToken();
-      long long index;
-      if (token.empty())
-      {
-        fail(name,
-          scanner,
-          "face declares " + std::to_string(n) + " vertices but lists " + std::to_string(k) +
-            (scanner.truncatedHere() ? "; the file looks truncated" : ""));
-      }
-      if (!parseInt(token, index))
-      {
-        fail(name, scanner, "bad vertex index '" + std::string(token) + "'");
-      }
-      if (index < 0 || index >= nv)
-      {
-        fail(name,
-          scanner,
-          "face refers to vertex " + std::to_string(index) + ", but the file has " +
-            std::to_string(nv) + " vertices");
-      }
-      corners.push_back(static_cast<int>(index));
-    }
-    if (n < 3)
-    {
-      fail(name, scanner, "face has " + std::to_string(n) + " vertices (at least 3 needed)");
-    }
-    mesh.addFace(corners.begin(), corners.end());
-    // Anything left on the line is a face colour.
+    this->fail("face has " + std::to_string(n) + " vertices (at least 3 needed)");
   }
-  return mesh;
+  this->Mesh.addFace(this->Corners.begin(), this->Corners.end());
+}
+
+} // namespace
+
+PolygonMesh parseOff(const std::string& text, const std::string& name)
+{
+  return OffParser(text, name).parse();
 }
 
 PolygonMesh readOff(const std::string& path)

@@ -4,6 +4,7 @@
 #include "io/TextFile.h"
 
 #include <algorithm>
+#include <array>
 #include <cstdint>
 #include <cstring>
 #include <limits>
@@ -94,6 +95,15 @@ enum class Format
   BinaryBig
 };
 
+// A binary value of type T in host byte order, as a double.
+template<typename T>
+double decode(const unsigned char* raw)
+{
+  T v;
+  std::memcpy(&v, raw, sizeof(T));
+  return v;
+}
+
 // Reads values of the body, ASCII or binary, with a clear message on running out.
 class BodyReader
 {
@@ -113,22 +123,31 @@ public:
   /// Reads one value; false at the end of the data.
   bool read(Type type, double& value)
   {
-    if (this->Fmt == Format::Ascii)
+    return this->Fmt == Format::Ascii ? this->readAscii(value) : this->readBinary(type, value);
+  }
+
+private:
+  // The next token, across lines: ASCII bodies put elements on lines freely.
+  bool readAscii(double& value)
+  {
+    std::string_view token = this->Scanner->nextToken();
+    if (token.empty())
     {
-      std::string_view token;
-      while ((token = this->Scanner->nextToken()).empty())
-      {
-        if (!this->Scanner->nextLine())
-        {
-          return false;
-        }
-      }
-      if (!parseDouble(token, value))
-      {
-        throw InputError(this->Name + ": bad number '" + std::string(token) + "' in the data");
-      }
-      return true;
+      token = this->Scanner->firstTokenOfNextLine();
     }
+    if (token.empty())
+    {
+      return false;
+    }
+    if (!parseDouble(token, value))
+    {
+      throw InputError(this->Name + ": bad number '" + std::string(token) + "' in the data");
+    }
+    return true;
+  }
+
+  bool readBinary(Type type, double& value)
+  {
     const int size = sizeOf(type);
     if (this->Position + size > this->Bytes.size())
     {
@@ -147,68 +166,34 @@ public:
     switch (type)
     {
       case Type::Int8:
-      {
-        std::int8_t v;
-        std::memcpy(&v, raw, 1);
-        value = v;
-        break;
-      }
+        value = decode<std::int8_t>(raw);
+        return true;
       case Type::UInt8:
-      {
-        std::uint8_t v;
-        std::memcpy(&v, raw, 1);
-        value = v;
-        break;
-      }
+        value = decode<std::uint8_t>(raw);
+        return true;
       case Type::Int16:
-      {
-        std::int16_t v;
-        std::memcpy(&v, raw, 2);
-        value = v;
-        break;
-      }
+        value = decode<std::int16_t>(raw);
+        return true;
       case Type::UInt16:
-      {
-        std::uint16_t v;
-        std::memcpy(&v, raw, 2);
-        value = v;
-        break;
-      }
+        value = decode<std::uint16_t>(raw);
+        return true;
       case Type::Int32:
-      {
-        std::int32_t v;
-        std::memcpy(&v, raw, 4);
-        value = v;
-        break;
-      }
+        value = decode<std::int32_t>(raw);
+        return true;
       case Type::UInt32:
-      {
-        std::uint32_t v;
-        std::memcpy(&v, raw, 4);
-        value = v;
-        break;
-      }
+        value = decode<std::uint32_t>(raw);
+        return true;
       case Type::Float32:
-      {
-        float v;
-        std::memcpy(&v, raw, 4);
-        value = v;
-        break;
-      }
+        value = decode<float>(raw);
+        return true;
       case Type::Float64:
-      {
-        double v;
-        std::memcpy(&v, raw, 8);
-        value = v;
-        break;
-      }
+        value = decode<double>(raw);
+        return true;
       default:
         return false;
     }
-    return true;
   }
 
-private:
   const std::string& Bytes;
   std::size_t Position;
   Format Fmt;
@@ -216,196 +201,309 @@ private:
   std::optional<TextScanner> Scanner;
 };
 
-} // namespace
+struct Header
+{
+  Format format = Format::Ascii;
+  std::vector<Element> elements;
+  /// Offset of the first byte after the end_header line.
+  std::size_t bodyStart = 0;
+};
 
-PolygonMesh parsePly(const std::string& bytes, const std::string& name)
+// Reads the header line by line; format, element and property lines matter.
+class HeaderParser
+{
+public:
+  explicit HeaderParser(const std::string& name)
+    : Name(name)
+  {
+  }
+
+  Header parse(const std::string& bytes);
+
+private:
+  [[noreturn]] void fail(const std::string& what) const
+  {
+    failAtLine(this->Name, this->LineNumber, what);
+  }
+
+  void readFormat(std::istringstream& words);
+  void readElement(std::istringstream& words, const std::string& line);
+  void readProperty(std::istringstream& words, const std::string& line);
+
+  const std::string& Name;
+  Header Result;
+  bool HaveFormat = false;
+  int LineNumber = 0;
+};
+
+Header HeaderParser::parse(const std::string& bytes)
 {
   if (bytes.compare(0, 3, "ply") != 0 || bytes.size() < 4 || (bytes[3] != '\n' && bytes[3] != '\r'))
   {
-    throw InputError(name + ": not a PLY file (it does not start with 'ply')");
+    throw InputError(this->Name + ": not a PLY file (it does not start with 'ply')");
   }
   const std::size_t headerEnd = bytes.find("end_header");
   if (headerEnd == std::string::npos)
   {
-    throw InputError(name + ": the PLY header has no end_header line; the file looks truncated");
+    throw InputError(
+      this->Name + ": the PLY header has no end_header line; the file looks truncated");
   }
-  std::size_t bodyStart = bytes.find('\n', headerEnd);
-  bodyStart = bodyStart == std::string::npos ? bytes.size() : bodyStart + 1;
+  const std::size_t newline = bytes.find('\n', headerEnd);
+  this->Result.bodyStart = newline == std::string::npos ? bytes.size() : newline + 1;
 
-  Format format = Format::Ascii;
-  bool haveFormat = false;
-  std::vector<Element> elements;
   std::istringstream header(bytes.substr(0, headerEnd));
   std::string line;
-  int lineNumber = 0;
   while (std::getline(header, line))
   {
-    ++lineNumber;
+    ++this->LineNumber;
     std::istringstream words(line);
     std::string keyword;
     words >> keyword;
-    auto fail = [&](const std::string& what)
-    { throw InputError(name + ":" + std::to_string(lineNumber) + ": " + what); };
     if (keyword == "format")
     {
-      std::string f;
-      words >> f;
-      if (f == "ascii")
-        format = Format::Ascii;
-      else if (f == "binary_little_endian")
-        format = Format::BinaryLittle;
-      else if (f == "binary_big_endian")
-        format = Format::BinaryBig;
-      else
-        fail("unknown PLY format '" + f + "'");
-      haveFormat = true;
+      this->readFormat(words);
     }
     else if (keyword == "element")
     {
-      Element e;
-      if (!(words >> e.name >> e.count) || e.count < 0)
-      {
-        fail("bad element declaration '" + line + "'");
-      }
-      elements.push_back(e);
+      this->readElement(words, line);
     }
     else if (keyword == "property")
     {
-      if (elements.empty())
-      {
-        fail("property before any element");
-      }
-      Property p;
-      std::string type;
-      words >> type;
-      if (type == "list")
-      {
-        std::string countType, itemType;
-        words >> countType >> itemType >> p.name;
-        p.isList = true;
-        p.countType = typeFromName(countType);
-        p.type = typeFromName(itemType);
-        if (p.countType == Type::Invalid || p.countType == Type::Float32 ||
-          p.countType == Type::Float64)
-        {
-          fail("bad list count type '" + countType + "'");
-        }
-      }
-      else
-      {
-        words >> p.name;
-        p.type = typeFromName(type);
-      }
-      if (p.type == Type::Invalid || p.name.empty())
-      {
-        fail("bad property declaration '" + line + "'");
-      }
-      elements.back().properties.push_back(p);
+      this->readProperty(words, line);
     }
     // ply, comment, obj_info: nothing to do.
   }
-  if (!haveFormat)
+  if (!this->HaveFormat)
   {
-    throw InputError(name + ": the PLY header has no format line");
+    throw InputError(this->Name + ": the PLY header has no format line");
+  }
+  return std::move(this->Result);
+}
+
+void HeaderParser::readFormat(std::istringstream& words)
+{
+  std::string f;
+  words >> f;
+  if (f == "ascii")
+    this->Result.format = Format::Ascii;
+  else if (f == "binary_little_endian")
+    this->Result.format = Format::BinaryLittle;
+  else if (f == "binary_big_endian")
+    this->Result.format = Format::BinaryBig;
+  else
+    this->fail("unknown PLY format '" + f + "'");
+  this->HaveFormat = true;
+}
+
+void HeaderParser::readElement(std::istringstream& words, const std::string& line)
+{
+  Element e;
+  if (!(words >> e.name >> e.count) || e.count < 0)
+  {
+    this->fail("bad element declaration '" + line + "'");
+  }
+  this->Result.elements.push_back(e);
+}
+
+void HeaderParser::readProperty(std::istringstream& words, const std::string& line)
+{
+  if (this->Result.elements.empty())
+  {
+    this->fail("property before any element");
+  }
+  Property p;
+  std::string type;
+  words >> type;
+  if (type == "list")
+  {
+    std::string countType, itemType;
+    words >> countType >> itemType >> p.name;
+    p.isList = true;
+    p.countType = typeFromName(countType);
+    p.type = typeFromName(itemType);
+    if (p.countType == Type::Invalid || p.countType == Type::Float32 ||
+      p.countType == Type::Float64)
+    {
+      this->fail("bad list count type '" + countType + "'");
+    }
+  }
+  else
+  {
+    words >> p.name;
+    p.type = typeFromName(type);
+  }
+  if (p.type == Type::Invalid || p.name.empty())
+  {
+    this->fail("bad property declaration '" + line + "'");
+  }
+  this->Result.elements.back().properties.push_back(p);
+}
+
+// Reads the body element by element, in header order, into the mesh: vertex
+// x, y, z; face vertex_indices (or vertex_index) and texcoord lists.
+class MeshBuilder
+{
+public:
+  MeshBuilder(const std::string& bytes, const Header& header, const std::string& name)
+    : Name(name)
+    , Body(bytes, header.bodyStart, header.format, name)
+  {
   }
 
-  PolygonMesh mesh;
-  std::vector<Eigen::Vector2d> texCoords;
-  bool anyTex = false;
-  BodyReader body(bytes, bodyStart, format, name);
-  std::vector<double> list;
-  for (const Element& e : elements)
+  void readElement(const Element& e);
+  PolygonMesh finish();
+
+private:
+  [[noreturn]] void truncated(const Element& e, long long i) const
   {
-    const bool isVertex = e.name == "vertex";
-    const bool isFace = e.name == "face";
-    int xyz[3] = { -1, -1, -1 };
-    for (std::size_t k = 0; k < e.properties.size(); ++k)
+    throw InputError(this->Name + ": the header declares " + std::to_string(e.count) + " " +
+      e.name + " elements, but the data ends in element " + std::to_string(i) +
+      "; the file looks truncated");
+  }
+
+  std::array<int, 3> coordinateProperties(const Element& e) const;
+  void readInstance(const Element& e, long long i, bool isFace, std::vector<double>& values);
+  void readList(const Element& e, long long i, const Property& p);
+  void addFace(long long i);
+
+  const std::string& Name;
+  BodyReader Body;
+  PolygonMesh Mesh;
+  std::vector<Eigen::Vector2d> TexCoords;
+  bool AnyTex = false;
+  std::vector<double> List;
+};
+
+void MeshBuilder::readElement(const Element& e)
+{
+  const bool isVertex = e.name == "vertex";
+  const bool isFace = e.name == "face";
+  const std::array<int, 3> xyz =
+    isVertex ? this->coordinateProperties(e) : std::array<int, 3>{ -1, -1, -1 };
+  std::vector<double> values(e.properties.size());
+  for (long long i = 0; i < e.count; ++i)
+  {
+    this->readInstance(e, i, isFace, values);
+    if (isVertex)
     {
-      const std::string& p = e.properties[k].name;
-      if (isVertex && (p == "x" || p == "y" || p == "z"))
-      {
-        xyz[p[0] - 'x'] = static_cast<int>(k);
-      }
+      this->Mesh.points.emplace_back(values[xyz[0]], values[xyz[1]], values[xyz[2]]);
     }
-    if (isVertex && (xyz[0] < 0 || xyz[1] < 0 || xyz[2] < 0))
+  }
+}
+
+// Positions of the x, y and z properties of the vertex element.
+std::array<int, 3> MeshBuilder::coordinateProperties(const Element& e) const
+{
+  std::array<int, 3> xyz{ -1, -1, -1 };
+  for (std::size_t k = 0; k < e.properties.size(); ++k)
+  {
+    const std::string& p = e.properties[k].name;
+    if (p == "x" || p == "y" || p == "z")
     {
-      throw InputError(name + ": the vertex element lacks an x, y or z property");
+      xyz[p[0] - 'x'] = static_cast<int>(k);
     }
-    std::vector<double> values(e.properties.size());
-    for (long long i = 0; i < e.count; ++i)
+  }
+  if (xyz[0] < 0 || xyz[1] < 0 || xyz[2] < 0)
+  {
+    throw InputError(this->Name + ": the vertex element lacks an x, y or z property");
+  }
+  return xyz;
+}
+
+// Instance `i` of element `e`: scalars into `values`, lists used as they come.
+void MeshBuilder::readInstance(const Element& e,
+  long long i,
+  bool isFace,
+  std::vector<double>& values)
+{
+  bool haveFace = false;
+  for (std::size_t k = 0; k < e.properties.size(); ++k)
+  {
+    const Property& p = e.properties[k];
+    if (!p.isList)
     {
-      bool haveFace = false;
-      for (std::size_t k = 0; k < e.properties.size(); ++k)
+      if (!this->Body.read(p.type, values[k]))
       {
-        const Property& p = e.properties[k];
-        auto truncated = [&]()
-        {
-          throw InputError(name + ": the header declares " + std::to_string(e.count) + " " +
-            e.name + " elements, but the data ends in element " + std::to_string(i) +
-            "; the file looks truncated");
-        };
-        if (!p.isList)
-        {
-          if (!body.read(p.type, values[k]))
-          {
-            truncated();
-          }
-          continue;
-        }
-        double countValue;
-        if (!body.read(p.countType, countValue))
-        {
-          truncated();
-        }
-        if (countValue < 0 || countValue > 1e6 || countValue != static_cast<long long>(countValue))
-        {
-          throw InputError(name + ": " + e.name + " " + std::to_string(i) + " has a list of " +
-            std::to_string(countValue) + " entries");
-        }
-        list.resize(static_cast<std::size_t>(countValue));
-        for (double& v : list)
-        {
-          if (!body.read(p.type, v))
-          {
-            truncated();
-          }
-        }
-        if (isFace && (p.name == "vertex_indices" || p.name == "vertex_index") && !haveFace)
-        {
-          haveFace = true;
-          for (double v : list)
-          {
-            if (v < 0 || v >= static_cast<double>(mesh.points.size()) ||
-              v != static_cast<long long>(v))
-            {
-              throw InputError(name + ": face " + std::to_string(i) + " refers to vertex " +
-                std::to_string(static_cast<long long>(v)) + ", but the file has " +
-                std::to_string(mesh.points.size()) + " vertices");
-            }
-            mesh.faceVertices.push_back(static_cast<int>(v));
-          }
-          mesh.faceOffsets.push_back(static_cast<int>(mesh.faceVertices.size()));
-        }
-        else if (isFace && p.name == "texcoord")
-        {
-          anyTex = true;
-          for (std::size_t c = 0; c + 1 < list.size(); c += 2)
-          {
-            texCoords.emplace_back(list[c], list[c + 1]);
-          }
-        }
+        this->truncated(e, i);
       }
-      if (isVertex)
+      continue;
+    }
+    this->readList(e, i, p);
+    if (isFace && (p.name == "vertex_indices" || p.name == "vertex_index") && !haveFace)
+    {
+      haveFace = true;
+      this->addFace(i);
+    }
+    else if (isFace && p.name == "texcoord")
+    {
+      this->AnyTex = true;
+      for (std::size_t c = 0; c + 1 < this->List.size(); c += 2)
       {
-        mesh.points.emplace_back(values[xyz[0]], values[xyz[1]], values[xyz[2]]);
+        this->TexCoords.emplace_back(this->List[c], this->List[c + 1]);
       }
     }
   }
-  if (anyTex && texCoords.size() == mesh.faceVertices.size())
+}
+
+void MeshBuilder::readList(const Element& e, long long i, const Property& p)
+{
+  double countValue;
+  if (!this->Body.read(p.countType, countValue))
   {
-    mesh.cornerTexCoords = std::move(texCoords);
+    this->truncated(e, i);
   }
-  return mesh;
+  if (countValue < 0 || countValue > 1e6 || countValue != static_cast<long long>(countValue))
+  {
+    throw InputError(this->Name + ": " + e.name + " " + std::to_string(i) + " has a list of " +
+      std::to_string(countValue) + " entries");
+  }
+  this->List.resize(static_cast<std::size_t>(countValue));
+  for (double& v : this->List)
+  {
+    if (!this->Body.read(p.type, v))
+    {
+      this->truncated(e, i);
+    }
+  }
+}
+
+// Face `i` from the list just read.
+void MeshBuilder::addFace(long long i)
+{
+  for (double v : this->List)
+  {
+    if (v < 0 || v >= static_cast<double>(this->Mesh.points.size()) ||
+      v != static_cast<long long>(v))
+    {
+      throw InputError(this->Name + ": face " + std::to_string(i) + " refers to vertex " +
+        std::to_string(static_cast<long long>(v)) + ", but the file has " +
+        std::to_string(this->Mesh.points.size()) + " vertices");
+    }
+    this->Mesh.faceVertices.push_back(static_cast<int>(v));
+  }
+  this->Mesh.faceOffsets.push_back(static_cast<int>(this->Mesh.faceVertices.size()));
+}
+
+PolygonMesh MeshBuilder::finish()
+{
+  if (this->AnyTex && this->TexCoords.size() == this->Mesh.faceVertices.size())
+  {
+    this->Mesh.cornerTexCoords = std::move(this->TexCoords);
+  }
+  return std::move(this->Mesh);
+}
+
+} // namespace
+
+PolygonMesh parsePly(const std::string& bytes, const std::string& name)
+{
+  const Header header = HeaderParser(name).parse(bytes);
+  MeshBuilder builder(bytes, header, name);
+  for (const Element& e : header.elements)
+  {
+    builder.readElement(e);
+  }
+  return builder.finish();
 }
 
 PolygonMesh readPly(const std::string& path)

@@ -49,6 +49,19 @@ bool TextScanner::nextLine()
   return true;
 }
 
+std::string_view TextScanner::firstTokenOfNextLine()
+{
+  while (this->nextLine())
+  {
+    const std::string_view token = this->nextToken();
+    if (!token.empty())
+    {
+      return token;
+    }
+  }
+  return {};
+}
+
 namespace
 {
 bool isSpace(char c)
@@ -83,6 +96,11 @@ bool TextScanner::lineExhausted()
   }
   this->Line.remove_prefix(i);
   return this->Line.empty();
+}
+
+void failAtLine(const std::string& name, int line, const std::string& what)
+{
+  throw InputError(name + ":" + std::to_string(line) + ": " + what);
 }
 
 namespace

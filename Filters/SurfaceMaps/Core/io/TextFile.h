@@ -23,6 +23,9 @@ public:
 
   /// Advances to the next line; false at the end of the text.
   bool nextLine();
+  /// Advances to the next line that has a token and returns that token; empty
+  /// at the end of the text.
+  std::string_view firstTokenOfNextLine();
   /// The next token of the current line, empty when the line is exhausted.
   std::string_view nextToken();
   /// True when the current line has no more tokens.
@@ -43,6 +46,10 @@ private:
   std::size_t Next = 0;
   int LineNumber = 0;
 };
+
+/// Throws InputError "name:line: what", the form of every located message of
+/// the text readers.
+[[noreturn]] void failAtLine(const std::string& name, int line, const std::string& what);
 
 /// Strict number parsing: the whole token must be a number.
 bool parseDouble(std::string_view token, double& value);

@@ -271,12 +271,10 @@ void measureTriangles(const PolygonMesh& mesh,
   }
 }
 
-void checkTopology(const PolygonMesh& mesh, MeshValidationResult& result)
+// The halfedges of all triangles, sorted so that those of one edge are adjacent.
+std::vector<DirectedEdge> sortedHalfedges(const PolygonMesh& mesh)
 {
-  MeshStatistics& stats = result.statistics;
-  const std::size_t nv = mesh.points.size();
   const std::size_t nf = mesh.numberOfFaces();
-
   std::vector<DirectedEdge> halfedges;
   halfedges.reserve(3 * nf);
   for (std::size_t f = 0; f < nf; ++f)
@@ -291,10 +289,20 @@ void checkTopology(const PolygonMesh& mesh, MeshValidationResult& result)
     halfedges.end(),
     [](const DirectedEdge& a, const DirectedEdge& b)
     { return std::make_pair(a.lo(), a.hi()) < std::make_pair(b.lo(), b.hi()); });
+  return halfedges;
+}
 
+/// Edge counts by kind, with the first edge of each defective kind.
+struct EdgeCensus
+{
   long long edges = 0, boundary = 0, nonManifold = 0, misoriented = 0;
   std::array<int, 2> firstBoundary{ -1, -1 }, firstNonManifold{ -1, -1 },
     firstMisoriented{ -1, -1 };
+};
+
+EdgeCensus countEdges(const std::vector<DirectedEdge>& halfedges)
+{
+  EdgeCensus c;
   for (std::size_t i = 0; i < halfedges.size();)
   {
     std::size_t j = i + 1;
@@ -304,110 +312,142 @@ void checkTopology(const PolygonMesh& mesh, MeshValidationResult& result)
       ++j;
     }
     const std::array<int, 2> edge{ halfedges[i].lo(), halfedges[i].hi() };
-    ++edges;
+    ++c.edges;
     const std::size_t count = j - i;
-    if (count == 1 && boundary++ == 0)
+    if (count == 1 && c.boundary++ == 0)
     {
-      firstBoundary = edge;
+      c.firstBoundary = edge;
     }
-    if (count > 2 && nonManifold++ == 0)
+    if (count > 2 && c.nonManifold++ == 0)
     {
-      firstNonManifold = edge;
+      c.firstNonManifold = edge;
     }
-    if (count == 2 && halfedges[i].from == halfedges[i + 1].from && misoriented++ == 0)
+    if (count == 2 && halfedges[i].from == halfedges[i + 1].from && c.misoriented++ == 0)
     {
-      firstMisoriented = edge;
+      c.firstMisoriented = edge;
     }
     i = j;
   }
-  stats.edges = edges;
-  stats.boundaryEdges = boundary;
-  stats.nonManifoldEdges = nonManifold;
+  return c;
+}
+
+// Closed, edge-manifold, consistently oriented.
+EdgeCensus checkEdges(const PolygonMesh& mesh, MeshValidationResult& result)
+{
+  const EdgeCensus c = countEdges(sortedHalfedges(mesh));
+  MeshStatistics& stats = result.statistics;
+  stats.edges = c.edges;
+  stats.boundaryEdges = c.boundary;
+  stats.nonManifoldEdges = c.nonManifold;
 
   auto edgeText = [](const std::array<int, 2>& e)
   { return "edge " + std::to_string(e[0]) + "-" + std::to_string(e[1]); };
-  if (boundary > 0)
+  if (c.boundary > 0)
   {
     result.defects.push_back(
-      "is not closed: " + plural(boundary, "boundary edge", "boundary edges") +
-      " (first: " + edgeText(firstBoundary) + ")");
+      "is not closed: " + plural(c.boundary, "boundary edge", "boundary edges") +
+      " (first: " + edgeText(c.firstBoundary) + ")");
   }
-  if (nonManifold > 0)
+  if (c.nonManifold > 0)
   {
     result.defects.push_back("has " +
-      plural(nonManifold, "non-manifold edge", "non-manifold edges") +
-      " shared by more than two triangles (first: " + edgeText(firstNonManifold) + ")");
+      plural(c.nonManifold, "non-manifold edge", "non-manifold edges") +
+      " shared by more than two triangles (first: " + edgeText(c.firstNonManifold) + ")");
   }
-  if (misoriented > 0)
+  if (c.misoriented > 0)
   {
     result.defects.push_back(
-      "is not consistently oriented: " + plural(misoriented, "edge is", "edges are") +
-      " traversed in the same direction by both triangles (first: " + edgeText(firstMisoriented) +
+      "is not consistently oriented: " + plural(c.misoriented, "edge is", "edges are") +
+      " traversed in the same direction by both triangles (first: " + edgeText(c.firstMisoriented) +
       ")");
   }
+  return c;
+}
 
-  // Vertex manifoldness: the link of a vertex (the opposite edges of its
-  // triangles) must be connected, i.e. its triangles form one fan.
-  std::vector<int> linkOffsets(nv + 1, 0);
+/// Per vertex, the edges opposite it in its triangles: vertex v's are
+/// edges[offsets[v] .. offsets[v+1]).
+struct VertexLinks
+{
+  std::vector<int> offsets;
+  std::vector<std::array<int, 2>> edges;
+};
+
+VertexLinks vertexLinks(const PolygonMesh& mesh)
+{
+  VertexLinks links;
+  links.offsets.assign(mesh.points.size() + 1, 0);
   for (int v : mesh.faceVertices)
   {
-    ++linkOffsets[v + 1];
+    ++links.offsets[v + 1];
   }
-  std::partial_sum(linkOffsets.begin(), linkOffsets.end(), linkOffsets.begin());
-  std::vector<std::array<int, 2>> links(mesh.faceVertices.size());
+  std::partial_sum(links.offsets.begin(), links.offsets.end(), links.offsets.begin());
+  links.edges.resize(mesh.faceVertices.size());
+  std::vector<int> fill(links.offsets.begin(), links.offsets.end() - 1);
+  for (std::size_t f = 0; f < mesh.numberOfFaces(); ++f)
   {
-    std::vector<int> fill(linkOffsets.begin(), linkOffsets.end() - 1);
-    for (std::size_t f = 0; f < nf; ++f)
+    const int* t = mesh.face(f);
+    for (int k = 0; k < 3; ++k)
     {
-      const int* t = mesh.face(f);
-      for (int k = 0; k < 3; ++k)
-      {
-        links[fill[t[k]]++] = { t[(k + 1) % 3], t[(k + 2) % 3] };
-      }
+      links.edges[fill[t[k]]++] = { t[(k + 1) % 3], t[(k + 2) % 3] };
     }
   }
+  return links;
+}
+
+// True when link edges [begin, end) form one connected piece; `local` is scratch.
+bool linkIsConnected(const VertexLinks& links, int begin, int end, std::vector<int>& local)
+{
+  local.clear();
+  for (int i = begin; i < end; ++i)
+  {
+    local.push_back(links.edges[i][0]);
+    local.push_back(links.edges[i][1]);
+  }
+  std::sort(local.begin(), local.end());
+  local.erase(std::unique(local.begin(), local.end()), local.end());
+  UnionFind uf(local.size());
+  auto id = [&](int w)
+  {
+    return static_cast<std::size_t>(
+      std::lower_bound(local.begin(), local.end(), w) - local.begin());
+  };
+  for (int i = begin; i < end; ++i)
+  {
+    uf.unite(id(links.edges[i][0]), id(links.edges[i][1]));
+  }
+  const std::size_t root = uf.find(0);
+  for (std::size_t i = 1; i < local.size(); ++i)
+  {
+    if (uf.find(i) != root)
+    {
+      return false;
+    }
+  }
+  return true;
+}
+
+// Vertex manifoldness: the link of a vertex (the opposite edges of its
+// triangles) must be connected, i.e. its triangles form one fan. Returns the
+// number of non-manifold vertices.
+long long checkVertexFans(const PolygonMesh& mesh, MeshValidationResult& result)
+{
+  const VertexLinks links = vertexLinks(mesh);
   long long nonManifoldVertices = 0;
   int firstNonManifoldVertex = -1;
   std::vector<int> local;
-  for (std::size_t v = 0; v < nv; ++v)
+  for (std::size_t v = 0; v < mesh.points.size(); ++v)
   {
-    const int begin = linkOffsets[v], end = linkOffsets[v + 1];
-    if (end - begin < 2)
+    const int begin = links.offsets[v], end = links.offsets[v + 1];
+    if (end - begin < 2 || linkIsConnected(links, begin, end, local))
     {
       continue;
     }
-    local.clear();
-    for (int i = begin; i < end; ++i)
+    if (nonManifoldVertices++ == 0)
     {
-      local.push_back(links[i][0]);
-      local.push_back(links[i][1]);
-    }
-    std::sort(local.begin(), local.end());
-    local.erase(std::unique(local.begin(), local.end()), local.end());
-    UnionFind uf(local.size());
-    auto id = [&](int w)
-    {
-      return static_cast<std::size_t>(
-        std::lower_bound(local.begin(), local.end(), w) - local.begin());
-    };
-    for (int i = begin; i < end; ++i)
-    {
-      uf.unite(id(links[i][0]), id(links[i][1]));
-    }
-    const std::size_t root = uf.find(0);
-    for (std::size_t i = 1; i < local.size(); ++i)
-    {
-      if (uf.find(i) != root)
-      {
-        if (nonManifoldVertices++ == 0)
-        {
-          firstNonManifoldVertex = static_cast<int>(v);
-        }
-        break;
-      }
+      firstNonManifoldVertex = static_cast<int>(v);
     }
   }
-  stats.nonManifoldVertices = nonManifoldVertices;
+  result.statistics.nonManifoldVertices = nonManifoldVertices;
   if (nonManifoldVertices > 0)
   {
     result.defects.push_back("has " +
@@ -416,10 +456,21 @@ void checkTopology(const PolygonMesh& mesh, MeshValidationResult& result)
       std::to_string(firstNonManifoldVertex) + " at " + point(mesh.points[firstNonManifoldVertex]) +
       ")");
   }
+  return nonManifoldVertices;
+}
 
-  // Connected components over the used vertices.
+/// Connected components over the vertices used by triangles.
+struct ComponentCount
+{
+  long long components = 0;
+  long long usedVertices = 0;
+};
+
+ComponentCount checkComponents(const PolygonMesh& mesh, MeshValidationResult& result)
+{
+  const std::size_t nv = mesh.points.size();
   UnionFind uf(nv);
-  for (std::size_t f = 0; f < nf; ++f)
+  for (std::size_t f = 0; f < mesh.numberOfFaces(); ++f)
   {
     const int* t = mesh.face(f);
     uf.unite(t[0], t[1]);
@@ -430,30 +481,40 @@ void checkTopology(const PolygonMesh& mesh, MeshValidationResult& result)
   {
     used[v] = 1;
   }
-  long long components = 0;
-  long long usedVertices = 0;
+  ComponentCount count;
   for (std::size_t v = 0; v < nv; ++v)
   {
     if (used[v])
     {
-      ++usedVertices;
+      ++count.usedVertices;
       if (uf.find(v) == v)
       {
-        ++components;
+        ++count.components;
       }
     }
   }
-  stats.components = components;
-  if (components > 1)
+  result.statistics.components = count.components;
+  if (count.components > 1)
   {
-    result.defects.push_back("has " + std::to_string(components) +
+    result.defects.push_back("has " + std::to_string(count.components) +
       " connected components; a single connected surface is required");
   }
+  return count;
+}
 
-  if (boundary == 0 && nonManifold == 0 && nonManifoldVertices == 0 && misoriented == 0 &&
-    components == 1)
+void checkTopology(const PolygonMesh& mesh, MeshValidationResult& result)
+{
+  const EdgeCensus edges = checkEdges(mesh, result);
+  const long long nonManifoldVertices = checkVertexFans(mesh, result);
+  const ComponentCount count = checkComponents(mesh, result);
+
+  // The genus is defined only for a closed, connected, orientable 2-manifold.
+  if (edges.boundary == 0 && edges.nonManifold == 0 && nonManifoldVertices == 0 &&
+    edges.misoriented == 0 && count.components == 1)
   {
-    const long long chi = usedVertices - edges + static_cast<long long>(nf);
+    MeshStatistics& stats = result.statistics;
+    const long long chi =
+      count.usedVertices - edges.edges + static_cast<long long>(mesh.numberOfFaces());
     stats.genus = static_cast<int>((2 - chi) / 2);
     if (stats.genus != 0)
     {
