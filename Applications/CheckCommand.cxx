@@ -1,4 +1,5 @@
 // surfacemap check: validate meshes as inputs and print their statistics.
+#include "CommandSupport.h"
 #include "Commands.h"
 
 #include "vtkSurfaceMeshReader.h"
@@ -69,9 +70,9 @@ int runCheck(const std::vector<std::string>& args)
     {
       inLandmarks = true;
     }
-    else if (!a.empty() && a[0] == '-')
+    else if (isOption(a))
     {
-      throw UsageError{ "unknown option '" + a + "'" };
+      unknownOption(a);
     }
     else
     {

@@ -22,15 +22,60 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <filesystem>
 #include <fstream>
 #include <iomanip>
 #include <iostream>
 #include <limits>
 #include <sstream>
 #include <stdexcept>
+#include <system_error>
 
 namespace surfacemap
 {
+
+bool isOption(const std::string& argument)
+{
+  return !argument.empty() && argument[0] == '-';
+}
+
+const std::string& optionValue(const std::vector<std::string>& args,
+  std::size_t& i,
+  const char* what)
+{
+  if (i + 1 >= args.size())
+  {
+    throw UsageError{ args[i] + " needs " + what };
+  }
+  return args[++i];
+}
+
+void unknownOption(const std::string& argument)
+{
+  throw UsageError{ "unknown option '" + argument + "'" };
+}
+
+void printErrors(const std::vector<std::string>& messages)
+{
+  for (const std::string& m : messages)
+  {
+    printError(m);
+  }
+}
+
+bool succeeds(const std::function<void()>& step)
+{
+  try
+  {
+    step();
+    return true;
+  }
+  catch (const std::runtime_error& e)
+  {
+    printError(e.what());
+    return false;
+  }
+}
 
 ErrorCapture::ErrorCapture(vtkAlgorithm* algorithm)
   : Algorithm(algorithm)
@@ -185,6 +230,29 @@ std::string temporaryName(const std::string& path)
 }
 } // namespace
 
+bool isFile(const std::string& path)
+{
+  std::error_code ec;
+  return std::filesystem::is_regular_file(path, ec);
+}
+
+std::string mapFileName(const char* stem, int i)
+{
+  return std::string(stem) + "_" + std::to_string(i) + ".vtp";
+}
+
+void createOutputDirectory(const std::string& directory, const std::string& probe)
+{
+  std::error_code ec;
+  std::filesystem::create_directories(directory, ec);
+  if (ec && !std::filesystem::is_directory(directory))
+  {
+    throw std::runtime_error(
+      "cannot create the output directory '" + directory + "': " + ec.message());
+  }
+  checkWritable(directory + "/" + probe);
+}
+
 void checkWritable(const std::string& path)
 {
   const std::string temporary = temporaryName(path);
@@ -199,16 +267,7 @@ void checkWritable(const std::string& path)
 
 bool canWrite(const std::string& path)
 {
-  try
-  {
-    checkWritable(path);
-    return true;
-  }
-  catch (const std::runtime_error& e)
-  {
-    printError(e.what());
-    return false;
-  }
+  return succeeds([&path] { checkWritable(path); });
 }
 
 void writeFileAtomically(const std::string& path, const std::string& content)

@@ -3,6 +3,8 @@
 
 #include "vtkSmartPointer.h"
 
+#include <cstddef>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -49,6 +51,26 @@ private:
   bool Shown = false;
 };
 
+/// True for an argument that starts with '-': an option, never a file.
+bool isOption(const std::string& argument);
+
+/// The value after the option args[i], advancing i to it; throws UsageError
+/// "<option> needs <what>" when the arguments end first.
+const std::string& optionValue(const std::vector<std::string>& args,
+  std::size_t& i,
+  const char* what = "a value");
+
+/// Throws UsageError "unknown option '<argument>'".
+[[noreturn]] void unknownOption(const std::string& argument);
+
+/// Prints every message with printError, in order.
+void printErrors(const std::vector<std::string>& messages);
+
+/// Runs `step`; if it throws std::runtime_error (a file that cannot be read,
+/// created or written), prints the message and returns false, for the
+/// caller to exit with ExitBadInput. Other exceptions pass.
+bool succeeds(const std::function<void()>& step);
+
 /// Measures the map source -> target (equal connectivity) with
 /// vtkSurfaceMapEvaluation; originals (for the Hausdorff figures) may be null.
 /// Returns the evaluated source with the per-triangle arrays and the summary
@@ -71,6 +93,17 @@ vtkSmartPointer<vtkPolyData> readMesh(const std::string& path, const std::string
 /// Reads a mesh (and optional landmark file) with vtkSurfaceMeshReader and
 /// validates it; on failure prints the reasons and returns null.
 vtkSmartPointer<vtkPolyData> readValidMesh(const std::string& path, const std::string& landmarks);
+
+/// True if `path` is a regular file (false on any error).
+bool isFile(const std::string& path);
+
+/// The name of an output file of 'surfacemap map' for input i:
+/// <stem>_<i>.vtp (stem common, mapped or embedding).
+std::string mapFileName(const char* stem, int i);
+
+/// Creates `directory` (with its parents) if missing and checks that the file
+/// `probe` can be written in it. Throws std::runtime_error naming what failed.
+void createOutputDirectory(const std::string& directory, const std::string& probe);
 
 /// Throws std::runtime_error naming `path` if no file can be created there
 /// (checked before long computations whose result would be lost).

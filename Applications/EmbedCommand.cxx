@@ -12,7 +12,6 @@
 
 #include <cstdio>
 #include <iostream>
-#include <stdexcept>
 
 namespace surfacemap
 {
@@ -45,19 +44,16 @@ int runEmbed(const std::vector<std::string>& args)
     const std::string& a = args[i];
     if (a == "-o" || a == "--output" || a == "--landmarks" || a == "--reference")
     {
-      if (i + 1 >= args.size())
-      {
-        throw UsageError{ a + " needs a file name" };
-      }
-      (a == "--landmarks" ? landmarks : a == "--reference" ? reference : output) = args[++i];
+      std::string& file = a == "--landmarks" ? landmarks : a == "--reference" ? reference : output;
+      file = optionValue(args, i, "a file name");
     }
     else if (a == "--on-sphere")
     {
       onSphere = true;
     }
-    else if (!a.empty() && a[0] == '-')
+    else if (isOption(a))
     {
-      throw UsageError{ "unknown option '" + a + "'" };
+      unknownOption(a);
     }
     else if (mesh.empty())
     {
@@ -111,20 +107,12 @@ int runEmbed(const std::vector<std::string>& args)
   }
   if (!errors.messages().empty() || embedding->GetOutput()->GetNumberOfPoints() == 0)
   {
-    for (const std::string& m : errors.messages())
-    {
-      printError(m);
-    }
+    printErrors(errors.messages());
     return ExitNoCertifiedResult;
   }
   vtkPolyData* result = embedding->GetOutput();
-  try
+  if (!succeeds([&] { writePolyDataAtomically(result, output); }))
   {
-    writePolyDataAtomically(result, output);
-  }
-  catch (const std::runtime_error& e)
-  {
-    printError(e.what());
     return ExitBadInput;
   }
   auto value = [&](const char* name)

@@ -152,7 +152,7 @@ MapArguments parseArguments(const std::vector<std::string>& args, vtkSurfaceMapF
   for (std::size_t i = 0; i < args.size(); ++i)
   {
     const std::string& a = args[i];
-    if (a != "--landmarks" && !a.empty() && a[0] == '-')
+    if (a != "--landmarks" && isOption(a))
     {
       inLandmarks = false;
     }
@@ -162,18 +162,14 @@ MapArguments parseArguments(const std::vector<std::string>& args, vtkSurfaceMapF
     }
     else if (a == "--output-dir")
     {
-      if (i + 1 >= args.size())
-      {
-        throw UsageError{ a + " needs a value" };
-      }
-      parsed.outputDir = args[++i];
+      parsed.outputDir = optionValue(args, i);
     }
     else if (parseSettingFlag(map, args, i))
     {
     }
-    else if (!a.empty() && a[0] == '-')
+    else if (isOption(a))
     {
-      throw UsageError{ "unknown option '" + a + "'" };
+      unknownOption(a);
     }
     else
     {
@@ -219,29 +215,18 @@ std::vector<vtkSmartPointer<vtkPolyData>> readInputs(const MapArguments& argumen
 // none), removed again when no map comes out.
 bool prepareOutputDirectory(const std::string& outputDir, std::filesystem::path& created)
 {
-  try
-  {
-    std::error_code ec;
-    for (std::filesystem::path p = std::filesystem::absolute(outputDir, ec).lexically_normal();
-         !ec && !p.empty() && !std::filesystem::exists(p, ec) && p != p.parent_path();
-         p = p.parent_path())
+  return succeeds(
+    [&]
     {
-      created = p;
-    }
-    std::filesystem::create_directories(outputDir, ec);
-    if (ec && !std::filesystem::is_directory(outputDir))
-    {
-      throw std::runtime_error(
-        "cannot create the output directory '" + outputDir + "': " + ec.message());
-    }
-    checkWritable(outputDir + "/report.json");
-    return true;
-  }
-  catch (const std::runtime_error& e)
-  {
-    printError(e.what());
-    return false;
-  }
+      std::error_code ec;
+      for (std::filesystem::path p = std::filesystem::absolute(outputDir, ec).lexically_normal();
+           !ec && !p.empty() && !std::filesystem::exists(p, ec) && p != p.parent_path();
+           p = p.parent_path())
+      {
+        created = p;
+      }
+      createOutputDirectory(outputDir, "report.json");
+    });
 }
 
 // Runs the filter; prints its errors and returns the exit code on failure.
@@ -261,10 +246,7 @@ int computeMap(vtkSurfaceMapFilter* map,
   {
     return ExitOk;
   }
-  for (const std::string& m : errors.messages())
-  {
-    printError(m);
-  }
+  printErrors(errors.messages());
   return map->GetErrorCode() == vtkSurfaceMapFilter::InvalidInputError ? ExitBadInput
     : map->GetErrorCode() == vtkSurfaceMapFilter::NotCertifiedError    ? ExitNoCertifiedResult
                                                                        : ExitInternalError;
@@ -423,8 +405,7 @@ std::string writeOutputs(vtkSurfaceMapFilter* map,
   const int n = static_cast<int>(inputs.size());
   for (int i = 0; i < n; ++i)
   {
-    writePolyDataAtomically(
-      map->GetOutput(i), outputDir + "/" + prefix + "_" + std::to_string(i) + ".vtp");
+    writePolyDataAtomically(map->GetOutput(i), outputDir + "/" + mapFileName(prefix, i));
   }
   if (!what)
   {

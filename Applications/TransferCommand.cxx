@@ -69,93 +69,100 @@ int parseIndex(const std::string& option, const std::string& text)
   return static_cast<int>(value);
 }
 
-} // namespace
-
-int runTransfer(const std::vector<std::string>& args)
+struct TransferArguments
 {
   std::string directory, output;
   int from = -1, to = -1;
   std::vector<std::string> arrays;
+};
+
+TransferArguments parseArguments(const std::vector<std::string>& args)
+{
+  TransferArguments parsed;
   bool inArrays = false, sawArrays = false;
   for (std::size_t i = 0; i < args.size(); ++i)
   {
     const std::string& a = args[i];
-    const bool takesValue = a == "--from" || a == "--to" || a == "-o" || a == "--output";
-    if (takesValue && i + 1 >= args.size())
-    {
-      throw UsageError{ a + " needs a value" };
-    }
-    if (!a.empty() && a[0] == '-')
+    if (isOption(a))
     {
       inArrays = false;
     }
     if (a == "--from")
     {
-      from = parseIndex(a, args[++i]);
+      parsed.from = parseIndex(a, optionValue(args, i));
     }
     else if (a == "--to")
     {
-      to = parseIndex(a, args[++i]);
+      parsed.to = parseIndex(a, optionValue(args, i));
     }
     else if (a == "-o" || a == "--output")
     {
-      output = args[++i];
+      parsed.output = optionValue(args, i);
     }
     else if (a == "--arrays")
     {
       inArrays = sawArrays = true;
     }
-    else if (!a.empty() && a[0] == '-')
+    else if (isOption(a))
     {
-      throw UsageError{ "unknown option '" + a + "'" };
+      unknownOption(a);
     }
     else if (inArrays)
     {
-      arrays.push_back(a);
+      parsed.arrays.push_back(a);
     }
-    else if (directory.empty())
+    else if (parsed.directory.empty())
     {
-      directory = a;
+      parsed.directory = a;
     }
     else
     {
-      throw UsageError{ "one map directory only ('" + directory + "', then '" + a + "')" };
+      throw UsageError{ "one map directory only ('" + parsed.directory + "', then '" + a + "')" };
     }
   }
-  if (directory.empty())
+  if (parsed.directory.empty())
   {
     throw UsageError{ "no map directory given" };
   }
-  if (from < 0 || to < 0)
+  if (parsed.from < 0 || parsed.to < 0)
   {
     throw UsageError{ "give the inputs with --from I --to J" };
   }
-  if (output.empty())
+  if (parsed.output.empty())
   {
     throw UsageError{ "no output file given (-o OUT.vtp)" };
   }
-  if (sawArrays && arrays.empty())
+  if (sawArrays && parsed.arrays.empty())
   {
     throw UsageError{ "--arrays needs at least one array name" };
   }
+  return parsed;
+}
 
-  // The map's files: name every one that is missing.
+// The map's files vtkSurfaceMapTransfer reads, by port: J's and I's
+// embeddings, then T lifted onto J and onto I.
+std::vector<std::string> mapFiles(const TransferArguments& arguments)
+{
+  return { mapFileName("embedding", arguments.to),
+    mapFileName("embedding", arguments.from),
+    mapFileName("common", arguments.to),
+    mapFileName("common", arguments.from) };
+}
+
+// True if `directory` holds every file; otherwise prints every one missing.
+bool findMapFiles(const std::string& directory, const std::vector<std::string>& files)
+{
   std::error_code ec;
   if (!std::filesystem::is_directory(directory, ec))
   {
     printError(
       "'" + directory + "' is not a directory (give an output directory of 'surfacemap map')");
-    return ExitBadInput;
+    return false;
   }
-  const std::string files[4] = { "embedding_" + std::to_string(to) + ".vtp",
-    "embedding_" + std::to_string(from) + ".vtp",
-    "common_" + std::to_string(to) + ".vtp",
-    "common_" + std::to_string(from) + ".vtp" };
   std::string missing;
   for (const std::string& file : files)
   {
-    if (!std::filesystem::is_regular_file(directory + "/" + file, ec) &&
-      missing.find(file) == std::string::npos)
+    if (!isFile(directory + "/" + file) && missing.find(file) == std::string::npos)
     {
       missing += (missing.empty() ? "" : ", ") + file;
     }
@@ -164,23 +171,31 @@ int runTransfer(const std::vector<std::string>& args)
   {
     printError(directory + " has no " + missing +
       " (written by 'surfacemap map' for each input; is the input index right?)");
-    return ExitBadInput;
+    return false;
   }
-  if (!canWrite(output))
-  {
-    return ExitBadInput;
-  }
+  return true;
+}
 
-  vtkNew<vtkSurfaceMapTransfer> transfer;
-  for (int port = 0; port < 4; ++port)
+// Reads the map's files into the transfer's ports; false after printing why.
+bool readMapFiles(vtkSurfaceMapTransfer* transfer,
+  const std::string& directory,
+  const std::vector<std::string>& files)
+{
+  for (int port = 0; port < static_cast<int>(files.size()); ++port)
   {
     vtkSmartPointer<vtkPolyData> data = readMesh(directory + "/" + files[port]);
     if (!data)
     {
-      return ExitBadInput;
+      return false;
     }
     transfer->SetInputDataObject(port, data);
   }
+  return true;
+}
+
+// Runs the transfer; prints its errors and returns the exit code on failure.
+int computeTransfer(vtkSurfaceMapTransfer* transfer, const std::vector<std::string>& arrays)
+{
   for (const std::string& name : arrays)
   {
     transfer->AddArrayName(name.c_str());
@@ -190,26 +205,18 @@ int runTransfer(const std::vector<std::string>& args)
     ProgressBar bar(transfer);
     transfer->Update();
   }
-  vtkPolyData* result = transfer->GetOutput();
-  if (!errors.messages().empty() || result->GetNumberOfPoints() == 0)
+  if (errors.messages().empty() && transfer->GetOutput()->GetNumberOfPoints() > 0)
   {
-    for (const std::string& m : errors.messages())
-    {
-      printError(m);
-    }
-    return transfer->GetErrorCode() == vtkSurfaceMapTransfer::InvalidInputError ? ExitBadInput
-                                                                                : ExitInternalError;
+    return ExitOk;
   }
-  try
-  {
-    writePolyDataAtomically(result, output);
-  }
-  catch (const std::runtime_error& e)
-  {
-    printError(e.what());
-    return ExitBadInput;
-  }
+  printErrors(errors.messages());
+  return transfer->GetErrorCode() == vtkSurfaceMapTransfer::InvalidInputError ? ExitBadInput
+                                                                              : ExitInternalError;
+}
 
+// Prints which arrays input J received.
+void reportTransfer(const TransferArguments& arguments, vtkPolyData* result)
+{
   std::string names;
   vtkPointData* pd = result->GetPointData();
   for (int a = 0; a < pd->GetNumberOfArrays(); ++a)
@@ -218,12 +225,40 @@ int runTransfer(const std::vector<std::string>& args)
     names += (names.empty() ? "" : ", ") + std::string(name ? name : "(unnamed)");
   }
   std::printf("input %d -> input %d: %lld vertices of input %d received %s\n",
-    from,
-    to,
+    arguments.from,
+    arguments.to,
     static_cast<long long>(result->GetNumberOfPoints()),
-    to,
+    arguments.to,
     names.c_str());
-  std::printf("  written to %s\n", output.c_str());
+  std::printf("  written to %s\n", arguments.output.c_str());
+}
+
+} // namespace
+
+int runTransfer(const std::vector<std::string>& args)
+{
+  const TransferArguments arguments = parseArguments(args);
+  const std::vector<std::string> files = mapFiles(arguments);
+  if (!findMapFiles(arguments.directory, files) || !canWrite(arguments.output))
+  {
+    return ExitBadInput;
+  }
+  vtkNew<vtkSurfaceMapTransfer> transfer;
+  if (!readMapFiles(transfer, arguments.directory, files))
+  {
+    return ExitBadInput;
+  }
+  const int computed = computeTransfer(transfer, arguments.arrays);
+  if (computed != ExitOk)
+  {
+    return computed;
+  }
+  vtkPolyData* result = transfer->GetOutput();
+  if (!succeeds([&] { writePolyDataAtomically(result, arguments.output); }))
+  {
+    return ExitBadInput;
+  }
+  reportTransfer(arguments, result);
   return ExitOk;
 }
 

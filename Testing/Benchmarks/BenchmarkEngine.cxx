@@ -11,9 +11,9 @@
 // phase and the sphere embedding).
 #include "energy/BarrierEnergy.h"
 #include "energy/BijectivityBarrier.h"
+#include "mesh/Primitives.h"
 #include "optimisation/NewtonSolver.h"
 #include "optimisation/Objective.h"
-#include "mesh/Primitives.h"
 
 #include <omp.h>
 
@@ -111,93 +111,117 @@ double now()
   return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
 }
 
-} // namespace
-
-int main(int argc, char* argv[])
+struct Settings
 {
   int threads = omp_get_num_procs();
   int repeat = 10;
   LinearSolver::Ordering ordering = LinearSolver::Ordering::Amd;
   bool exactBarrier = false;
+};
+
+// The command line; false after printing the usage.
+bool parseArguments(int argc, char* argv[], Settings& settings)
+{
   for (int i = 1; i < argc; ++i)
   {
     if (!std::strcmp(argv[i], "--threads") && i + 1 < argc)
     {
-      threads = std::atoi(argv[++i]);
+      settings.threads = std::atoi(argv[++i]);
     }
     else if (!std::strcmp(argv[i], "--repeat") && i + 1 < argc)
     {
-      repeat = std::atoi(argv[++i]);
+      settings.repeat = std::atoi(argv[++i]);
     }
     else if (!std::strcmp(argv[i], "--nested-dissection"))
     {
-      ordering = LinearSolver::Ordering::NestedDissection;
+      settings.ordering = LinearSolver::Ordering::NestedDissection;
     }
     else if (!std::strcmp(argv[i], "--exact-barrier"))
     {
-      exactBarrier = true;
+      settings.exactBarrier = true;
     }
     else
     {
       std::fprintf(stderr,
         "usage: BenchmarkEngine [--threads N] [--repeat R] [--nested-dissection] "
         "[--exact-barrier]\n");
-      return 2;
+      return false;
     }
   }
+  return true;
+}
 
-  // 2 562 vertices, 5 120 triangles; the second embedding is the first seen
-  // from a point inside the sphere (a bijective, smoothly non-uniform map).
+// Two embeddings of an icosphere of level 4 (2 562 vertices, 5 120
+// triangles); the second is the first seen from a point inside the sphere (a
+// bijective, smoothly non-uniform map).
+struct Problem
+{
+  int n = 0; // vertices of one embedding
+  std::vector<std::array<int, 3>> triangles;
+  SpherePoints points;
+  std::shared_ptr<ElementTerm<6, ChordDirichletEnergy>> distortion;
+};
+
+Problem makeProblem()
+{
+  Problem problem;
   const PolygonMesh mesh = makeIcosphere(4);
-  const int n = static_cast<int>(mesh.points.size());
-  const std::vector<std::array<int, 3>> triangles = mesh.triangles();
+  problem.n = static_cast<int>(mesh.points.size());
+  problem.triangles = mesh.triangles();
   std::vector<Eigen::Vector3d> all = mesh.points;
   for (const Eigen::Vector3d& p : mesh.points)
   {
     all.push_back((p + Eigen::Vector3d(0.25, -0.1, 0.3)).normalized());
   }
-  SpherePoints points(all);
+  problem.points = SpherePoints(all);
+  problem.distortion = std::make_shared<ElementTerm<6, ChordDirichletEnergy>>(
+    "map distortion", ChordDirichletEnergy{ problem.triangles, problem.n });
+  return problem;
+}
 
-  auto sd = std::make_shared<ElementTerm<6, ChordDirichletEnergy>>(
-    "map distortion", ChordDirichletEnergy{ triangles, n });
-  const int ne = sd->numberOfElements();
-  std::vector<double> values(ne), gradients(ne * 12), hessians(ne * 144);
-
+void printHeader(const Problem& problem)
+{
   std::printf("# SurfaceMaps engine benchmark\n\n");
   std::printf("icosphere level 4: %d vertices, %d triangles, 2 embeddings (%d variables)\n\n",
-    n,
-    ne,
-    points.numberOfVariables());
+    problem.n,
+    problem.distortion->numberOfElements(),
+    problem.points.numberOfVariables());
   std::printf("| measurement | threads | figure |\n|---|---|---|\n");
+}
 
-  // Per-core throughput of the 12-variable element.
-  omp_set_num_threads(1);
-  sd->evaluateDerivatives(
-    points, 1e-9, values.data(), gradients.data(), hessians.data()); // warm up
-  double t0 = now();
+// Seconds per element of `evaluate`, run `repeat` times over all elements.
+template<typename Evaluate>
+double secondsPerElement(int repeat, int elements, const Evaluate& evaluate)
+{
+  const double t0 = now();
   for (int r = 0; r < repeat; ++r)
   {
-    sd->evaluateDerivatives(points, 1e-9, values.data(), gradients.data(), hessians.data());
+    evaluate();
   }
-  const double withHessian = (now() - t0) / (repeat * double(ne));
-  t0 = now();
-  for (int r = 0; r < repeat; ++r)
-  {
-    sd->evaluateDerivatives(points, -1.0, values.data(), gradients.data(), hessians.data());
-  }
-  const double unprojected = (now() - t0) / (repeat * double(ne));
-  t0 = now();
-  for (int r = 0; r < repeat; ++r)
-  {
-    sd->evaluateDerivatives(points, 0.0, values.data(), gradients.data(), nullptr);
-  }
-  const double gradientOnly = (now() - t0) / (repeat * double(ne));
-  t0 = now();
-  for (int r = 0; r < 10 * repeat; ++r)
-  {
-    sd->evaluateValues(points, values.data());
-  }
-  const double valueOnly = (now() - t0) / (10 * repeat * double(ne));
+  return (now() - t0) / (repeat * double(elements));
+}
+
+// Per-core throughput of the 12-variable element.
+void measureElements(const Problem& problem, int repeat)
+{
+  const auto& sd = *problem.distortion;
+  const SpherePoints& points = problem.points;
+  const int ne = sd.numberOfElements();
+  std::vector<double> values(ne), gradients(ne * 12), hessians(ne * 144);
+  sd.evaluateDerivatives(points, 1e-9, values.data(), gradients.data(), hessians.data()); // warm up
+  const double withHessian = secondsPerElement(repeat,
+    ne,
+    [&]
+    { sd.evaluateDerivatives(points, 1e-9, values.data(), gradients.data(), hessians.data()); });
+  const double unprojected = secondsPerElement(repeat,
+    ne,
+    [&]
+    { sd.evaluateDerivatives(points, -1.0, values.data(), gradients.data(), hessians.data()); });
+  const double gradientOnly = secondsPerElement(repeat,
+    ne,
+    [&] { sd.evaluateDerivatives(points, 0.0, values.data(), gradients.data(), nullptr); });
+  const double valueOnly =
+    secondsPerElement(10 * repeat, ne, [&] { sd.evaluateValues(points, values.data()); });
   std::printf(
     "| 12-variable symmetric Dirichlet element, value + gradient + projected Hessian | 1 | "
     "%.0f elements/s (%.2f us each) |\n",
@@ -212,14 +236,15 @@ int main(int argc, char* argv[])
   std::printf("| same, value only (line-search trial) | 1 | %.0f elements/s (%.3f us each) |\n",
     1.0 / valueOnly,
     1e6 * valueOnly);
+}
 
-  // One full Newton iteration: distortion + barrier on both embeddings.
-  omp_set_num_threads(threads);
-  Objective objective;
-  objective.addTerm(sd, 1.0);
-  for (int offset : { 0, n })
+// Map distortion and the barrier on both embeddings.
+void addTerms(Objective& objective, const Problem& problem, bool exactBarrier)
+{
+  objective.addTerm(problem.distortion, 1.0);
+  for (int offset : { 0, problem.n })
   {
-    const BarrierEnergy barrier{ triangles, offset };
+    const BarrierEnergy barrier{ problem.triangles, offset };
     if (exactBarrier)
     {
       objective.addTerm(std::make_shared<ElementTerm<3, BarrierEnergy>>("barrier", barrier), 1e-3);
@@ -229,16 +254,21 @@ int main(int argc, char* argv[])
       objective.addTerm(std::make_shared<BijectivityBarrierTerm>(barrier), 1e-3);
     }
   }
-  LinearSolver solver(ordering);
-  NewtonOptions options;
-  options.maxPointStep = std::tan(75.0 * M_PI / 180.0);
-  NewtonStepResult first = newtonStep(objective, points, solver, options); // builds the pattern
+}
+
+// `iterations` full Newton iterations: their mean time and its parts.
+void measureIterations(Objective& objective,
+  SpherePoints& points,
+  LinearSolver& solver,
+  const NewtonOptions& options,
+  int iterations,
+  int threads)
+{
   double total = 0, derivatives = 0, solve = 0, lineSearch = 0, trials = 0;
   int regularised = 0, fallbacks = 0;
-  const int iterations = repeat;
   for (int it = 0; it < iterations; ++it)
   {
-    t0 = now();
+    const double t0 = now();
     const NewtonStepResult step = newtonStep(objective, points, solver, options);
     total += now() - t0;
     derivatives += step.derivativeSeconds;
@@ -267,39 +297,67 @@ int main(int argc, char* argv[])
     threads,
     regularised,
     fallbacks);
-  // Where the derivative time goes, at the final points: each term's element
-  // derivatives with projection (parallel), then the whole objective.hessian
-  // (the difference is gradient and Hessian assembly, serial).
+}
+
+// Where the derivative time goes, at the current points: each term's element
+// derivatives with projection (parallel), then the whole objective.hessian
+// (the difference is gradient and Hessian assembly, serial).
+void measureDerivatives(Objective& objective, const SpherePoints& points, int repeat, int threads)
+{
+  double termSeconds[3] = { 0.0, 0.0, 0.0 }, hessianSeconds = 0.0;
+  Eigen::VectorXd g;
+  Eigen::SparseMatrix<double> H;
+  for (int r = 0; r < repeat; ++r)
   {
-    double termSeconds[3] = { 0.0, 0.0, 0.0 }, hessianSeconds = 0.0;
-    Eigen::VectorXd g;
-    Eigen::SparseMatrix<double> H;
-    for (int r = 0; r < repeat; ++r)
+    for (std::size_t t = 0; t < objective.numberOfTerms(); ++t)
     {
-      for (std::size_t t = 0; t < objective.numberOfTerms(); ++t)
-      {
-        ObjectiveTerm& term = objective.term(t);
-        const std::size_t m = term.numberOfElements();
-        const std::size_t k = 2 * term.pointsPerElement();
-        std::vector<double> v(m), gr(m * k), he(m * k * k);
-        t0 = now();
-        term.evaluateDerivatives(points, 1e-9, v.data(), gr.data(), he.data());
-        termSeconds[t] += now() - t0;
-      }
-      t0 = now();
-      objective.hessian(points, 1e-9, g, H);
-      hessianSeconds += now() - t0;
+      ObjectiveTerm& term = objective.term(t);
+      const std::size_t m = term.numberOfElements();
+      const std::size_t k = 2 * term.pointsPerElement();
+      std::vector<double> v(m), gr(m * k), he(m * k * k);
+      const double t0 = now();
+      term.evaluateDerivatives(points, 1e-9, v.data(), gr.data(), he.data());
+      termSeconds[t] += now() - t0;
     }
-    std::printf("| of the derivatives: symmetric Dirichlet elements / barrier elements "
-                "(with projection) | %d | %.4f s / %.4f s |\n",
-      threads,
-      termSeconds[0] / repeat,
-      (termSeconds[1] + termSeconds[2]) / repeat);
-    std::printf("| of the derivatives: gradient and Hessian assembly | 1 | %.4f s |\n",
-      (hessianSeconds - termSeconds[0] - termSeconds[1] - termSeconds[2]) / repeat);
+    const double t0 = now();
+    objective.hessian(points, 1e-9, g, H);
+    hessianSeconds += now() - t0;
   }
-  std::printf("| first iteration (pattern, symbolic analysis) | %d | %.4f s |\n",
+  std::printf("| of the derivatives: symmetric Dirichlet elements / barrier elements "
+              "(with projection) | %d | %.4f s / %.4f s |\n",
     threads,
+    termSeconds[0] / repeat,
+    (termSeconds[1] + termSeconds[2]) / repeat);
+  std::printf("| of the derivatives: gradient and Hessian assembly | 1 | %.4f s |\n",
+    (hessianSeconds - termSeconds[0] - termSeconds[1] - termSeconds[2]) / repeat);
+}
+
+} // namespace
+
+int main(int argc, char* argv[])
+{
+  Settings settings;
+  if (!parseArguments(argc, argv, settings))
+  {
+    return 2;
+  }
+  Problem problem = makeProblem();
+  printHeader(problem);
+  omp_set_num_threads(1);
+  measureElements(problem, settings.repeat);
+
+  omp_set_num_threads(settings.threads);
+  Objective objective;
+  addTerms(objective, problem, settings.exactBarrier);
+  LinearSolver solver(settings.ordering);
+  NewtonOptions options;
+  options.maxPointStep = std::tan(75.0 * M_PI / 180.0);
+  const NewtonStepResult first =
+    newtonStep(objective, problem.points, solver, options); // builds the pattern
+  measureIterations(objective, problem.points, solver, options, settings.repeat, settings.threads);
+  measureDerivatives(objective, problem.points, settings.repeat, settings.threads);
+  std::printf("| first iteration (pattern, symbolic analysis) | %d | %.4f s |\n",
+    settings.threads,
     first.derivativeSeconds + first.solveSeconds + first.lineSearchSeconds);
   return 0;
 }

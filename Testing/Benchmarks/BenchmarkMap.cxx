@@ -5,12 +5,12 @@
 //   build/bin/BenchmarkMap A B [C...] [--landmarks FA FB ...] [-v] [SETTING ...]
 // with the settings' flags of `surfacemap map` (the engine's settings table).
 #include "BenchmarkSupport.h"
-#include "io/LandmarkReader.h"
-#include "geometry/MapMetrics.h"
-#include "mesh/MeshValidation.h"
 #include "embedding/SphereEmbedding.h"
+#include "geometry/MapMetrics.h"
+#include "io/LandmarkReader.h"
 #include "map/MapSettings.h"
 #include "map/SurfaceMap.h"
+#include "mesh/MeshValidation.h"
 
 #include <chrono>
 #include <cstdio>
@@ -44,14 +44,18 @@ double minMeanMinAngle(const std::vector<Eigen::Vector3d>& p,
   *mean = sum / triangles.size();
   return smallest;
 }
-} // namespace
 
-int main(int argc, char* argv[])
+struct Arguments
 {
   std::vector<std::string> meshes, landmarkFiles;
   SurfaceMapOptions options;
+};
+
+// The command line; false after printing why (an unknown option or a bad
+// setting, or the usage).
+bool parseArguments(const std::vector<std::string>& args, Arguments& parsed)
+{
   bool verbose = false;
-  const std::vector<std::string> args(argv + 1, argv + argc);
   try
   {
     for (std::size_t a = 0; a < args.size(); ++a)
@@ -60,29 +64,30 @@ int main(int argc, char* argv[])
       {
         while (a + 1 < args.size() && args[a + 1][0] != '-')
         {
-          landmarkFiles.push_back(args[++a]);
+          parsed.landmarkFiles.push_back(args[++a]);
         }
       }
       else if (args[a] == "-v")
       {
         verbose = true;
       }
-      else if (!parseSettingFlag(args, a, options))
+      else if (!parseSettingFlag(args, a, parsed.options))
       {
         if (args[a][0] == '-')
         {
           throw std::invalid_argument("unknown option '" + args[a] + "'");
         }
-        meshes.push_back(args[a]);
+        parsed.meshes.push_back(args[a]);
       }
     }
   }
   catch (const std::invalid_argument& e)
   {
     std::fprintf(stderr, "BenchmarkMap: %s\n", e.what());
-    return 2;
+    return false;
   }
-  if (meshes.empty() || (!landmarkFiles.empty() && landmarkFiles.size() != meshes.size()))
+  if (parsed.meshes.empty() ||
+    (!parsed.landmarkFiles.empty() && parsed.landmarkFiles.size() != parsed.meshes.size()))
   {
     std::fprintf(stderr,
       "usage: BenchmarkMap A B [C...] [--landmarks FA FB ...] [-v] [SETTING ...]\n"
@@ -92,53 +97,66 @@ int main(int argc, char* argv[])
       std::fprintf(stderr, " --%s", s.flag);
     }
     std::fprintf(stderr, "\n");
-    return 2;
+    return false;
   }
   if (verbose)
   {
-    options.log.sink = [](Logger::Level, const std::string& m) { std::cerr << m << "\n"; };
+    parsed.options.log.sink = [](Logger::Level, const std::string& m) { std::cerr << m << "\n"; };
   }
-  const auto start = std::chrono::steady_clock::now();
-  std::vector<MapInput> inputs(meshes.size());
-  double embeddingSeconds = 0.0;
-  for (std::size_t i = 0; i < meshes.size(); ++i)
+  return true;
+}
+
+// Every input read and validated, with its landmarks; false after printing
+// the first defect.
+bool readInputs(const Arguments& arguments, std::vector<MapInput>& inputs)
+{
+  inputs.resize(arguments.meshes.size());
+  for (std::size_t i = 0; i < arguments.meshes.size(); ++i)
   {
-    inputs[i].mesh = benchmark::read(meshes[i]);
+    inputs[i].mesh = benchmark::read(arguments.meshes[i]);
     const MeshValidationResult validation = validateMesh(inputs[i].mesh);
     if (!validation.valid())
     {
-      std::fprintf(stderr, "%s: %s\n", meshes[i].c_str(), validation.defects[0].c_str());
-      return 2;
+      std::fprintf(stderr, "%s: %s\n", arguments.meshes[i].c_str(), validation.defects[0].c_str());
+      return false;
     }
-    if (!landmarkFiles.empty())
+    if (!arguments.landmarkFiles.empty())
     {
-      inputs[i].landmarks = landmarkIdsFromIndices(
-        readLandmarks(landmarkFiles[i]), inputs[i].mesh.points.size(), landmarkFiles[i]);
+      inputs[i].landmarks = landmarkIdsFromIndices(readLandmarks(arguments.landmarkFiles[i]),
+        inputs[i].mesh.points.size(),
+        arguments.landmarkFiles[i]);
     }
   }
-  {
-    const auto embeddingStart = std::chrono::steady_clock::now();
-    std::vector<const PolygonMesh*> meshes;
-    for (const MapInput& input : inputs)
-    {
-      meshes.push_back(&input.mesh);
-    }
-    std::vector<SphereEmbeddingResult> embeddings = embedAllOnSphere(meshes);
-    for (std::size_t i = 0; i < inputs.size(); ++i)
-    {
-      inputs[i].spherePositions = std::move(embeddings[i].positions);
-    }
-    embeddingSeconds =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - embeddingStart).count();
-  }
-  const SurfaceMapResult r = computeSurfaceMap(inputs, options);
-  const double seconds =
-    std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return true;
+}
 
-  std::printf("inputs:");
-  for (std::size_t i = 0; i < meshes.size(); ++i)
+// Embeds every input on the sphere; returns the seconds it took.
+double embedInputs(std::vector<MapInput>& inputs)
+{
+  const auto start = std::chrono::steady_clock::now();
+  std::vector<const PolygonMesh*> meshes;
+  for (const MapInput& input : inputs)
   {
-    std::printf(" %s (%zu vertices)", meshes[i].c_str(), inputs[i].mesh.points.size());
+    meshes.push_back(&input.mesh);
+  }
+  std::vector<SphereEmbeddingResult> embeddings = embedAllOnSphere(meshes);
+  for (std::size_t i = 0; i < inputs.size(); ++i)
+  {
+    inputs[i].spherePositions = std::move(embeddings[i].positions);
+  }
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+void printTimes(const Arguments& arguments,
+  const std::vector<MapInput>& inputs,
+  const SurfaceMapResult& r,
+  double seconds,
+  double embeddingSeconds)
+{
+  std::printf("inputs:");
+  for (std::size_t i = 0; i < arguments.meshes.size(); ++i)
+  {
+    std::printf(" %s (%zu vertices)", arguments.meshes[i].c_str(), inputs[i].mesh.points.size());
   }
   std::printf("\ntotal %.2f s: embeddings %.2f s, map %.2f s; peak RSS %.0f MB; T %zu vertices\n",
     seconds,
@@ -146,6 +164,10 @@ int main(int argc, char* argv[])
     r.seconds,
     benchmark::peakMegabytes(),
     r.lifted[0].size());
+}
+
+void printPhases(const SurfaceMapResult& r)
+{
   std::printf(
     "| phase | iterations | converged | vertices | splits / collapses / flips | time (s) | "
     "remesh / derivatives / solve / line search / bookkeeping (s) "
@@ -167,6 +189,12 @@ int main(int argc, char* argv[])
       p.lineSearchSeconds,
       p.bookkeepingSeconds);
   }
+}
+
+// Prints the certificate, the landmark error, the energy and the error
+// bounds; returns whether every certificate holds.
+bool printResult(const SurfaceMapResult& r)
+{
   bool certified = true;
   for (const auto& c : r.certificates)
   {
@@ -187,9 +215,16 @@ int main(int argc, char* argv[])
       r.baseDistance[i],
       r.errorBound[i]);
   }
+  return certified;
+}
+
+// The metrics of the approximating map T_0 -> T_j and of the exact map
+// (input 0 -> input 0 on input j), for every j > 0.
+void printMetrics(const std::vector<MapInput>& inputs, const SurfaceMapResult& r)
+{
   std::printf("| map | SD | a1.5 | a2 | max | min angle T_0 / T_j | mean min angle |\n"
               "|---|---|---|---|---|---|---|\n");
-  for (std::size_t j = 1; j < meshes.size(); ++j)
+  for (std::size_t j = 1; j < inputs.size(); ++j)
   {
     const MapMetrics approx = measureMap(r.lifted[0], r.lifted[j], r.triangles);
     const MapMetrics exact =
@@ -214,5 +249,30 @@ int main(int argc, char* argv[])
       exact.areaFractionBelow(2.0),
       exact.maxDistortion);
   }
+}
+
+} // namespace
+
+int main(int argc, char* argv[])
+{
+  Arguments arguments;
+  if (!parseArguments(std::vector<std::string>(argv + 1, argv + argc), arguments))
+  {
+    return 2;
+  }
+  const auto start = std::chrono::steady_clock::now();
+  std::vector<MapInput> inputs;
+  if (!readInputs(arguments, inputs))
+  {
+    return 2;
+  }
+  const double embeddingSeconds = embedInputs(inputs);
+  const SurfaceMapResult r = computeSurfaceMap(inputs, arguments.options);
+  const double seconds =
+    std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  printTimes(arguments, inputs, r, seconds, embeddingSeconds);
+  printPhases(r);
+  const bool certified = printResult(r);
+  printMetrics(inputs, r);
   return certified ? 0 : 3;
 }

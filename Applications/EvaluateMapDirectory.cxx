@@ -1,0 +1,324 @@
+#include "EvaluateMapDirectory.h"
+
+#include "CommandSupport.h"
+#include "Commands.h"
+#include "EvaluationOutputs.h"
+
+#include "vtkPointData.h"
+#include "vtkPolyData.h"
+#include "vtkSmartPointer.h"
+
+#include "vtk_jsoncpp.h"
+
+#include <cstdio>
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
+
+namespace surfacemap
+{
+
+namespace
+{
+
+std::string mapFile(const std::string& directory, const char* stem, int i)
+{
+  return directory + "/" + mapFileName(stem, i);
+}
+
+// The meshes of a map directory: input i, T lifted onto input i (common_i)
+// and input 0 mapped onto input i (mapped_i).
+struct MapMeshes
+{
+  std::string directory;
+  std::vector<std::string> inputFiles;
+  std::vector<vtkSmartPointer<vtkPolyData>> inputs, common, mapped;
+
+  int size() const { return static_cast<int>(this->inputFiles.size()); }
+  std::string file(const char* stem, int i) const { return mapFile(this->directory, stem, i); }
+};
+
+// The number of inputs of the map in `directory` (common_<i>.vtp, each with
+// its mapped_<i>.vtp); 0 after printing why it is no map directory.
+int countInputs(const std::string& directory)
+{
+  const auto file = [&directory](const char* stem, int i) { return mapFile(directory, stem, i); };
+  if (!isFile(file("common", 0)))
+  {
+    printError(directory + " has no common_0.vtp: not an output directory of 'surfacemap map'");
+    return 0;
+  }
+  int n = 0;
+  while (isFile(file("common", n)))
+  {
+    ++n;
+  }
+  for (int i = 0; i < n; ++i)
+  {
+    if (!isFile(file("mapped", i)))
+    {
+      printError(directory + " has common_" + std::to_string(i) + ".vtp but no mapped_" +
+        std::to_string(i) + ".vtp (the exact map)");
+      return 0;
+    }
+  }
+  return n;
+}
+
+// The input files `report.json` names, in order. Throws std::runtime_error
+// naming the file and what is wrong with it.
+std::vector<std::string> reportedInputs(const std::string& report)
+{
+  std::ifstream in(report);
+  if (!in)
+  {
+    throw std::runtime_error(
+      report + " is missing: it names the map's inputs (or give them with --inputs A B ...)");
+  }
+  Json::CharReaderBuilder builder;
+  Json::Value root;
+  std::string problems;
+  if (!Json::parseFromStream(builder, in, &root, &problems))
+  {
+    while (!problems.empty() && (problems.back() == '\n' || problems.back() == ' '))
+    {
+      problems.pop_back();
+    }
+    throw std::runtime_error(report + " is not valid JSON: " + problems);
+  }
+  const Json::Value& inputs = root["inputs"];
+  std::vector<std::string> files;
+  for (Json::ArrayIndex i = 0; inputs.isArray() && i < inputs.size(); ++i)
+  {
+    if (!inputs[i]["file"].isString())
+    {
+      throw std::runtime_error(
+        report + ": inputs[" + std::to_string(i) + "] has no \"file\" (give --inputs A B ...)");
+    }
+    files.push_back(inputs[i]["file"].asString());
+  }
+  if (files.empty())
+  {
+    throw std::runtime_error(report + " lists no inputs (give --inputs A B ...)");
+  }
+  return files;
+}
+
+// The map's n input files: those given, or those report.json names. Throws
+// std::runtime_error for a report that is missing, invalid or of another
+// count, UsageError for --inputs of another count.
+void resolveInputs(const std::string& directory, int n, std::vector<std::string>& inputFiles)
+{
+  if (inputFiles.empty())
+  {
+    inputFiles = reportedInputs(directory + "/report.json");
+    if (static_cast<int>(inputFiles.size()) != n)
+    {
+      throw std::runtime_error(directory + "/report.json lists " +
+        std::to_string(inputFiles.size()) + " inputs but the directory holds " + std::to_string(n) +
+        " (common_0.vtp ... common_" + std::to_string(n - 1) + ".vtp)");
+    }
+  }
+  else if (static_cast<int>(inputFiles.size()) != n)
+  {
+    throw UsageError{ "--inputs needs one file per input of the map (" + std::to_string(n) +
+      " in " + directory + ", " + std::to_string(inputFiles.size()) + " given)" };
+  }
+}
+
+// Reads every input, common_<i> and mapped_<i>; false after printing why
+// (also when common_<i> has no SpherePosition, which the certificate needs).
+bool readMeshes(MapMeshes& maps)
+{
+  for (int i = 0; i < maps.size(); ++i)
+  {
+    maps.inputs.push_back(readMesh(maps.inputFiles[i]));
+    maps.common.push_back(readMesh(maps.file("common", i)));
+    maps.mapped.push_back(readMesh(maps.file("mapped", i)));
+    if (!maps.inputs.back() || !maps.common.back() || !maps.mapped.back())
+    {
+      return false;
+    }
+  }
+  for (int i = 0; i < maps.size(); ++i)
+  {
+    if (!maps.common[i]->GetPointData()->GetArray("SpherePosition"))
+    {
+      printError(maps.file("common", i) +
+        " has no SpherePosition point array: the certificate cannot be checked");
+      return false;
+    }
+  }
+  return true;
+}
+
+// Prints the directory's line; returns the summary's opening.
+std::string reportDirectory(const MapMeshes& maps)
+{
+  const int n = maps.size();
+  vtkPolyData* common = maps.common[0];
+  std::printf("maps in %s: %d input%s, T has %lld vertices (%lld triangles)\n",
+    maps.directory.c_str(),
+    n,
+    n == 1 ? "" : "s",
+    static_cast<long long>(common->GetNumberOfPoints()),
+    static_cast<long long>(common->GetNumberOfPolys()));
+  std::ostringstream json;
+  json << "{\n  \"directory\": " << jsonString(maps.directory) << ",\n  \"inputs\": [";
+  for (int i = 0; i < n; ++i)
+  {
+    json << (i ? ", " : "") << jsonString(maps.inputFiles[i]);
+  }
+  json << "],\n  \"common_triangulation\": { \"vertices\": " << common->GetNumberOfPoints()
+       << ", \"triangles\": " << common->GetNumberOfPolys() << " },\n  \"maps\": [";
+  return json.str();
+}
+
+// One line per measured map, like `surfacemap map` prints.
+void printMap(const char* what, int target, vtkPolyData* result)
+{
+  std::printf("  %-17s 0 -> %d: SD %.4f, a1.5 %.3f, a2 %.3f, max %.3g, H %.3f%% / %.3f%%, "
+              "two-sided %.3f%% / %.3f%%, min angle %.1f (mean %.1f)\n",
+    what,
+    target,
+    summaryValue(result, "SymmetricDirichlet"),
+    summaryValue(result, "AreaBelow1.5"),
+    summaryValue(result, "AreaBelow2"),
+    summaryValue(result, "MaxDistortion"),
+    summaryValue(result, "HausdorffSource"),
+    summaryValue(result, "HausdorffTarget"),
+    summaryValue(result, "TwoSidedDistanceSource"),
+    summaryValue(result, "TwoSidedDistanceTarget"),
+    summaryValue(result, "MinAngleTarget"),
+    summaryValue(result, "MeanMinAngleTarget"));
+}
+
+// Maps 0 -> j measured: the approximating map (common_0 -> common_j, whose
+// evaluation holds the certificate) and the exact map (input 0 -> mapped_j).
+struct MeasuredMaps
+{
+  vtkSmartPointer<vtkPolyData> approximating, exact;
+};
+
+// Measures maps 0 -> j. Throws std::runtime_error naming them when they
+// cannot be measured (inputs of another connectivity).
+MeasuredMaps measureMaps(const MapMeshes& maps, int j)
+{
+  try
+  {
+    return { measureMap(maps.common[0], maps.common[j], maps.inputs[0], maps.inputs[j]),
+      measureMap(maps.inputs[0], maps.mapped[j], maps.inputs[0], maps.inputs[j]) };
+  }
+  catch (const std::invalid_argument& e)
+  {
+    throw std::runtime_error(
+      "map 0 -> " + std::to_string(j) + " in " + maps.directory + ": " + e.what());
+  }
+}
+
+// Prints maps 0 -> j and their certificate; returns whether it holds.
+bool reportMaps(int j, const MeasuredMaps& measured)
+{
+  const bool certified = summaryValue(measured.approximating, "Bijective") == 1.0;
+  printMap("approximating map", j, measured.approximating);
+  printMap("exact map", j, measured.exact);
+  std::printf("  certificate 0 -> %d: %s\n",
+    j,
+    certified ? "bijective (T's embeddings, exact predicates)" : "FAILED");
+  return certified;
+}
+
+// Writes each map 0 -> j's tables and view as <outputDir>/<kind>_<j>*;
+// returns the summary's entry for j. Throws std::runtime_error naming a file
+// that cannot be written.
+std::string writeMaps(const MapMeshes& maps,
+  int j,
+  const MeasuredMaps& measured,
+  bool certified,
+  const std::string& outputDir)
+{
+  std::ostringstream json;
+  json << (j > 1 ? ",\n" : "\n") << "    {\n      \"source\": 0,\n      \"target\": " << j
+       << ",\n      \"certificate\": { \"bijective\": " << (certified ? "true" : "false")
+       << ", \"non_positive_triangles\": "
+       << jsonNumber(summaryValue(measured.approximating, "NonPositiveTriangles")) << " }";
+  struct Output
+  {
+    const char* kind;
+    vtkPolyData* result;
+    vtkPolyData* source;
+    vtkPolyData* target;
+  };
+  const Output outputs[] = {
+    { "approximating", measured.approximating, maps.common[0], maps.common[j] },
+    { "exact", measured.exact, maps.inputs[0], maps.mapped[j] }
+  };
+  for (const Output& map : outputs)
+  {
+    const std::string stem = outputDir + "/" + map.kind + "_" + std::to_string(j);
+    writeEvaluationTables(map.result, stem + "_");
+    writePolyDataAtomically(targetWithFigures(map.target, map.source, map.result), stem + ".vtp");
+    json << ",\n      \"" << map.kind
+         << "_map\": {\n        \"triangles\": " << map.result->GetNumberOfCells() << ",\n"
+         << summaryMembers(map.result, "        ") << "\n      }";
+  }
+  json << "\n    }";
+  return json.str();
+}
+
+// Measures, prints and writes every map 0 -> j, then summary.json; returns
+// whether every certificate holds. Throws std::runtime_error for maps that
+// cannot be measured or a file that cannot be written.
+bool evaluateMaps(const MapMeshes& maps, const std::string& outputDir, std::string summary)
+{
+  bool allCertified = true;
+  for (int j = maps.size() > 1 ? 1 : 0; j < maps.size(); ++j)
+  {
+    const MeasuredMaps measured = measureMaps(maps, j);
+    const bool certified = reportMaps(j, measured);
+    allCertified = allCertified && certified;
+    summary += writeMaps(maps, j, measured, certified, outputDir);
+  }
+  writeFileAtomically(outputDir + "/summary.json", summary + "\n  ]\n}\n");
+  return allCertified;
+}
+
+} // namespace
+
+int evaluateMapDirectory(const std::string& directory,
+  std::vector<std::string> inputFiles,
+  std::string outputDir)
+{
+  const int n = countInputs(directory);
+  if (outputDir.empty())
+  {
+    outputDir = directory;
+  }
+  if (n == 0 || !succeeds([&] { resolveInputs(directory, n, inputFiles); }) ||
+    !succeeds([&] { createOutputDirectory(outputDir, "summary.json"); }))
+  {
+    return ExitBadInput;
+  }
+  MapMeshes maps{ directory, inputFiles, {}, {}, {} };
+  if (!readMeshes(maps))
+  {
+    return ExitBadInput;
+  }
+  const std::string summary = reportDirectory(maps);
+  bool certified = false;
+  if (!succeeds([&] { certified = evaluateMaps(maps, outputDir, summary); }))
+  {
+    return ExitBadInput;
+  }
+  std::printf("  written to %s: summary.json, approximating_<j>_*.csv, approximating_<j>.vtp, "
+              "exact_<j>_*.csv, exact_<j>.vtp\n",
+    outputDir.c_str());
+  if (!certified)
+  {
+    printError("the map in " + directory + " is not certified bijective");
+    return ExitNoCertifiedResult;
+  }
+  return ExitOk;
+}
+
+} // namespace surfacemap

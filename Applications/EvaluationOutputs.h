@@ -1,0 +1,31 @@
+// surfacemap evaluate: the files of one measured map (tables, summary, view).
+#pragma once
+
+#include "vtkSmartPointer.h"
+
+#include <string>
+
+class vtkPolyData;
+
+namespace surfacemap
+{
+
+/// The summary figures present in `result` (an output of
+/// vtkSurfaceMapEvaluation) as JSON object members, one a line, each line
+/// starting with `indent`.
+std::string summaryMembers(vtkPolyData* result, const std::string& indent);
+
+/// Writes <prefix>triangles.csv (per triangle s1, s2, distortion, unit areas)
+/// and <prefix>distortion_curve.csv (area fraction below each distortion).
+/// Throws std::runtime_error naming a file that cannot be written.
+void writeEvaluationTables(vtkPolyData* result, const std::string& prefix);
+
+/// `target` with the evaluation's per-triangle figures and summary, and the
+/// point array SourcePosition: the source's points centred on its bounding box
+/// and scaled to a longest side of 2, so a checkerboard of them (drawn on the
+/// target) shows how the map carries a regular pattern across.
+vtkSmartPointer<vtkPolyData> targetWithFigures(vtkPolyData* target,
+  vtkPolyData* source,
+  vtkPolyData* result);
+
+} // namespace surfacemap
