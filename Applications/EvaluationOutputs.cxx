@@ -23,7 +23,7 @@ namespace
 // The evaluation's per-triangle arrays and their CSV columns.
 const char* const TriangleArrays[] = { "SingularValueMax",
   "SingularValueMin",
-  "Distortion",
+  "MaxStretch",
   "AreaSource",
   "AreaTarget" };
 const char* const TriangleColumns = "triangle,s1,s2,distortion,area_source,area_target\n";

@@ -167,7 +167,7 @@ void addDistortion(vtkPolyData* output, const surfacemaps::MapMetrics& metrics)
 {
   addCellArray(output, "SingularValueMax", metrics.s1);
   addCellArray(output, "SingularValueMin", metrics.s2);
-  addCellArray(output, "Distortion", metrics.distortion);
+  addCellArray(output, "MaxStretch", metrics.distortion);
   addCellArray(output, "AreaSource", metrics.areaP);
   addCellArray(output, "AreaTarget", metrics.areaQ);
   addField(output, "SymmetricDirichlet", metrics.symmetricDirichlet);

@@ -17,7 +17,8 @@
  * edge midpoints, centroids) to the other mesh, in the same unit.
  *
  * Output: the source mesh with cell data "SingularValueMax", "SingularValueMin",
- * "Distortion" (max(s1, 1/s2)), "AreaSource", "AreaTarget" (unit-area areas), and
+ * "MaxStretch" (max(s1, 1/s2): the distortion of DESIGN.md section 6; named apart
+ * from vtkSurfaceMapFilter's "Distortion", a symmetric Dirichlet density), "AreaSource", "AreaTarget" (unit-area areas), and
  * field data "SymmetricDirichlet" (1/4 sum area_Q (s1^2+s2^2) + area_P
  * (s1^-2+s2^-2); 1 for an isometry), "AreaBelow1.5", "AreaBelow2" (area fraction
  * of the source with distortion below 1.5 and 2), "MaxDistortion",

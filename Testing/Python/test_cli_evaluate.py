@@ -88,7 +88,7 @@ def test_evaluate_map_directory(map_dir, tmp_path):
         assert float(curve[50]["area_fraction_below"]) == pytest.approx(figures["AreaBelow1.5"], abs=1e-9)
         mesh = read_vtp(out / f"{kind}_1.vtp")
         assert mesh.GetNumberOfPolys() == rows
-        assert mesh.GetCellData().GetArray("Distortion").GetRange()[1] == pytest.approx(figures["MaxDistortion"])
+        assert mesh.GetCellData().GetArray("MaxStretch").GetRange()[1] == pytest.approx(figures["MaxDistortion"])
         positions = mesh.GetPointData().GetArray("SourcePosition")
         assert positions is not None and positions.GetNumberOfComponents() == 3
         assert max(positions.GetRange(k)[1] - positions.GetRange(k)[0] for k in range(3)) == pytest.approx(2.0)

@@ -1,7 +1,7 @@
 """Pictures of SurfaceMaps results: offscreen VTK rendering to PNG.
 
 ``render_distortion(mesh, path)`` colours a mesh by its per-triangle
-"Distortion" cell array (from vtkSurfaceMapEvaluation): 1 (no distortion) is
+"MaxStretch" cell array (from vtkSurfaceMapEvaluation: max(s1, 1/s2)): 1 (no distortion) is
 white, ``max_value`` and above dark red. ``render_checkerboard(mesh, path)``
 draws a checkerboard of the mesh's "SpherePosition" (or given) coordinates,
 so a map's effect on a regular pattern can be seen on any surface that
@@ -65,8 +65,8 @@ def _render(mesh, path, configure_mapper, size=(800, 600), azimuth=30.0, elevati
 
 
 def render_distortion(mesh, path, max_value=3.0, **view):
-    """PNG of `mesh` coloured by its "Distortion" cell array (1 white -> max_value red)."""
-    if mesh.GetCellData().GetArray("Distortion") is None:
+    """PNG of `mesh` coloured by its "MaxStretch" cell array (1 white -> max_value red)."""
+    if mesh.GetCellData().GetArray("MaxStretch") is None:
         raise ValueError("the mesh has no Distortion cell array (run vtkSurfaceMapEvaluation first)")
     table = vtkLookupTable()
     table.SetNumberOfTableValues(256)
@@ -80,7 +80,7 @@ def render_distortion(mesh, path, max_value=3.0, **view):
 
     def configure(mapper):
         mapper.SetScalarModeToUseCellFieldData()
-        mapper.SelectColorArray("Distortion")
+        mapper.SelectColorArray("MaxStretch")
         mapper.SetLookupTable(table)
         mapper.UseLookupTableScalarRangeOn()
         mapper.ScalarVisibilityOn()
