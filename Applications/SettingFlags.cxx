@@ -49,19 +49,15 @@ std::string formatted(int k, double value)
 /// The value of flag `option` for setting k; UsageError naming the range.
 double parseValue(int k, const std::string& option, const std::string& text)
 {
+  double value = 0.0;
+  if (vtkSurfaceMapFilter::ParseSettingValue(k, text.c_str(), &value))
+  {
+    return value;
+  }
   const int type = vtkSurfaceMapFilter::GetSettingType(k);
-  const double lo = vtkSurfaceMapFilter::GetSettingMinimum(k);
-  const double hi = vtkSurfaceMapFilter::GetSettingMaximum(k);
   if (type == vtkSurfaceMapFilter::SETTING_CHOICE)
   {
     const std::vector<std::string> names = choiceNames(k);
-    for (std::size_t c = 0; c < names.size(); ++c)
-    {
-      if (names[c] == text)
-      {
-        return static_cast<double>(c);
-      }
-    }
     std::string list;
     for (std::size_t c = 0; c < names.size(); ++c)
     {
@@ -69,23 +65,11 @@ double parseValue(int k, const std::string& option, const std::string& text)
     }
     throw UsageError{ option + " is " + list + ", not '" + text + "'" };
   }
-  std::size_t used = 0;
-  double value = std::nan("");
-  try
-  {
-    value = std::stod(text, &used);
-  }
-  catch (const std::exception&)
-  {
-    used = 0;
-  }
-  const bool whole = type == vtkSurfaceMapFilter::SETTING_COUNT;
-  if (used != text.size() || !(value >= lo && value <= hi) || (whole && value != std::floor(value)))
-  {
-    throw UsageError{ option + (whole ? " needs a whole number from " : " needs a number from ") +
-      number(lo) + " to " + number(hi) + ", not '" + text + "'" };
-  }
-  return value;
+  throw UsageError{ option +
+    (type == vtkSurfaceMapFilter::SETTING_COUNT ? " needs a whole number from "
+                                                : " needs a number from ") +
+    number(vtkSurfaceMapFilter::GetSettingMinimum(k)) + " to " +
+    number(vtkSurfaceMapFilter::GetSettingMaximum(k)) + ", not '" + text + "'" };
 }
 
 /// `text` wrapped to `width` columns, every line indented by `indent`.
@@ -111,7 +95,9 @@ std::string wrapped(const std::string& text, std::size_t indent, std::size_t wid
 
 } // namespace
 
-bool parseSettingFlag(vtkSurfaceMapFilter* map, const std::vector<std::string>& args, std::size_t& i)
+bool parseSettingFlag(vtkSurfaceMapFilter* map,
+  const std::vector<std::string>& args,
+  std::size_t& i)
 {
   const std::string& arg = args[i];
   for (int k = 0; k < vtkSurfaceMapFilter::GetNumberOfSettings(); ++k)
@@ -197,8 +183,9 @@ std::string settingsJson(vtkSurfaceMapFilter* map)
     json += (k == 0 ? " " : ", ") + jsonString(key) + ": " + text;
   }
   json += ", \"sizing_mode\": " +
-    jsonString(map->GetSizingMode() == vtkSurfaceMapFilter::SIZING_CURVATURE ? "curvature"
-                                                                             : "array_or_curvature");
+    jsonString(map->GetSizingMode() == vtkSurfaceMapFilter::SIZING_CURVATURE
+        ? "curvature"
+        : "array_or_curvature");
   return json + " }";
 }
 

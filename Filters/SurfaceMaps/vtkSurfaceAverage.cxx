@@ -148,22 +148,6 @@ void addField(vtkPolyData* output,
   output->GetFieldData()->AddArray(array);
 }
 
-// Every input present; throws std::invalid_argument otherwise.
-void checkInputs(const std::vector<vtkPolyData*>& inputs)
-{
-  if (inputs.empty())
-  {
-    throw std::invalid_argument("no input");
-  }
-  for (std::size_t i = 0; i < inputs.size(); ++i)
-  {
-    if (!inputs[i])
-    {
-      throw std::invalid_argument("input " + std::to_string(i) + " is not a vtkPolyData");
-    }
-  }
-}
-
 // The input weights normalised to sum 1; throws std::invalid_argument unless
 // finite, >= 0 and not all 0.
 std::vector<double> normalisedWeights(vtkSurfaceAverage* self,
@@ -325,7 +309,7 @@ int vtkSurfaceAverage::RequestData(vtkInformation*,
     policy,
     [&]
     {
-      checkInputs(inputs);
+      vtkSurfaceMapsCombination::CheckPresent(inputs, "input");
       const std::vector<double> weights = normalisedWeights(this, inputs);
       report(0.0, "Checking the connectivity");
       vtkSurfaceMapsCombination::CheckSameConnectivity(inputs, "input");

@@ -325,6 +325,11 @@ double vtkSurfaceMapFilter::GetSettingDefault(int i)
   return settingAt(i) ? settingAt(i)->defaultValue() : std::nan("");
 }
 
+bool vtkSurfaceMapFilter::ParseSettingValue(int i, const char* text, double* value)
+{
+  return settingAt(i) && text && value && settingAt(i)->parse(text, *value);
+}
+
 double vtkSurfaceMapFilter::GetSetting(int i)
 {
   return settingAt(i) ? settingAt(i)->get(this->Internals->Options) : std::nan("");

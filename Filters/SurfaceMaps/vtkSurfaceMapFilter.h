@@ -457,6 +457,11 @@ public:
   static double GetSettingMinimum(int i);
   static double GetSettingMaximum(int i);
   static double GetSettingDefault(int i);
+  /**
+   * Reads setting i's value as a person writes it (a choice's name, a number
+   * in the range, whole for counts) into `value`; false if `text` is none.
+   */
+  static bool ParseSettingValue(int i, const char* text, double* value);
   ///@}
 
   ///@{

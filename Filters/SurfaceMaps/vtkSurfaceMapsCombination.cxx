@@ -333,3 +333,20 @@ void vtkSurfaceMapsCombination::IndexedValues::Print(ostream& os, const char* wh
     os << " " << v.first << ": " << v.second;
   }
 }
+
+void vtkSurfaceMapsCombination::CheckPresent(const std::vector<vtkPolyData*>& inputs,
+  const char* what)
+{
+  if (inputs.empty())
+  {
+    throw std::invalid_argument(std::string("no ") + what);
+  }
+  for (std::size_t i = 0; i < inputs.size(); ++i)
+  {
+    if (!inputs[i])
+    {
+      throw std::invalid_argument(
+        std::string(what) + " " + std::to_string(i) + " is not a vtkPolyData");
+    }
+  }
+}

@@ -37,6 +37,10 @@ class vtkPolyData;
 class vtkSurfaceMapsCombination
 {
 public:
+  /// Throws std::invalid_argument "no <what>" when `inputs` is empty and
+  /// "<what> k is not a vtkPolyData" for the first missing one.
+  static void CheckPresent(const std::vector<vtkPolyData*>& inputs, const char* what);
+
   /// Values set per index (input weights, keyframe times); an index that was
   /// not set takes a default its owner supplies.
   class IndexedValues

@@ -173,22 +173,6 @@ std::vector<double> keyframeTimes(vtkSurfaceSequenceInterpolator* self, int n)
   return t;
 }
 
-// Every keyframe present; throws std::invalid_argument otherwise.
-void checkKeyframes(const std::vector<vtkPolyData*>& inputs)
-{
-  if (inputs.empty())
-  {
-    throw std::invalid_argument("no keyframe");
-  }
-  for (std::size_t k = 0; k < inputs.size(); ++k)
-  {
-    if (!inputs[k])
-    {
-      throw std::invalid_argument("keyframe " + std::to_string(k) + " is not a vtkPolyData");
-    }
-  }
-}
-
 // The requested time clamped into the keyframe range (the first keyframe's
 // time when none is requested).
 double clampedTime(const std::vector<double>& t, double requested)
@@ -272,7 +256,7 @@ int vtkSurfaceSequenceInterpolator::RequestData(vtkInformation*,
     policy,
     [&]
     {
-      checkKeyframes(inputs);
+      vtkSurfaceMapsCombination::CheckPresent(inputs, "keyframe");
       const std::vector<double> t = keyframeTimes(this, n);
       this->SetProgressText("Interpolating");
       this->UpdateProgress(0.0);

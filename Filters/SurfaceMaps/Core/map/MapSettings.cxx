@@ -367,6 +367,34 @@ std::vector<std::string> MapSetting::choiceNames() const
   return names;
 }
 
+bool MapSetting::parse(const std::string& text, double& value) const
+{
+  const std::vector<std::string> names = this->choiceNames();
+  for (std::size_t c = 0; c < names.size(); ++c)
+  {
+    if (names[c] == text)
+    {
+      value = static_cast<double>(c);
+      return true;
+    }
+  }
+  if (this->kind == SettingKind::Choice)
+  {
+    return false;
+  }
+  std::size_t used = 0;
+  try
+  {
+    value = std::stod(text, &used);
+  }
+  catch (const std::exception&)
+  {
+    return false;
+  }
+  return used == text.size() && value >= this->minimum && value <= this->maximum &&
+    (this->kind == SettingKind::Real || value == std::round(value));
+}
+
 const std::vector<MapSetting>& mapSettings()
 {
   static const std::vector<MapSetting> table = buildTable();
@@ -411,28 +439,8 @@ bool parseSettingFlag(const std::vector<std::string>& args,
       throw std::invalid_argument(arg + " needs a value");
     }
     const std::string& text = args[++i];
-    const std::vector<std::string> names = s.choiceNames();
-    for (std::size_t c = 0; c < names.size(); ++c)
-    {
-      if (names[c] == text)
-      {
-        s.set(options, static_cast<double>(c));
-        return true;
-      }
-    }
-    std::size_t used = 0;
-    double value = std::nan("");
-    try
-    {
-      value = std::stod(text, &used);
-    }
-    catch (const std::exception&)
-    {
-      used = 0;
-    }
-    if (s.kind == SettingKind::Choice || used != text.size() ||
-      !(value >= s.minimum && value <= s.maximum) ||
-      (s.kind == SettingKind::Count && value != std::round(value)))
+    double value = 0.0;
+    if (!s.parse(text, value))
     {
       throw std::invalid_argument(arg + " takes " +
         (s.kind == SettingKind::Choice ? std::string(s.choices)

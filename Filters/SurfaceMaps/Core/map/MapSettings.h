@@ -52,6 +52,9 @@ struct MapSetting
   std::string format(double value) const;
   /// The choice names, in value order (empty unless a Choice).
   std::vector<std::string> choiceNames() const;
+  /// Reads a value as a person writes it: a choice's name, a number in the
+  /// range (whole for counts), for a switch 0 or 1. False if `text` is none.
+  bool parse(const std::string& text, double& value) const;
 };
 
 /// Every setting, in the order of SurfaceMapOptions.
