@@ -6,6 +6,7 @@
 #include "base/InputError.h"
 #include "embedding/SphereEmbedding.h"
 #include "geometry/SphericalTriangulation.h"
+#include "mesh/LandmarkValidation.h"
 #include "mesh/MeshValidation.h"
 
 #include "vtkDataArray.h"

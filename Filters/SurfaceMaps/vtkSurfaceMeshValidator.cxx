@@ -3,6 +3,7 @@
 #include "vtkSurfaceMapsConversion.h"
 #include "vtkSurfaceMapsErrorGuard.h"
 
+#include "mesh/LandmarkValidation.h"
 #include "mesh/MeshValidation.h"
 
 #include "vtkAlgorithm.h"

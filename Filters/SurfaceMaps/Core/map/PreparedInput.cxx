@@ -3,7 +3,7 @@
 #include "geometry/Rotation.h"
 #include "geometry/Sizing.h"
 #include "geometry/SphericalTriangulation.h"
-#include "mesh/MeshValidation.h"
+#include "mesh/LandmarkValidation.h"
 
 #include <algorithm>
 #include <cmath>

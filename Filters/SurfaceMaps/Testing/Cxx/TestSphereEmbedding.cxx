@@ -1,14 +1,13 @@
-#include "embedding/Decimation.h"
-#include "energy/EmbeddingEnergy.h"
 #include "FiniteDifferences.h"
-#include "mesh/MeshValidation.h"
+#include "embedding/Decimation.h"
+#include "embedding/SphereEmbedding.h"
+#include "energy/EmbeddingEnergy.h"
 #include "io/ObjReader.h"
-#include "optimisation/Objective.h"
 #include "io/OffReader.h"
 #include "io/PlyReader.h"
+#include "mesh/MeshValidation.h"
 #include "mesh/Primitives.h"
-#include "embedding/SphereEmbedding.h"
-#include "geometry/Rotation.h"
+#include "optimisation/Objective.h"
 
 #include <gtest/gtest.h>
 
@@ -235,21 +234,4 @@ TEST(SphereEmbedding, ProgressIsMonotoneAndAbortStops)
   options.progress = [&](double) { return ++calls < 3; };
   EXPECT_THROW(embedOnSphere(mesh, options), Aborted);
   EXPECT_EQ(calls, 3);
-}
-
-TEST(SphereEmbedding, BestRotationRecoversARotation)
-{
-  std::mt19937 rng(3);
-  std::normal_distribution<double> n;
-  const Eigen::Matrix3d R =
-    Eigen::AngleAxisd(0.7, Eigen::Vector3d(1, 2, 3).normalized()).toRotationMatrix();
-  std::vector<Eigen::Vector3d> from, to;
-  for (int k = 0; k < 5; ++k)
-  {
-    from.push_back(Eigen::Vector3d(n(rng), n(rng), n(rng)).normalized());
-    to.push_back(R * from.back());
-  }
-  const Eigen::Matrix3d found = bestRotation(from, to);
-  EXPECT_LT((found - R).norm(), 1e-12);
-  EXPECT_NEAR(found.determinant(), 1.0, 1e-12);
 }
