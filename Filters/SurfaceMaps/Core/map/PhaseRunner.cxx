@@ -73,59 +73,22 @@ MapPhaseReport PhaseRunner::run(const MapPhase& phase)
   bool reached = false;
   for (int it = 0; it < phase.iterations; ++it)
   {
-    auto clock = Clock::now();
-    if (this->T.weights.mesh > 0.0)
-    {
-      this->T.updateTargetLengths();
-    }
-    report.bookkeepingSeconds += secondsSince(clock);
-    RemeshingOptions remeshing;
-    if (phase.untilLandmarks && reached)
-    {
-      // Relaxing after the landmarks were reached: T keeps its vertices.
-      remeshing.collapse = false;
-      remeshing.split = false;
-    }
-    const RemeshingResult edits = remesh(this->T, remeshing);
-    report.splits += edits.splits;
-    report.collapses += edits.collapses;
-    report.flips += edits.flips;
-    report.remeshSeconds += edits.seconds;
-
-    clock = Clock::now();
-    CommonTriangulation::Snapshot snapshot;
-    SpherePoints points;
-    this->T.snapshot(snapshot, points, phase.lockLandmarks);
-    this->T.buildObjective(snapshot, this->Targets, objective);
-    report.bookkeepingSeconds += secondsSince(clock);
-    NewtonOptions newton;
-    newton.maxPointStep = this->Options.maxPointStep;
-    newton.acceptTrial = [&](const SpherePoints& trial) { return this->T.update(snapshot, trial); };
-    newton.log = this->Options.log;
-    const NewtonStepResult step = newtonStep(objective, points, solver, newton);
-    clock = Clock::now();
-    if (!this->T.update(snapshot, points))
-    {
-      throw std::logic_error("the accepted Newton step left an invalid embedding");
-    }
-    this->T.writeBack(snapshot, points);
-    report.bookkeepingSeconds += secondsSince(clock);
-
+    const RemeshingResult edits = this->remeshing(phase.untilLandmarks && reached, report);
+    const NewtonStepResult step = this->newtonIteration(phase, solver, objective, report);
     report.iterations = it + 1;
     report.energy = step.energyAfter;
     report.derivativeSeconds += step.derivativeSeconds;
     report.solveSeconds += step.solveSeconds;
     report.lineSearchSeconds += step.lineSearchSeconds;
-    report.vertices = snapshot.vertices;
 
     std::ostringstream message;
-    message << name << " iteration " << it + 1 << ": " << snapshot.vertices << " vertices, E "
+    message << name << " iteration " << it + 1 << ": " << report.vertices << " vertices, E "
             << step.energyAfter << ", decrement " << step.decrement << ", step " << step.step
             << " (" << step.lineSearchTrials << " trials"
             << (step.gradientFallback ? ", gradient" : "") << "), edits " << edits.splits << "/"
             << edits.collapses << "/" << edits.flips;
     this->Options.log(Logger::Detail, message.str());
-    this->reportProgress(phase, it + 1, snapshot.vertices, step.energyAfter);
+    this->reportProgress(phase, it + 1, report.vertices, step.energyAfter);
 
     const bool settled = edits.splits + edits.collapses + edits.flips == 0 &&
       step.decrement < this->Options.decrementTolerance;
@@ -160,6 +123,56 @@ MapPhaseReport PhaseRunner::run(const MapPhase& phase)
         std::to_string(this->Options.landmarkTolerance) + "); going on");
   }
   return report;
+}
+
+RemeshingResult PhaseRunner::remeshing(bool relaxing, MapPhaseReport& report)
+{
+  const auto clock = Clock::now();
+  if (this->T.weights.mesh > 0.0)
+  {
+    this->T.updateTargetLengths();
+  }
+  report.bookkeepingSeconds += secondsSince(clock);
+  RemeshingOptions remeshing;
+  if (relaxing)
+  {
+    // Relaxing after the landmarks were reached: T keeps its vertices.
+    remeshing.collapse = false;
+    remeshing.split = false;
+  }
+  const RemeshingResult edits = remesh(this->T, remeshing);
+  report.splits += edits.splits;
+  report.collapses += edits.collapses;
+  report.flips += edits.flips;
+  report.remeshSeconds += edits.seconds;
+  return edits;
+}
+
+NewtonStepResult PhaseRunner::newtonIteration(const MapPhase& phase,
+  LinearSolver& solver,
+  Objective& objective,
+  MapPhaseReport& report)
+{
+  auto clock = Clock::now();
+  CommonTriangulation::Snapshot snapshot;
+  SpherePoints points;
+  this->T.snapshot(snapshot, points, phase.lockLandmarks);
+  this->T.buildObjective(snapshot, this->Targets, objective);
+  report.bookkeepingSeconds += secondsSince(clock);
+  NewtonOptions newton;
+  newton.maxPointStep = this->Options.maxPointStep;
+  newton.acceptTrial = [&](const SpherePoints& trial) { return this->T.update(snapshot, trial); };
+  newton.log = this->Options.log;
+  const NewtonStepResult step = newtonStep(objective, points, solver, newton);
+  clock = Clock::now();
+  if (!this->T.update(snapshot, points))
+  {
+    throw std::logic_error("the accepted Newton step left an invalid embedding");
+  }
+  this->T.writeBack(snapshot, points);
+  report.bookkeepingSeconds += secondsSince(clock);
+  report.vertices = snapshot.vertices;
+  return step;
 }
 
 void PhaseRunner::reportProgress(const MapPhase& phase, int iteration, int vertices, double energy)

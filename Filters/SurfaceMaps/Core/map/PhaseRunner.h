@@ -4,6 +4,8 @@
 #include "map/CommonTriangulation.h"
 #include "map/MapOptions.h"
 #include "map/MapPhase.h"
+#include "map/Remeshing.h"
+#include "optimisation/NewtonSolver.h"
 
 #include <Eigen/Core>
 
@@ -43,6 +45,15 @@ public:
   const std::vector<std::map<int, Eigen::Vector3d>>& targets() const { return this->Targets; }
 
 private:
+  /// Target lengths, then the improving splits, collapses and flips (only
+  /// flips when `relaxing`), counted into the report.
+  RemeshingResult remeshing(bool relaxing, MapPhaseReport& report);
+  /// One projected-Newton step on every embedding of T, written back;
+  /// times and T's size into the report.
+  NewtonStepResult newtonIteration(const MapPhase& phase,
+    LinearSolver& solver,
+    Objective& objective,
+    MapPhaseReport& report);
   void reportProgress(const MapPhase& phase, int iteration, int vertices, double energy);
 
   CommonTriangulation& T;
