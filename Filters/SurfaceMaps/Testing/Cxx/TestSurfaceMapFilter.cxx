@@ -191,53 +191,89 @@ TEST(SurfaceMapFilter, OutputPortsFollowTheConnections)
   EXPECT_EQ(filter->GetNumberOfOutputPorts(), 1);
 }
 
-TEST(SurfaceMapFilter, ThreeInputPipeline)
+// One map of three inputs through a pipeline, computed once and checked by
+// the tests below, one behaviour each.
+class ThreeInputPipeline : public ::testing::Test
 {
-  vtkSmartPointer<vtkPolyData> inputs[3] = {
-    read("ellipsoid_coarse.stl"), ellipsoid(2, 1.2, 1.0, 0.7), ellipsoid(2, 1.0, 0.9, 0.6, 0.3)
-  };
-  // A point array that is a linear function of position: interpolated at the
-  // lifted points it must equal their coordinate.
-  vtkNew<vtkDoubleArray> height;
-  height->SetName("Height");
-  for (vtkIdType v = 0; v < inputs[1]->GetNumberOfPoints(); ++v)
+protected:
+  static void SetUpTestSuite()
   {
-    height->InsertNextValue(inputs[1]->GetPoint(v)[2]);
-  }
-  inputs[1]->GetPointData()->AddArray(height);
-  for (auto& input : inputs)
-  {
-    addExtremeLandmarks(input);
+    Inputs[0] = read("ellipsoid_coarse.stl");
+    Inputs[1] = ellipsoid(2, 1.2, 1.0, 0.7);
+    Inputs[2] = ellipsoid(2, 1.0, 0.9, 0.6, 0.3);
+    // A point array that is a linear function of position: interpolated at
+    // the lifted points it must equal their coordinate.
+    vtkNew<vtkDoubleArray> height;
+    height->SetName("Height");
+    for (vtkIdType v = 0; v < Inputs[1]->GetNumberOfPoints(); ++v)
+    {
+      height->InsertNextValue(Inputs[1]->GetPoint(v)[2]);
+    }
+    Inputs[1]->GetPointData()->AddArray(height);
+    for (auto& input : Inputs)
+    {
+      addExtremeLandmarks(input);
+    }
+    Filter = vtkSmartPointer<vtkSurfaceMapFilter>::New();
+    useShortSchedule(Filter);
+    watch(Filter, Log);
+    // Downstream consumers connected to every output port before any update.
+    for (int i = 0; i < 3; ++i)
+    {
+      Producers[i] = vtkSmartPointer<vtkTrivialProducer>::New();
+      Producers[i]->SetOutput(Inputs[i]);
+      Filter->AddInputConnection(0, Producers[i]->GetOutputPort());
+    }
+    Downstream = vtkSmartPointer<vtkSurfaceMapEvaluation>::New();
+    Downstream->SetInputConnection(0, Filter->GetOutputPort(0));
+    Downstream->SetInputConnection(1, Filter->GetOutputPort(2));
+    Downstream->Update();
   }
 
-  vtkNew<vtkSurfaceMapFilter> filter;
-  useShortSchedule(filter);
-  Events events;
-  watch(filter, events);
-  // Downstream consumers connected to every output port before any update.
-  vtkNew<vtkTrivialProducer> producers[3];
-  vtkNew<vtkSurfaceMapEvaluation> downstream;
-  for (int i = 0; i < 3; ++i)
+  static void TearDownTestSuite()
   {
-    producers[i]->SetOutput(inputs[i]);
-    filter->AddInputConnection(0, producers[i]->GetOutputPort());
+    Downstream = nullptr;
+    Filter = nullptr;
+    for (int i = 0; i < 3; ++i)
+    {
+      Producers[i] = nullptr;
+      Inputs[i] = nullptr;
+    }
   }
-  downstream->SetInputConnection(0, filter->GetOutputPort(0));
-  downstream->SetInputConnection(1, filter->GetOutputPort(2));
-  downstream->Update();
-  ASSERT_TRUE(events.Errors.empty()) << events.Errors.front();
-  EXPECT_GE(downstream->GetSummaryValue("SymmetricDirichlet"), 1.0);
-  EXPECT_EQ(downstream->GetSummaryValue("Bijective"), 1.0);
 
-  vtkPolyData* outputs[3] = { filter->GetOutput(0), filter->GetOutput(1), filter->GetOutput(2) };
-  const vtkIdType nv = outputs[0]->GetNumberOfPoints();
+  void SetUp() override { ASSERT_TRUE(Log.Errors.empty()) << Log.Errors.front(); }
+
+  static vtkPolyData* output(int i) { return Filter->GetOutput(i); }
+
+  static vtkSmartPointer<vtkPolyData> Inputs[3];
+  static vtkSmartPointer<vtkTrivialProducer> Producers[3];
+  static vtkSmartPointer<vtkSurfaceMapFilter> Filter;
+  static vtkSmartPointer<vtkSurfaceMapEvaluation> Downstream;
+  static Events Log;
+};
+
+vtkSmartPointer<vtkPolyData> ThreeInputPipeline::Inputs[3];
+vtkSmartPointer<vtkTrivialProducer> ThreeInputPipeline::Producers[3];
+vtkSmartPointer<vtkSurfaceMapFilter> ThreeInputPipeline::Filter;
+vtkSmartPointer<vtkSurfaceMapEvaluation> ThreeInputPipeline::Downstream;
+Events ThreeInputPipeline::Log;
+
+TEST_F(ThreeInputPipeline, DownstreamSeesACertifiedMap)
+{
+  EXPECT_GE(Downstream->GetSummaryValue("SymmetricDirichlet"), 1.0);
+  EXPECT_EQ(Downstream->GetSummaryValue("Bijective"), 1.0);
+}
+
+TEST_F(ThreeInputPipeline, OutputsShareTAndTheFieldData)
+{
+  const vtkIdType nv = output(0)->GetNumberOfPoints();
   ASSERT_GT(nv, 4);
   for (int i = 0; i < 3; ++i)
   {
     SCOPED_TRACE("output " + std::to_string(i));
-    vtkPolyData* out = outputs[i];
+    vtkPolyData* out = output(i);
     ASSERT_EQ(out->GetNumberOfPoints(), nv);
-    EXPECT_EQ(connectivity(out), connectivity(outputs[0]));
+    EXPECT_EQ(connectivity(out), connectivity(output(0)));
     EXPECT_EQ(fieldValue(out, "InputIndex"), i);
     EXPECT_EQ(fieldValue(out, "Bijective"), 1.0);
     EXPECT_EQ(fieldValue(out, "CommonVertices"), nv);
@@ -253,8 +289,16 @@ TEST(SurfaceMapFilter, ThreeInputPipeline)
     EXPECT_LE(fieldValue(out, "PhaseIterations", 1), 3);
     EXPECT_LE(fieldValue(out, "PhaseIterations", 2), 3);
     EXPECT_GT(fieldValue(out, "PhaseSeconds", 2), 0.0);
+  }
+}
 
-    // Embedding g_i: unit vectors, certified independently.
+TEST_F(ThreeInputPipeline, EveryEmbeddingIsCertifiedAndLiesOnItsInput)
+{
+  for (int i = 0; i < 3; ++i)
+  {
+    SCOPED_TRACE("output " + std::to_string(i));
+    vtkPolyData* out = output(i);
+    const vtkIdType nv = out->GetNumberOfPoints();
     vtkDataArray* sphere = out->GetPointData()->GetArray("SpherePosition");
     ASSERT_NE(sphere, nullptr);
     std::vector<Eigen::Vector3d> g(nv);
@@ -264,15 +308,21 @@ TEST(SurfaceMapFilter, ThreeInputPipeline)
       EXPECT_NEAR(g[v].norm(), 1.0, 1e-12);
     }
     EXPECT_TRUE(surfacemaps::certifyBijective(g, triangles(out)).bijective);
+    expectOnSource(out, Inputs[i]);
+  }
+}
 
-    expectOnSource(out, inputs[i]);
-
-    // Landmarks: four ids, each at its input's landmark vertex (kept exactly).
+TEST_F(ThreeInputPipeline, LandmarksAreKeptExactly)
+{
+  for (int i = 0; i < 3; ++i)
+  {
+    SCOPED_TRACE("output " + std::to_string(i));
+    vtkPolyData* out = output(i);
     vtkDataArray* landmarks = out->GetPointData()->GetArray("Landmarks");
     ASSERT_NE(landmarks, nullptr);
-    vtkDataArray* inputLandmarks = inputs[i]->GetPointData()->GetArray("Landmarks");
+    vtkDataArray* inputLandmarks = Inputs[i]->GetPointData()->GetArray("Landmarks");
     int found = 0;
-    for (vtkIdType v = 0; v < nv; ++v)
+    for (vtkIdType v = 0; v < out->GetNumberOfPoints(); ++v)
     {
       const int id = static_cast<int>(landmarks->GetTuple1(v));
       if (id < 0)
@@ -280,47 +330,55 @@ TEST(SurfaceMapFilter, ThreeInputPipeline)
         continue;
       }
       ++found;
-      for (vtkIdType w = 0; w < inputs[i]->GetNumberOfPoints(); ++w)
+      for (vtkIdType w = 0; w < Inputs[i]->GetNumberOfPoints(); ++w)
       {
         if (static_cast<int>(inputLandmarks->GetTuple1(w)) == id)
         {
           const double* p = out->GetPoint(v);
-          const double* q = inputs[i]->GetPoint(w);
+          const double* q = Inputs[i]->GetPoint(w);
           EXPECT_NEAR(
-            std::hypot(p[0] - q[0], p[1] - q[1], p[2] - q[2]), 0.0, 1e-9 * inputs[i]->GetLength())
+            std::hypot(p[0] - q[0], p[1] - q[1], p[2] - q[2]), 0.0, 1e-9 * Inputs[i]->GetLength())
             << "landmark " << id;
         }
       }
     }
     EXPECT_EQ(found, 4);
   }
+}
 
+TEST_F(ThreeInputPipeline, InputArraysAreInterpolated)
+{
   // The input's own arrays, interpolated; its Landmarks are not (T has its own).
-  vtkDataArray* interpolated = outputs[1]->GetPointData()->GetArray("Height");
+  vtkDataArray* interpolated = output(1)->GetPointData()->GetArray("Height");
   ASSERT_NE(interpolated, nullptr);
-  for (vtkIdType v = 0; v < nv; ++v)
+  for (vtkIdType v = 0; v < output(1)->GetNumberOfPoints(); ++v)
   {
-    ASSERT_NEAR(interpolated->GetTuple1(v), outputs[1]->GetPoint(v)[2], 1e-12);
+    ASSERT_NEAR(interpolated->GetTuple1(v), output(1)->GetPoint(v)[2], 1e-12);
   }
-  EXPECT_EQ(outputs[0]->GetPointData()->GetArray("Height"), nullptr);
+  EXPECT_EQ(output(0)->GetPointData()->GetArray("Height"), nullptr);
+}
 
-  vtkDataArray* first = outputs[0]->GetCellData()->GetArray("Distortion");
+TEST_F(ThreeInputPipeline, DistortionIsTheEvaluations)
+{
+  vtkDataArray* first = output(0)->GetCellData()->GetArray("Distortion");
   ASSERT_NE(first, nullptr);
   for (vtkIdType t = 0; t < first->GetNumberOfTuples(); ++t)
   {
     ASSERT_EQ(first->GetTuple1(t), 1.0);
   }
-  expectDistortionMatchesEvaluation(outputs[0], outputs[1]);
-  expectDistortionMatchesEvaluation(outputs[0], outputs[2]);
+  expectDistortionMatchesEvaluation(output(0), output(1));
+  expectDistortionMatchesEvaluation(output(0), output(2));
+}
 
-  // Progress: monotone, with a text per stage, ending at 1.
-  ASSERT_FALSE(events.Progress.empty());
-  EXPECT_TRUE(std::is_sorted(events.Progress.begin(), events.Progress.end()));
-  EXPECT_EQ(events.Progress.back(), 1.0);
-  EXPECT_TRUE(computedTheMap(events));
+TEST_F(ThreeInputPipeline, ProgressIsMonotoneWithATextPerStage)
+{
+  ASSERT_FALSE(Log.Progress.empty());
+  EXPECT_TRUE(std::is_sorted(Log.Progress.begin(), Log.Progress.end()));
+  EXPECT_EQ(Log.Progress.back(), 1.0);
+  EXPECT_TRUE(computedTheMap(Log));
   // No input carries a SpherePosition: all three embedded at once.
-  EXPECT_NE(std::find(events.Texts.begin(), events.Texts.end(), "Sphere embeddings of 3 inputs"),
-    events.Texts.end());
+  EXPECT_NE(std::find(Log.Texts.begin(), Log.Texts.end(), "Sphere embeddings of 3 inputs"),
+    Log.Texts.end());
 }
 
 TEST(SurfaceMapFilter, MappedFirstInputReusesTheMap)
