@@ -8,6 +8,11 @@
 # (e.g. --coarse-barrier-weight 1e-2). Needs ../shared/data; run on an idle machine.
 #
 #   bash Testing/Benchmarks/rounding_spread.sh [BENCHMARKMAP OPTIONS]
+#   bash Testing/Benchmarks/rounding_spread.sh --corpus
+#
+# With --corpus: every pair of ../shared/corpus.json mapped by `surfacemap map`
+# (default settings) from both builds, each build's table beside the reference
+# implementation's figures (Testing/Benchmarks/corpus_report.py).
 #
 # Environment:
 #   SURFACEMAPS_BUILD_DIR         the normal build (default build)
@@ -24,6 +29,16 @@ shared=../shared/data
 if [ ! -f "$native/CMakeCache.txt" ]; then
   cmake -S . -B "$native" -G Ninja -DCMAKE_BUILD_TYPE=Release -DCMAKE_CXX_FLAGS=-march=native \
     -DBUILD_TESTING=OFF -DSURFACEMAPS_WRAP_PYTHON=OFF -DPython3_EXECUTABLE=/usr/bin/python3 > /dev/null
+fi
+if [ "${1:-}" = --corpus ]; then
+  cmake --build "$native" -j "$(nproc)" --target surfacemap > /dev/null
+  status=0
+  for b in "$build" "$native"; do
+    echo "## $b"
+    echo
+    /usr/bin/python3 Testing/Benchmarks/corpus_report.py --build "$b" || status=1
+  done
+  exit $status
 fi
 cmake --build "$native" -j "$(nproc)" --target BenchmarkMap > /dev/null
 

@@ -8,15 +8,18 @@
 # ../shared/data shrec 61 <-> 248 and hand plain <-> vulcan, each with the
 # reference implementation's figures beside ours. Also the README pictures in
 # Testing/Benchmarks/images (map_*.png) from 61 <-> 248, or from the Data/
-# pair when that case did not run. Run it on an otherwise idle machine; the
-# figures in the README's performance section come from it.
+# pair when that case did not run. With ../shared/corpus.json, the corpus case
+# maps every corpus pair and tabulates it beside the reference implementation's
+# figures (Testing/Benchmarks/corpus_report.py). Run it on an otherwise idle
+# machine; the figures in the README's performance section come from it.
 #
 #   bash Testing/Benchmarks/run_benchmarks.sh [REPORT.md]
 #
 # Environment:
 #   SURFACEMAPS_BENCHMARK_CASES  which parts to run, separated by commas or
-#                                spaces: engine, embedding, data, shrec, hands
-#                                (default all; e.g. "data" for a quick run)
+#                                spaces: engine, embedding, data, shrec, hands,
+#                                corpus (default all; e.g. "data" for a quick
+#                                run, "corpus" for the corpus table alone)
 #   SURFACEMAPS_BUILD_DIR        the build directory (default build)
 set -euo pipefail
 cd "$(dirname "$0")/../.."
@@ -25,7 +28,7 @@ report=${1:-$build/benchmarks/report.md}
 bin=$build/bin
 [ -x "$bin/surfacemap" ] || { echo "build first: bash .ci/build.sh (or set SURFACEMAPS_BUILD_DIR)" >&2; exit 2; }
 
-all_cases="engine embedding data shrec hands"
+all_cases="engine embedding data shrec hands corpus"
 cases=${SURFACEMAPS_BENCHMARK_CASES:-all}
 [ "$cases" = all ] && cases=$all_cases
 cases=${cases//,/ }
@@ -34,7 +37,7 @@ for c in $cases; do
 done
 wanted() { [[ " $cases " == *" $1 "* ]]; }
 shared=../shared/data
-for c in shrec hands; do
+for c in shrec hands corpus; do
   if wanted "$c" && [ ! -d "$shared" ]; then
     echo "note: $shared does not exist; skipping the $c case" >&2
   fi
@@ -127,6 +130,16 @@ map_case() {
     map_case hands "hand_plain.obj <-> hand_vulcan.obj (3 202 + 6 094 vertices, hand_vulcan_0.pinned)" \
       "$shared/hand/hand_plain.obj" "$shared/hand/hand_vulcan.obj" \
       "$shared/hand/hand_plain.pinned" "$shared/hand/hand_vulcan_0.pinned"
+  fi
+
+  if wanted corpus && [ -f "$shared/../corpus.json" ]; then
+    echo
+    echo "## Corpus: every pair of ../shared/corpus.json, default settings"
+    echo
+    echo "Ours / the reference implementation's figures (corpus.json), \`surfacemap map\` with landmarks kept."
+    echo
+    "$python" Testing/Benchmarks/corpus_report.py --build "$build" --corpus "$shared/../corpus.json" ||
+      echo "**Some corpus pair failed or was not certified (see $build/benchmarks/corpus).**"
   fi
 
   # README pictures: 61 <-> 248 when it ran, otherwise the Data/ pair.

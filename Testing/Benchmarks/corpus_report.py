@@ -1,0 +1,160 @@
+"""Maps every pair of the benchmark corpus (../shared/corpus.json) with the
+default settings and prints one Markdown table: per pair our figures beside
+the reference implementation's recorded ones (whole-process time, T after the
+landmark and coarse phases and at the end, approximating SD and a1.5, H per
+input, exact-map SD), the ratios, and their geometric means over the corpus.
+
+    /usr/bin/python3 Testing/Benchmarks/corpus_report.py [--build build]
+        [--corpus ../shared/corpus.json] [--pairs NAME,...] [--work DIR] [-o REPORT.md]
+
+Each pair runs `surfacemap map A B --landmarks LA LB --output-dir DIR` (the
+default schedule, landmarks kept), timed by /usr/bin/time; the metrics are
+those `surfacemap map` writes to report.json (DESIGN.md section 6). Run it on
+an otherwise idle machine: the times are wall times of the whole process.
+Exit code 0 when every pair mapped and certified, 1 otherwise.
+"""
+
+import argparse
+import json
+import math
+import os
+import subprocess
+import sys
+
+
+def run_pair(pair, shared, surfacemap, work):
+    """Maps one pair; returns (report.json dict or None, seconds, peak MB, error text)."""
+    out = os.path.join(work, pair["name"])
+    os.makedirs(out, exist_ok=True)
+    timing = os.path.join(out, "time.txt")
+    path = lambda key: os.path.join(shared, pair[key])
+    command = ["/usr/bin/time", "-f", "%e %M", "-o", timing, surfacemap, "map", path("a"), path("b"),
+               "--landmarks", path("landmarks_a"), path("landmarks_b"), "--output-dir", os.path.join(out, "map")]
+    with open(os.path.join(out, "map.txt"), "w") as log:
+        status = subprocess.call(command, stdout=log, stderr=subprocess.STDOUT)
+    seconds = peak = None
+    try:
+        with open(timing) as f:
+            seconds, kilobytes = f.read().strip().splitlines()[-1].split()[:2]
+            seconds, peak = float(seconds), float(kilobytes) / 1024.0
+    except (OSError, ValueError, IndexError):
+        pass
+    if status != 0:
+        return None, seconds, peak, f"surfacemap map exited with {status} (see {out}/map.txt)"
+    with open(os.path.join(out, "map", "report.json")) as f:
+        return json.load(f), seconds, peak, None
+
+
+def ours(report, seconds):
+    """Our figures under the corpus' reference keys."""
+    phases = {p["name"]: p for p in report["phases"]}
+    approximating, exact = report["approximating_map"][0], report["exact_map"][0]
+    return {
+        "seconds": seconds,
+        "T_vertices_after_landmark_phase": phases.get("landmarks", {}).get("vertices"),
+        "T_vertices_after_coarse_phase": phases.get("coarse", {}).get("vertices"),
+        "vertices": report["common_triangulation"]["vertices"],
+        "symmetric_dirichlet": approximating["SymmetricDirichlet"],
+        "area_below_1.5": approximating["AreaBelow1.5"],
+        "hausdorff_input_to_T_a_pct": approximating["HausdorffSource"],
+        "hausdorff_input_to_T_b_pct": approximating["HausdorffTarget"],
+        "exact_symmetric_dirichlet": exact["SymmetricDirichlet"],
+        "exact_area_below_1.5": exact["AreaBelow1.5"],
+        "certified": report["certificate"]["bijective"],
+        "landmark_error": report["landmark_error"],
+    }
+
+
+def number(value, digits=4):
+    if value is None:
+        return "-"
+    if isinstance(value, float):
+        return f"{value:.{digits}g}" if abs(value) < 1e4 else f"{value:.0f}"
+    return str(value)
+
+
+def pair_row(name, mine, reference):
+    """One table row: ours / reference for every figure, and the ratios that decide."""
+    def both(key, digits=4):
+        return f"{number(mine.get(key), digits)} / {number(reference.get(key), digits)}"
+    speedup = reference["seconds"] / mine["seconds"] if mine.get("seconds") else None
+    cells = [
+        name,
+        f"{number(mine['seconds'], 3)} / {number(reference['seconds'], 4)} ({number(speedup, 3)}x)",
+        f"{number(mine['T_vertices_after_landmark_phase'])} / {number(reference.get('T_vertices_after_landmark_phase'))}, "
+        f"{number(mine['T_vertices_after_coarse_phase'])} / {number(reference.get('T_vertices_after_coarse_phase'))}, "
+        f"{both('vertices')} ({number(mine['vertices'] / reference['vertices'], 3)}x)",
+        both("symmetric_dirichlet"),
+        both("area_below_1.5", 3),
+        f"{both('hausdorff_input_to_T_a_pct', 3)}; {both('hausdorff_input_to_T_b_pct', 3)}",
+        both("exact_symmetric_dirichlet"),
+        "yes" if mine["certified"] else "NO",
+    ]
+    return "| " + " | ".join(cells) + " |"
+
+
+def geometric_mean(values):
+    values = [v for v in values if v and v > 0]
+    return math.exp(sum(math.log(v) for v in values) / len(values)) if values else None
+
+
+def main(argv):
+    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    parser.add_argument("--build", default="build", help="build directory with bin/surfacemap")
+    parser.add_argument("--corpus", default="../shared/corpus.json")
+    parser.add_argument("--pairs", help="comma-separated pair names (default: all)")
+    parser.add_argument("--work", help="where the maps go (default BUILD/benchmarks/corpus)")
+    parser.add_argument("-o", "--output", help="also write the table to this Markdown file")
+    args = parser.parse_args(argv)
+
+    surfacemap = os.path.join(args.build, "bin", "surfacemap")
+    if not os.access(surfacemap, os.X_OK):
+        print(f"no {surfacemap}: build first (bash .ci/build.sh)", file=sys.stderr)
+        return 2
+    with open(args.corpus) as f:
+        corpus = json.load(f)
+    shared = os.path.dirname(os.path.abspath(args.corpus))
+    wanted = set(args.pairs.split(",")) if args.pairs else None
+    pairs = [p for p in corpus["pairs"] if wanted is None or p["name"] in wanted]
+    if wanted and len(pairs) != len(wanted):
+        print(f"unknown pairs: {sorted(wanted - {p['name'] for p in pairs})}", file=sys.stderr)
+        return 2
+    work = args.work or os.path.join(args.build, "benchmarks", "corpus")
+
+    lines = [
+        "| pair | time ours / ref (speed-up) | T after landmarks, coarse, end: ours / ref (end ratio) "
+        "| SD | a1.5 | H A; H B (%) | exact SD | certified |",
+        "|---|---|---|---|---|---|---|---|",
+    ]
+    sd_ratios, exact_ratios, speedups, size_ratios, failures = [], [], [], [], 0
+    for pair in pairs:
+        report, seconds, peak, error = run_pair(pair, shared, surfacemap, work)
+        if error:
+            lines.append(f"| {pair['name']} | {error} |||||||")
+            failures += 1
+            continue
+        mine, reference = ours(report, seconds), pair["reference"]
+        lines.append(pair_row(pair["name"], mine, reference))
+        failures += not mine["certified"]
+        sd_ratios.append(mine["symmetric_dirichlet"] / reference["symmetric_dirichlet"])
+        exact_ratios.append(mine["exact_symmetric_dirichlet"] / reference["exact_symmetric_dirichlet"])
+        speedups.append(reference["seconds"] / seconds if seconds else None)
+        size_ratios.append(mine["vertices"] / reference["vertices"])
+        print(f"{pair['name']}: {number(seconds, 3)} s, peak {number(peak, 3)} MB, T {mine['vertices']}, "
+              f"SD {mine['symmetric_dirichlet']:.4f} (ref {reference['symmetric_dirichlet']:.4f})",
+              file=sys.stderr, flush=True)
+    means = (f"Geometric means over {len(sd_ratios)} pairs: SD ours / ref {number(geometric_mean(sd_ratios), 4)}, "
+             f"exact SD ours / ref {number(geometric_mean(exact_ratios), 4)}, "
+             f"T ours / ref {number(geometric_mean(size_ratios), 3)}, "
+             f"speed-up {number(geometric_mean(speedups), 3)}x.")
+    text = "\n".join(lines) + "\n\n" + means + "\n"
+    print(text)
+    if args.output:
+        with open(args.output + ".tmp", "w") as f:
+            f.write(text)
+        os.replace(args.output + ".tmp", args.output)
+    return 1 if failures else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv[1:]))
