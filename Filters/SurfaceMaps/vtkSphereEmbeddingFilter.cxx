@@ -13,7 +13,6 @@
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
 #include "vtkIntArray.h"
-#include "vtkLogger.h"
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
 #include "vtkPoints.h"
@@ -99,17 +98,7 @@ surfacemaps::SphereEmbeddingResult embed(vtkSphereEmbeddingFilter* self,
     self->UpdateProgress(fraction);
     return !self->GetAbortExecute();
   };
-  options.log.sink = [](surfacemaps::Logger::Level level, const std::string& message)
-  {
-    if (level == surfacemaps::Logger::Warning)
-    {
-      vtkLog(WARNING, << message);
-    }
-    else
-    {
-      vtkLog(TRACE, << message);
-    }
-  };
+  options.log = vtkSurfaceMapsConversion::EngineLog();
   return surfacemaps::embedOnSphere(mesh, options);
 }
 

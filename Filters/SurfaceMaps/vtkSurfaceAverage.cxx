@@ -1,6 +1,7 @@
 #include "vtkSurfaceAverage.h"
 
 #include "vtkSurfaceMapsCombination.h"
+#include "vtkSurfaceMapsConversion.h"
 #include "vtkSurfaceMapsErrorGuard.h"
 
 #include "base/Aborted.h"
@@ -286,12 +287,8 @@ int vtkSurfaceAverage::RequestData(vtkInformation*,
 {
   vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
   output->Initialize();
-  const int n = inputVector[0]->GetNumberOfInformationObjects();
-  std::vector<vtkPolyData*> inputs(n);
-  for (int i = 0; i < n; ++i)
-  {
-    inputs[i] = vtkPolyData::GetData(inputVector[0], i);
-  }
+  const std::vector<vtkPolyData*> inputs = vtkSurfaceMapsConversion::PolyDataOf(inputVector[0]);
+  const int n = static_cast<int>(inputs.size());
   auto report = [this](double fraction, const char* text)
   {
     this->SetProgressText(text);

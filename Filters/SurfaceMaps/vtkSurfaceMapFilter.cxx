@@ -51,16 +51,6 @@ void setValue(vtkObject* filter,
   }
 }
 
-std::vector<vtkPolyData*> polyData(vtkInformationVector* vector)
-{
-  std::vector<vtkPolyData*> data(vector->GetNumberOfInformationObjects());
-  for (std::size_t i = 0; i < data.size(); ++i)
-  {
-    data[i] = vtkPolyData::GetData(vector, static_cast<int>(i));
-  }
-  return data;
-}
-
 void clear(const std::vector<vtkPolyData*>& outputs)
 {
   for (vtkPolyData* output : outputs)
@@ -418,8 +408,8 @@ int vtkSurfaceMapFilter::RequestData(vtkInformation*,
   vtkInformationVector** inputVector,
   vtkInformationVector* outputVector)
 {
-  const std::vector<vtkPolyData*> inputs = polyData(inputVector[0]);
-  const std::vector<vtkPolyData*> outputs = polyData(outputVector);
+  const std::vector<vtkPolyData*> inputs = vtkSurfaceMapsConversion::PolyDataOf(inputVector[0]);
+  const std::vector<vtkPolyData*> outputs = vtkSurfaceMapsConversion::PolyDataOf(outputVector);
   clear(outputs);
   this->SetErrorCode(vtkErrorCode::NoError);
   this->Internals->Progress = 0.0;

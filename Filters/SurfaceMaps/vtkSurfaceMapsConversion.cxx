@@ -9,6 +9,7 @@
 #include "vtkDoubleArray.h"
 #include "vtkFieldData.h"
 #include "vtkIdTypeArray.h"
+#include "vtkInformationVector.h"
 #include "vtkLogger.h"
 #include "vtkPointData.h"
 #include "vtkPoints.h"
@@ -240,4 +241,14 @@ surfacemaps::Logger vtkSurfaceMapsConversion::EngineLog()
     }
   };
   return log;
+}
+
+std::vector<vtkPolyData*> vtkSurfaceMapsConversion::PolyDataOf(vtkInformationVector* vector)
+{
+  std::vector<vtkPolyData*> data(vector->GetNumberOfInformationObjects());
+  for (std::size_t i = 0; i < data.size(); ++i)
+  {
+    data[i] = vtkPolyData::GetData(vector, static_cast<int>(i));
+  }
+  return data;
 }

@@ -20,6 +20,7 @@
 #include <string>
 #include <vector>
 
+class vtkInformationVector;
 class vtkPointData;
 class vtkPolyData;
 
@@ -54,6 +55,10 @@ public:
   static void SetCornerTCoords(vtkPointData* pointData,
     const std::vector<Eigen::Vector2d>& corners,
     const std::vector<surfacemaps::SurfacePoint>& points);
+
+  /// The vtkPolyData of every information object of `vector` (null where
+  /// one holds no vtkPolyData): a repeatable port's inputs, or the outputs.
+  static std::vector<vtkPolyData*> PolyDataOf(vtkInformationVector* vector);
 
   /// Engine messages into vtkLogger: warnings as WARNING, the rest as TRACE.
   static surfacemaps::Logger EngineLog();

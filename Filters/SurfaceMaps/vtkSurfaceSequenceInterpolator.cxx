@@ -1,6 +1,7 @@
 #include "vtkSurfaceSequenceInterpolator.h"
 
 #include "vtkSurfaceMapsCombination.h"
+#include "vtkSurfaceMapsConversion.h"
 #include "vtkSurfaceMapsErrorGuard.h"
 
 #include "base/Aborted.h"
@@ -239,12 +240,8 @@ int vtkSurfaceSequenceInterpolator::RequestData(vtkInformation*,
   vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
   output->Initialize();
   output->GetInformation()->Remove(vtkDataObject::DATA_TIME_STEP());
-  const int n = inputVector[0]->GetNumberOfInformationObjects();
-  std::vector<vtkPolyData*> inputs(n);
-  for (int k = 0; k < n; ++k)
-  {
-    inputs[k] = vtkPolyData::GetData(inputVector[0], k);
-  }
+  const std::vector<vtkPolyData*> inputs = vtkSurfaceMapsConversion::PolyDataOf(inputVector[0]);
+  const int n = static_cast<int>(inputs.size());
   const double requested = outInfo->Has(vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP())
     ? outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP())
     : this->TimeValue;

@@ -314,13 +314,6 @@ std::vector<MapSetting> buildTable()
 
 } // namespace
 
-std::string MapSetting::key() const
-{
-  std::string k = this->flag;
-  std::replace(k.begin(), k.end(), '-', '_');
-  return k;
-}
-
 double MapSetting::clamp(double value) const
 {
   if (std::isnan(value))

@@ -44,8 +44,6 @@ struct MapSetting
   std::function<void(SurfaceMapOptions&, double)> set;
 
   double defaultValue() const { return this->get(SurfaceMapOptions()); }
-  /// The report.json key.
-  std::string key() const;
   /// `value` clamped into the range (and rounded for counts).
   double clamp(double value) const;
   /// The value as a person reads it: a choice's name, "on"/"off", a number.

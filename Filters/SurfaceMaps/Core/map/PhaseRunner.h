@@ -42,8 +42,6 @@ public:
   /// (vertex, sphere) pairs could not be snapped.
   int snapLandmarks();
 
-  const std::vector<std::map<int, Eigen::Vector3d>>& targets() const { return this->Targets; }
-
 private:
   /// Target lengths, then the improving splits, collapses and flips (only
   /// flips when `relaxing`), counted into the report.
