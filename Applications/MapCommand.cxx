@@ -187,8 +187,8 @@ MapArguments parseArguments(const std::vector<std::string>& args, vtkSurfaceMapF
   if (!parsed.landmarks.empty() && parsed.landmarks.size() != parsed.meshes.size())
   {
     throw UsageError{ "--landmarks needs one file per mesh (" +
-      std::to_string(parsed.meshes.size()) + " meshes, " +
-      std::to_string(parsed.landmarks.size()) + " landmark files)" };
+      std::to_string(parsed.meshes.size()) + " meshes, " + std::to_string(parsed.landmarks.size()) +
+      " landmark files)" };
   }
   return parsed;
 }
@@ -322,6 +322,7 @@ std::string reportPhases(vtkPolyData* first)
     const bool converged = field(first, "PhaseConverged", k) == 1.0;
     json << (k ? ",\n" : "\n") << "    { \"name\": " << jsonString(phaseNames->GetValue(k));
     const std::pair<const char*, const char*> columns[] = { { "iterations", "PhaseIterations" },
+      { "stalled_iterations", "PhaseStalledIterations" },
       { "seconds", "PhaseSeconds" },
       { "vertices", "PhaseVertices" },
       { "energy", "PhaseEnergy" },
@@ -338,11 +339,12 @@ std::string reportPhases(vtkPolyData* first)
       json << ", " << jsonString(key) << ": " << jsonNumber(field(first, name, k));
     }
     json << ", \"converged\": " << (converged ? "true" : "false") << " }";
-    std::printf("  %-10s %4d iterations%s, %.2f s, %d vertices, %d splits, %d collapses, "
-                "%d flips\n",
+    std::printf("  %-10s %4d iterations%s, %d stalled, %.2f s, %d vertices, %d splits, "
+                "%d collapses, %d flips\n",
       (phaseNames->GetValue(k) + ":").c_str(),
       static_cast<int>(field(first, "PhaseIterations", k)),
       converged ? " (converged)" : " (iteration cap)",
+      static_cast<int>(field(first, "PhaseStalledIterations", k)),
       field(first, "PhaseSeconds", k),
       static_cast<int>(field(first, "PhaseVertices", k)),
       static_cast<int>(field(first, "PhaseSplits", k)),
@@ -371,8 +373,8 @@ std::string reportErrorBound(vtkSurfaceMapFilter* map, int n)
     const double distance = field(map->GetOutput(i), "BaseDistance");
     const double bound = field(map->GetOutput(i), "ErrorBound");
     json << (i ? ", " : "") << "{ \"input\": " << i
-         << ", \"base_distance\": " << jsonNumber(distance)
-         << ", \"bound\": " << jsonNumber(bound) << " }";
+         << ", \"base_distance\": " << jsonNumber(distance) << ", \"bound\": " << jsonNumber(bound)
+         << " }";
     std::printf("  error bound on input %d: every vertex within %.4g of its base point on T "
                 "(bound %.4g = %g x bbox diagonal)\n",
       i,
@@ -452,8 +454,7 @@ int runMap(const std::vector<std::string>& args)
     std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   const bool certified = field(map->GetOutput(0), "Bijective") == 1.0;
   std::string report = reportMap(map, arguments, inputs, seconds) +
-    reportPhases(map->GetOutput(0)) +
-    reportErrorBound(map, static_cast<int>(inputs.size()));
+    reportPhases(map->GetOutput(0)) + reportErrorBound(map, static_cast<int>(inputs.size()));
   try
   {
     const std::string& dir = arguments.outputDir;

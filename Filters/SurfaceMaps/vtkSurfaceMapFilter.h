@@ -89,7 +89,9 @@
  * "EmbeddingSeconds" (one value per input, 0 for a given embedding); one
  * tuple per phase that ran: "PhaseName" (string:
  * landmarks, coarse, fine, refine, bound), "PhaseIterations", "PhaseConverged" (0: stopped at
- * its iteration cap, which is normal), "PhaseEnergy", "PhaseVertices",
+ * its iteration cap, which is normal), "PhaseStalledIterations" (iterations
+ * whose line search failed or cut its first trial by more than 100 times: a
+ * kink held the step back), "PhaseEnergy", "PhaseVertices",
  * "PhaseSplits", "PhaseCollapses", "PhaseFlips", "PhaseLandmarkError",
  * "PhaseSeconds", "PhaseRemeshSeconds", "PhaseDerivativeSeconds",
  * "PhaseSolveSeconds", "PhaseLineSearchSeconds"; and input i's own field data

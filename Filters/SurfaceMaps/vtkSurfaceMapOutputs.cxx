@@ -197,13 +197,14 @@ void setMapFieldData(vtkFieldData* fields,
 
   auto names = vtkSmartPointer<vtkStringArray>::New();
   names->SetName("PhaseName");
-  std::vector<int> iterations, converged, vertices, splits, collapses, flips;
+  std::vector<int> iterations, converged, stalled, vertices, splits, collapses, flips;
   std::vector<double> energy, landmarkError, seconds, remesh, derivatives, solve, lineSearch;
   for (const surfacemaps::MapPhaseReport& p : map.phases)
   {
     names->InsertNextValue(surfacemaps::phaseName(p.kind));
     iterations.push_back(p.iterations);
     converged.push_back(p.converged ? 1 : 0);
+    stalled.push_back(p.stalledIterations);
     energy.push_back(p.energy);
     vertices.push_back(p.vertices);
     splits.push_back(p.splits);
@@ -219,6 +220,7 @@ void setMapFieldData(vtkFieldData* fields,
   fields->AddArray(names);
   addField<vtkIntArray>(fields, "PhaseIterations", iterations);
   addField<vtkIntArray>(fields, "PhaseConverged", converged);
+  addField<vtkIntArray>(fields, "PhaseStalledIterations", stalled);
   addField<vtkDoubleArray>(fields, "PhaseEnergy", energy);
   addField<vtkIntArray>(fields, "PhaseVertices", vertices);
   addField<vtkIntArray>(fields, "PhaseSplits", splits);

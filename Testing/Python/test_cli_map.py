@@ -24,6 +24,7 @@ def test_map_writes_common_and_mapped_meshes_and_a_report(tmp_path):
     assert names[:3] == ["landmarks", "coarse", "fine"] and set(names[3:]) <= {"refine"} and len(names) <= 6
     assert [p["iterations"] <= cap for p, cap in zip(report["phases"], (10, 3, 3, 3, 3, 3))] == [True] * len(names)
     assert all(p["seconds"] > 0 for p in report["phases"])
+    assert all(0 <= p["stalled_iterations"] <= p["iterations"] for p in report["phases"])
     assert report["landmark_error"] < 1e-9  # landmarks kept exactly
     assert report["energy"]["map"] >= 1.0
     approximating, exact = report["approximating_map"][0], report["exact_map"][0]

@@ -52,6 +52,8 @@ struct MapPhaseReport
   double energy = 0.0;
   int splits = 0, collapses = 0, flips = 0;
   int vertices = 0;
+  /// Iterations whose Newton step stalled (NewtonStepResult::stalled).
+  int stalledIterations = 0;
   /// Landmark phase: largest distance of a landmark to its target on a sphere.
   double landmarkError = 0.0;
   double seconds = 0.0;

@@ -80,13 +80,14 @@ MapPhaseReport PhaseRunner::run(const MapPhase& phase)
     report.derivativeSeconds += step.derivativeSeconds;
     report.solveSeconds += step.solveSeconds;
     report.lineSearchSeconds += step.lineSearchSeconds;
+    report.stalledIterations += step.stalled ? 1 : 0;
 
     std::ostringstream message;
     message << name << " iteration " << it + 1 << ": " << report.vertices << " vertices, E "
             << step.energyAfter << ", decrement " << step.decrement << ", step " << step.step
             << " (" << step.lineSearchTrials << " trials"
-            << (step.gradientFallback ? ", gradient" : "") << "), edits " << edits.splits << "/"
-            << edits.collapses << "/" << edits.flips;
+            << (step.gradientFallback ? ", gradient" : "") << (step.stalled ? ", stalled" : "")
+            << "), edits " << edits.splits << "/" << edits.collapses << "/" << edits.flips;
     this->Options.log(Logger::Detail, message.str());
     this->reportProgress(phase, it + 1, report.vertices, step.energyAfter);
 

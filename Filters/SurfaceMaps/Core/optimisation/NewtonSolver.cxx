@@ -86,12 +86,14 @@ NewtonStepResult newtonStep(Objective& objective,
     return objective.value(points);
   };
   clock = std::chrono::steady_clock::now();
+  const double initialStep = firstStep(d);
   const LineSearchResult ls = armijoBacktracking([&](double t) { return energyAlong(d, t); },
     result.energyBefore,
     slope,
-    firstStep(d),
+    initialStep,
     options.lineSearch);
   result.lineSearchTrials = ls.trials;
+  result.stalled = !ls.success || ls.step < 0.01 * initialStep;
 
   points.setPositions(start);
   if (ls.success)

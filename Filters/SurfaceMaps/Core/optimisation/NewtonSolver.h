@@ -1,9 +1,9 @@
 // SurfaceMaps engine: projected Newton on sphere points, step by step.
 #pragma once
 
+#include "base/Log.h"
 #include "optimisation/LineSearch.h"
 #include "optimisation/LinearSolver.h"
-#include "base/Log.h"
 #include "optimisation/Objective.h"
 #include "optimisation/SpherePoints.h"
 
@@ -43,6 +43,14 @@ struct NewtonStepResult
   bool regularised = false;
   /// The points moved (line search succeeded).
   bool moved = false;
+  /// The line search failed or cut its first trial by more than 100 times.
+  /// On a surface map this is a kink: elements whose energy leaves their
+  /// derivatives' model within the step hold back the step of every point
+  /// (T's vertices are lifted onto the inputs' flat triangles, so the mesh
+  /// and map terms bend where a vertex crosses an input edge on the sphere;
+  /// an approximation sample can cross into a T triangle far smaller on the
+  /// sphere than on the surface).
+  bool stalled = false;
   /// Wall time of the parts: element derivatives with Hessian projection and
   /// assembly, the linear solve, the line search.
   double derivativeSeconds = 0.0;

@@ -1,6 +1,6 @@
-#include "optimisation/NewtonSolver.h"
-#include "mesh/Primitives.h"
 #include "geometry/SphericalTriangulation.h"
+#include "mesh/Primitives.h"
+#include "optimisation/NewtonSolver.h"
 
 #include <gtest/gtest.h>
 
@@ -146,6 +146,46 @@ TEST(NewtonSolver, StepCapScalesTheWholeStep)
   }
   EXPECT_LE(largest, 1e-3 * (1 + 1e-9));
   EXPECT_GT(largest, 1e-4);
+}
+
+TEST(NewtonSolver, StallWhenTheLineSearchCutsTheStep)
+{
+  // A full Newton step is not stalled; one whose trials are rejected until
+  // the step is a thousandth of the first (a kink's effect) is, and so is a
+  // failed line search.
+  Problem free(0.05);
+  const std::vector<Eigen::Vector3d> start = free.points.positions();
+  auto largestMove = [&](const SpherePoints& points)
+  {
+    double largest = 0.0;
+    for (int i = 0; i < points.size(); ++i)
+    {
+      largest = std::max(largest, (points.position(i) - start[i]).norm());
+    }
+    return largest;
+  };
+  LinearSolver solver;
+  NewtonStepResult step = newtonStep(free.objective, free.points, solver);
+  ASSERT_TRUE(step.moved);
+  EXPECT_FALSE(step.stalled);
+  const double freeMove = largestMove(free.points);
+  ASSERT_GT(freeMove, 0.0);
+
+  Problem kinked(0.05);
+  NewtonOptions options;
+  options.acceptTrial = [&](const SpherePoints& trial)
+  { return largestMove(trial) < 1e-3 * freeMove; };
+  LinearSolver other;
+  step = newtonStep(kinked.objective, kinked.points, other, options);
+  EXPECT_TRUE(step.moved);
+  EXPECT_TRUE(step.stalled);
+
+  Problem rejected(0.05);
+  options.acceptTrial = [](const SpherePoints&) { return false; };
+  LinearSolver third;
+  step = newtonStep(rejected.objective, rejected.points, third, options);
+  EXPECT_FALSE(step.moved);
+  EXPECT_TRUE(step.stalled);
 }
 
 TEST(NewtonSolver, TrialCheckAndAbort)
