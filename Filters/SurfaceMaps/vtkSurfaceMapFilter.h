@@ -343,7 +343,8 @@ public:
 
   ///@{
   /**
-   * The later rounds' threshold: input triangles squeezed inside a T triangle.
+   * The later rounds' threshold: while the exact map squeezes an input triangle inside a T
+   * triangle beyond this, another round of iterations runs (the sizing stays as it is).
    */
   vtkSurfaceMapSettingMacro(SqueezeDistortion, double);
   ///@}

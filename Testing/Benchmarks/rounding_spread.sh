@@ -8,11 +8,14 @@
 # (e.g. --coarse-barrier-weight 1e-2). Needs ../shared/data; run on an idle machine.
 #
 #   bash Testing/Benchmarks/rounding_spread.sh [BENCHMARKMAP OPTIONS]
-#   bash Testing/Benchmarks/rounding_spread.sh --corpus
+#   bash Testing/Benchmarks/rounding_spread.sh --corpus [CORPUS_REPORT OPTIONS]
 #
 # With --corpus: every pair of ../shared/corpus.json mapped by `surfacemap map`
 # (default settings) from both builds, each build's table beside the reference
-# implementation's figures (Testing/Benchmarks/corpus_report.py).
+# implementation's figures (Testing/Benchmarks/corpus_report.py), then the
+# same with the inputs swapped (B onto A: two more optimisation paths, so four
+# samples of each pair). Further options go to corpus_report.py, e.g.
+# --map-args "--refinement-rounds 1" to measure a candidate default.
 #
 # Environment:
 #   SURFACEMAPS_BUILD_DIR         the normal build (default build)
@@ -31,12 +34,16 @@ if [ ! -f "$native/CMakeCache.txt" ]; then
     -DBUILD_TESTING=OFF -DSURFACEMAPS_WRAP_PYTHON=OFF -DPython3_EXECUTABLE=/usr/bin/python3 > /dev/null
 fi
 if [ "${1:-}" = --corpus ]; then
+  shift
   cmake --build "$native" -j "$(nproc)" --target surfacemap > /dev/null
   status=0
-  for b in "$build" "$native"; do
-    echo "## $b"
-    echo
-    /usr/bin/python3 Testing/Benchmarks/corpus_report.py --build "$b" || status=1
+  for order in "" --swap; do
+    for b in "$build" "$native"; do
+      echo "## $b ${order:+(B onto A)}"
+      echo
+      /usr/bin/python3 Testing/Benchmarks/corpus_report.py --build "$b" \
+        --work "$b/benchmarks/corpus${order}" $order "$@" || status=1
+    done
   done
   exit $status
 fi

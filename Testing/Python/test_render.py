@@ -40,7 +40,7 @@ def test_distortion_and_checkerboard_pictures(tmp_path):
 
 def test_missing_array_is_an_error(tmp_path):
     r = render(data("ellipsoid.obj"), "-o", tmp_path / "x.png")
-    assert r.returncode == 2 and "no Distortion cell array" in r.stderr
+    assert r.returncode == 2 and "no MaxStretch cell array" in r.stderr
     assert not (tmp_path / "x.png").exists()
 
 

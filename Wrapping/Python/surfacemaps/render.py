@@ -67,7 +67,7 @@ def _render(mesh, path, configure_mapper, size=(800, 600), azimuth=30.0, elevati
 def render_distortion(mesh, path, max_value=3.0, **view):
     """PNG of `mesh` coloured by its "MaxStretch" cell array (1 white -> max_value red)."""
     if mesh.GetCellData().GetArray("MaxStretch") is None:
-        raise ValueError("the mesh has no Distortion cell array (run vtkSurfaceMapEvaluation first)")
+        raise ValueError("the mesh has no MaxStretch cell array (run vtkSurfaceMapEvaluation first)")
     table = vtkLookupTable()
     table.SetNumberOfTableValues(256)
     for i in range(256):

@@ -22,8 +22,9 @@ namespace surfacemaps
 /// where the map is distorted: with a fraction `area` of input i above the
 /// threshold, the sizing there shrinks by 1 / sqrt(1 + refinementGrowth /
 /// area), at most by half, so a pair distorted nearly everywhere does not
-/// quadruple T. The later rounds (squeezeDistortion) halve it around
-/// squeezed triangles only. Rounds end when none is found, after
+/// quadruple T. The later rounds only iterate, with the sizing as it is,
+/// while the exact map still squeezes an input triangle (distortion above
+/// squeezeDistortion). Rounds end when none is found, after
 /// refinementRounds, and never run without pairs or without a fine phase.
 class DistortionRefinement
 {

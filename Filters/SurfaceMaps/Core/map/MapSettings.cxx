@@ -211,8 +211,9 @@ void refinementSettings(std::vector<MapSetting>& table)
     &Options::squeezeDistortion,
     1,
     1e12,
-    "The later rounds' threshold (sizing halved there): input triangles the exact map squeezes "
-    "inside a T triangle, which T's own map cannot see."));
+    "The later rounds' threshold: while the exact map squeezes an input triangle inside a T "
+    "triangle (which T's own map cannot see) beyond this, another round of iterations runs, "
+    "with the sizing as it is."));
   table.push_back(real("RefinementGrowth",
     "refinement-growth",
     &Options::refinementGrowth,

@@ -214,7 +214,7 @@ TEST(SurfaceMap, RefinementRunsWhereTheExactMapIsDistorted)
   EXPECT_GT(refined.phases.back().vertices, plain.phases.back().vertices);
 }
 
-TEST(SurfaceMap, LaterRefinementRoundsOnlyRepairSqueezes)
+TEST(SurfaceMap, LaterRefinementRoundsIterateWhileSqueezesRemain)
 {
   const std::vector<MapInput> inputs = landmarkPair();
   SurfaceMapOptions options = shortSchedule(3, 4);
@@ -236,6 +236,16 @@ TEST(SurfaceMap, LaterRefinementRoundsOnlyRepairSqueezes)
   const SurfaceMapResult all = computeSurfaceMap(inputs, options);
   expectCertified(all);
   EXPECT_EQ(refineRounds(all), 3);
+  // They keep the sizing: with the first round's growth almost 0 (sizing
+  // times 1 / sqrt(1 + 1e-6)), T stays near its size after that round,
+  // where halving the sizing everywhere would about quadruple it.
+  options.refinementGrowth = 1e-6;
+  const SurfaceMapResult kept = computeSurfaceMap(inputs, options);
+  options.refinementRounds = 1;
+  const SurfaceMapResult first = computeSurfaceMap(inputs, options);
+  expectCertified(kept);
+  EXPECT_LT(kept.phases.back().vertices, 1.5 * first.phases.back().vertices);
+  options.refinementGrowth = SurfaceMapOptions().refinementGrowth;
   // Nothing above the first threshold, squeezes above a lower one: the
   // first round has nothing to refine, the later ones still run.
   options.refinementRounds = 2;
