@@ -121,8 +121,7 @@ std::optional<MapPhase> DistortionRefinement::next(CommonTriangulation& T,
     }
     // The later rounds keep the sizing: halving it around squeezed triangles
     // never repaired a squeeze on the corpus and doubled T where squeezes
-    // stayed; more iterations did help (README, "Where the corpus gap comes
-    // from").
+    // stayed (README, "Where the corpus gap comes from").
     const double threshold = round == 0 ? options.refinementDistortion : options.squeezeDistortion;
     const DistortedTriangles found = markExactMapDistortion(
       T, surfaces, T.pairs(), threshold, round == 0 ? options.refinementGrowth : 0.0, factor);
