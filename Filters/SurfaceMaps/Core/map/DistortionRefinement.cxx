@@ -31,7 +31,8 @@ struct DistortedTriangles
 /// input-j triangles those land in, to 1 / sqrt(1 + growth / area) (area:
 /// their unit-area fraction of input i) but at least 0.5: the vertex density
 /// there grows about 1 + growth / area times, at most 4 times (infinite
-/// growth: halved sizing). T is garbage-collected first, for its flat
+/// growth: halved sizing; growth 0: `factor` stays 1, only the count and the
+/// worst distortion are wanted). T is garbage-collected first, for its flat
 /// triangle list.
 DistortedTriangles markExactMapDistortion(CommonTriangulation& T,
   const std::vector<PreparedInput>& surfaces,
