@@ -210,25 +210,6 @@ std::vector<vtkSmartPointer<vtkPolyData>> readInputs(const MapArguments& argumen
   return inputs;
 }
 
-// The output directory, created and checked before the long computation;
-// `created` receives the outermost directory it had to create (empty if
-// none), removed again when no map comes out.
-bool prepareOutputDirectory(const std::string& outputDir, std::filesystem::path& created)
-{
-  return succeeds(
-    [&]
-    {
-      std::error_code ec;
-      for (std::filesystem::path p = std::filesystem::absolute(outputDir, ec).lexically_normal();
-           !ec && !p.empty() && !std::filesystem::exists(p, ec) && p != p.parent_path();
-           p = p.parent_path())
-      {
-        created = p;
-      }
-      createOutputDirectory(outputDir, "report.json");
-    });
-}
-
 // Runs the filter; prints its errors and returns the exit code on failure.
 int computeMap(vtkSurfaceMapFilter* map,
   const std::vector<vtkSmartPointer<vtkPolyData>>& inputs,
@@ -436,8 +417,8 @@ int runMap(const std::vector<std::string>& args)
   vtkNew<vtkSurfaceMapFilter> map;
   const MapArguments arguments = parseArguments(args, map);
   const std::vector<vtkSmartPointer<vtkPolyData>> inputs = readInputs(arguments);
-  std::filesystem::path created;
-  if (inputs.empty() || !prepareOutputDirectory(arguments.outputDir, created))
+  std::string created;
+  if (inputs.empty() || !prepareOutputDirectory(arguments.outputDir, "report.json", created))
   {
     return ExitBadInput;
   }
@@ -446,8 +427,7 @@ int runMap(const std::vector<std::string>& args)
   const int computed = computeMap(map, inputs, errors);
   if (computed != ExitOk)
   {
-    std::error_code ec;
-    std::filesystem::remove_all(created, ec); // created here, nothing written yet
+    removeCreatedDirectory(created); // created here, nothing written yet
     return computed;
   }
   const double seconds =
