@@ -253,6 +253,34 @@ void createOutputDirectory(const std::string& directory, const std::string& prob
   checkWritable(directory + "/" + probe);
 }
 
+bool prepareOutputDirectory(const std::string& directory,
+  const std::string& probe,
+  std::string& created)
+{
+  created.clear();
+  return succeeds(
+    [&]
+    {
+      std::error_code ec;
+      for (std::filesystem::path p = std::filesystem::absolute(directory, ec).lexically_normal();
+           !ec && !p.empty() && !std::filesystem::exists(p, ec) && p != p.parent_path();
+           p = p.parent_path())
+      {
+        created = p.string();
+      }
+      createOutputDirectory(directory, probe);
+    });
+}
+
+void removeCreatedDirectory(const std::string& created)
+{
+  if (!created.empty())
+  {
+    std::error_code ec;
+    std::filesystem::remove_all(created, ec);
+  }
+}
+
 void checkWritable(const std::string& path)
 {
   const std::string temporary = temporaryName(path);

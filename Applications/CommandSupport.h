@@ -105,6 +105,17 @@ std::string mapFileName(const char* stem, int i);
 /// `probe` can be written in it. Throws std::runtime_error naming what failed.
 void createOutputDirectory(const std::string& directory, const std::string& probe);
 
+/// createOutputDirectory before a computation: false after printing why
+/// (for the caller to exit with ExitBadInput). `created` receives the
+/// outermost directory it had to create (empty if none), for
+/// removeCreatedDirectory when no result comes out.
+bool prepareOutputDirectory(const std::string& directory,
+  const std::string& probe,
+  std::string& created);
+
+/// Removes `created` (from prepareOutputDirectory) with everything in it; nothing if empty.
+void removeCreatedDirectory(const std::string& created);
+
 /// Throws std::runtime_error naming `path` if no file can be created there
 /// (checked before long computations whose result would be lost).
 void checkWritable(const std::string& path);

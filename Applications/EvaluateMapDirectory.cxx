@@ -294,14 +294,16 @@ int evaluateMapDirectory(const std::string& directory,
   {
     outputDir = directory;
   }
+  std::string created;
   if (n == 0 || !succeeds([&] { resolveInputs(directory, n, inputFiles); }) ||
-    !succeeds([&] { createOutputDirectory(outputDir, "summary.json"); }))
+    !prepareOutputDirectory(outputDir, "summary.json", created))
   {
     return ExitBadInput;
   }
   MapMeshes maps{ directory, inputFiles, {}, {}, {} };
   if (!readMeshes(maps))
   {
+    removeCreatedDirectory(created); // nothing written into it
     return ExitBadInput;
   }
   const std::string summary = reportDirectory(maps);

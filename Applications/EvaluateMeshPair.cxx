@@ -79,13 +79,12 @@ void writeOutputs(const std::vector<std::string>& meshes,
   writePolyDataAtomically(result, outputDir + "/evaluated.vtp");
 }
 
-} // namespace
-
-int evaluateMeshPair(const std::vector<std::string>& meshes,
+// The evaluation's figures, printed; the exit code.
+int evaluate(vtkSurfaceMapEvaluation* evaluation,
+  const std::vector<std::string>& meshes,
   const std::vector<std::string>& originals,
   const std::string& outputDir)
 {
-  vtkNew<vtkSurfaceMapEvaluation> evaluation;
   if (!readMeshes(evaluation, meshes, originals))
   {
     return ExitBadInput;
@@ -110,6 +109,27 @@ int evaluateMeshPair(const std::vector<std::string>& meshes,
   std::printf("  written to %s/summary.json, triangles.csv, distortion_curve.csv, evaluated.vtp\n",
     outputDir.c_str());
   return ExitOk;
+}
+
+} // namespace
+
+int evaluateMeshPair(const std::vector<std::string>& meshes,
+  const std::vector<std::string>& originals,
+  const std::string& outputDir)
+{
+  // The output directory exists and takes files before anything is computed.
+  std::string created;
+  if (!outputDir.empty() && !prepareOutputDirectory(outputDir, "summary.json", created))
+  {
+    return ExitBadInput;
+  }
+  vtkNew<vtkSurfaceMapEvaluation> evaluation;
+  const int result = evaluate(evaluation, meshes, originals, outputDir);
+  if (result != ExitOk)
+  {
+    removeCreatedDirectory(created);
+  }
+  return result;
 }
 
 } // namespace surfacemap

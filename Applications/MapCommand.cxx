@@ -1,4 +1,5 @@
 // surfacemap map: bijective map between N surfaces via a common triangulation.
+#include "ArrayTransferFlags.h"
 #include "CommandSupport.h"
 #include "Commands.h"
 #include "SettingFlags.h"
@@ -30,7 +31,7 @@ namespace
 {
 const char* const MapHelpIntro =
   "usage: surfacemap map A B [C ...] --output-dir DIR [--landmarks FA FB ...]\n"
-  "                      [SETTING ...]\n"
+  "                      [--categorical NAME] [--continuous NAME] [SETTING ...]\n"
   "\n"
   "Computes a bijective map between the meshes A, B, ... (closed, manifold,\n"
   "genus 0) through one adaptive common triangulation T (Schmidt, Pieper,\n"
@@ -41,7 +42,9 @@ const char* const MapHelpIntro =
   "bijective remeshing. Writes, atomically:\n"
   "  DIR/common_<i>.vtp  T lifted onto input i (same triangles for every i),\n"
   "                      with SpherePosition, SourceCellId, SourceBarycentric,\n"
-  "                      Landmarks and the input's point arrays\n"
+  "                      Landmarks and the input's point arrays (integer\n"
+  "                      arrays categorical, floating-point ones interpolated,\n"
+  "                      unless --categorical / --continuous say otherwise)\n"
   "  DIR/mapped_<i>.vtp  input 0's mesh mapped onto input i by the exact map\n"
   "  DIR/embedding_<i>.vtp\n"
   "                      input i with its sphere embedding in the map's frame\n"
@@ -60,7 +63,9 @@ const char* const MapHelpIntro =
   "                       writing before computing)\n"
   "  --landmarks FA FB ...\n"
   "                       one landmark file per mesh, in the same order (give\n"
-  "                       the meshes first); same id = corresponding points\n"
+  "                       the meshes first); same id = corresponding points\n";
+
+const char* const MapHelpSettings =
   "\n"
   "Settings (unit-area units: each input centred and scaled to unit area; a\n"
   "phase stopping at its iteration cap is normal and reported):\n";
@@ -71,7 +76,8 @@ const char* const MapExitCodes =
   "directory that cannot be written), 3 if no certified map was found, 1 for\n"
   "an internal error.\n";
 
-const std::string MapHelpText = std::string(MapHelpIntro) + settingsHelp() + MapExitCodes;
+const std::string MapHelpText = std::string(MapHelpIntro) + ArrayTransferFlagsHelp +
+  MapHelpSettings + settingsHelp() + MapExitCodes;
 } // namespace
 
 const char* const MapHelp = MapHelpText.c_str();
@@ -164,7 +170,7 @@ MapArguments parseArguments(const std::vector<std::string>& args, vtkSurfaceMapF
     {
       parsed.outputDir = optionValue(args, i);
     }
-    else if (parseSettingFlag(map, args, i))
+    else if (parseSettingFlag(map, args, i) || parseArrayTransferFlag(map, args, i))
     {
     }
     else if (isOption(a))
@@ -208,25 +214,6 @@ std::vector<vtkSmartPointer<vtkPolyData>> readInputs(const MapArguments& argumen
     }
   }
   return inputs;
-}
-
-// The output directory, created and checked before the long computation;
-// `created` receives the outermost directory it had to create (empty if
-// none), removed again when no map comes out.
-bool prepareOutputDirectory(const std::string& outputDir, std::filesystem::path& created)
-{
-  return succeeds(
-    [&]
-    {
-      std::error_code ec;
-      for (std::filesystem::path p = std::filesystem::absolute(outputDir, ec).lexically_normal();
-           !ec && !p.empty() && !std::filesystem::exists(p, ec) && p != p.parent_path();
-           p = p.parent_path())
-      {
-        created = p;
-      }
-      createOutputDirectory(outputDir, "report.json");
-    });
 }
 
 // Runs the filter; prints its errors and returns the exit code on failure.
@@ -307,6 +294,15 @@ std::string reportMap(vtkSurfaceMapFilter* map,
   json << "  \"seconds\": { \"total\": " << jsonNumber(seconds)
        << ", \"map\": " << jsonNumber(field(first, "MapSeconds")) << " },\n";
   json << "  \"settings\": " << settingsJson(map) << ",\n";
+  json << "  \"array_transfer_modes\": {";
+  for (int k = 0; k < map->GetNumberOfArrayTransferModes(); ++k)
+  {
+    const char* name = map->GetArrayTransferModeArrayName(k);
+    json << (k ? ", " : " ") << jsonString(name) << ": "
+         << jsonString(
+              vtkSurfaceMapFilter::GetArrayTransferModeAsString(map->GetArrayTransferMode(name)));
+  }
+  json << (map->GetNumberOfArrayTransferModes() ? " },\n" : "},\n");
   return json.str();
 }
 
@@ -436,8 +432,19 @@ int runMap(const std::vector<std::string>& args)
   vtkNew<vtkSurfaceMapFilter> map;
   const MapArguments arguments = parseArguments(args, map);
   const std::vector<vtkSmartPointer<vtkPolyData>> inputs = readInputs(arguments);
-  std::filesystem::path created;
-  if (inputs.empty() || !prepareOutputDirectory(arguments.outputDir, created))
+  if (inputs.empty())
+  {
+    return ExitBadInput;
+  }
+  const std::string missing =
+    missingArrayTransferNames(map, std::vector<vtkPolyData*>(inputs.begin(), inputs.end()));
+  if (!missing.empty())
+  {
+    throw UsageError{ "no input has a point array " + missing +
+      " (named by --categorical or --continuous)" };
+  }
+  std::string created;
+  if (!prepareOutputDirectory(arguments.outputDir, "report.json", created))
   {
     return ExitBadInput;
   }
@@ -446,8 +453,7 @@ int runMap(const std::vector<std::string>& args)
   const int computed = computeMap(map, inputs, errors);
   if (computed != ExitOk)
   {
-    std::error_code ec;
-    std::filesystem::remove_all(created, ec); // created here, nothing written yet
+    removeCreatedDirectory(created); // created here, nothing written yet
     return computed;
   }
   const double seconds =

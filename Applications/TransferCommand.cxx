@@ -1,8 +1,11 @@
 // surfacemap transfer: point data of one input of a map carried onto another.
+#include "ArrayTransferFlags.h"
 #include "CommandSupport.h"
 #include "Commands.h"
 
 #include "vtkSurfaceMapTransfer.h"
+
+#include "vtkAbstractArray.h"
 
 #include "vtkNew.h"
 #include "vtkPointData.h"
@@ -19,19 +22,26 @@
 namespace surfacemap
 {
 
-const char* const TransferHelp =
-  "usage: surfacemap transfer MAPDIR --from I --to J [--arrays NAME ...] -o OUT.vtp\n"
+namespace
+{
+const char* const TransferHelpIntro =
+  "usage: surfacemap transfer MAPDIR --from I --to J [--arrays NAME ...]\n"
+  "                           [--categorical NAME] [--continuous NAME] -o OUT.vtp\n"
   "\n"
   "Carries the point data of input I of a map onto the vertices of input J\n"
   "through the exact map that 'surfacemap map' computed (no optimisation runs):\n"
   "every vertex of J is sent onto input I by the map, and I's point arrays are\n"
-  "interpolated where it lands. Reads from MAPDIR (an output directory of\n"
-  "'surfacemap map'): embedding_I.vtp and embedding_J.vtp (the inputs with\n"
-  "their sphere embeddings), common_I.vtp and common_J.vtp (the common\n"
-  "triangulation lifted onto them). Writes OUT.vtp, atomically: input J's mesh\n"
-  "with the point arrays\n"
-  "  <I's arrays>       interpolated (all but SpherePosition, Landmarks,\n"
-  "                     SourceCellId and SourceBarycentric, or those of --arrays)\n"
+  "read where it lands: continuous arrays (floating-point ones by default)\n"
+  "interpolated in the triangle of I it lands in, categorical ones (integer\n"
+  "arrays by default: labels) taken from that triangle's nearest corner, so J\n"
+  "never receives a label I does not have. Reads from MAPDIR (an output\n"
+  "directory of 'surfacemap map'): embedding_I.vtp and embedding_J.vtp (the\n"
+  "inputs with their sphere embeddings), common_I.vtp and common_J.vtp (the\n"
+  "common triangulation lifted onto them). Writes OUT.vtp, atomically: input\n"
+  "J's mesh with the point arrays\n"
+  "  <I's arrays>       continuous or categorical (all but SpherePosition,\n"
+  "                     Landmarks, SourceCellId and SourceBarycentric, or those\n"
+  "                     of --arrays)\n"
   "  SourceCellId       the triangle of input I each vertex lands in\n"
   "  SourceBarycentric  its barycentric coordinates there\n"
   "  TCoords            I's per-corner texture coordinates (OBJ 'vt')\n"
@@ -41,11 +51,19 @@ const char* const TransferHelp =
   "                     given to 'surfacemap map')\n"
   "  --to J             the input that receives it\n"
   "  --arrays NAME ...  only these point arrays of input I\n"
-  "  -o, --output FILE  the output .vtp (checked for writing before computing)\n"
+  "  -o, --output FILE  the output .vtp (checked for writing before computing)\n";
+
+const char* const TransferExitCodes =
   "\n"
   "Exit code 0 on success, 2 for bad usage or input (missing map files, an\n"
   "unknown array name, an output that cannot be written), 1 for an internal\n"
   "error.\n";
+
+const std::string TransferHelpText =
+  std::string(TransferHelpIntro) + ArrayTransferFlagsHelp + TransferExitCodes;
+} // namespace
+
+const char* const TransferHelp = TransferHelpText.c_str();
 
 namespace
 {
@@ -76,7 +94,8 @@ struct TransferArguments
   std::vector<std::string> arrays;
 };
 
-TransferArguments parseArguments(const std::vector<std::string>& args)
+TransferArguments parseArguments(const std::vector<std::string>& args,
+  vtkSurfaceMapTransfer* transfer)
 {
   TransferArguments parsed;
   bool inArrays = false, sawArrays = false;
@@ -102,6 +121,9 @@ TransferArguments parseArguments(const std::vector<std::string>& args)
     else if (a == "--arrays")
     {
       inArrays = sawArrays = true;
+    }
+    else if (parseArrayTransferFlag(transfer, args, i))
+    {
     }
     else if (isOption(a))
     {
@@ -177,18 +199,26 @@ bool findMapFiles(const std::string& directory, const std::vector<std::string>& 
 }
 
 // Reads the map's files into the transfer's ports; false after printing why.
+// Throws UsageError for --categorical or --continuous arrays input I lacks.
 bool readMapFiles(vtkSurfaceMapTransfer* transfer,
-  const std::string& directory,
+  const TransferArguments& arguments,
   const std::vector<std::string>& files)
 {
   for (int port = 0; port < static_cast<int>(files.size()); ++port)
   {
-    vtkSmartPointer<vtkPolyData> data = readMesh(directory + "/" + files[port]);
+    vtkSmartPointer<vtkPolyData> data = readMesh(arguments.directory + "/" + files[port]);
     if (!data)
     {
       return false;
     }
     transfer->SetInputDataObject(port, data);
+  }
+  const std::string missing = missingArrayTransferNames(
+    transfer, { vtkPolyData::SafeDownCast(transfer->GetInputDataObject(1, 0)) });
+  if (!missing.empty())
+  {
+    throw UsageError{ "input " + std::to_string(arguments.from) + " (" + files[1] +
+      ") has no point array " + missing + " (named by --categorical or --continuous)" };
   }
   return true;
 }
@@ -214,15 +244,26 @@ int computeTransfer(vtkSurfaceMapTransfer* transfer, const std::vector<std::stri
                                                                               : ExitInternalError;
 }
 
-// Prints which arrays input J received.
-void reportTransfer(const TransferArguments& arguments, vtkPolyData* result)
+// Prints which arrays input J received, and how those of input I were carried.
+void reportTransfer(const TransferArguments& arguments, vtkSurfaceMapTransfer* transfer)
 {
+  vtkPolyData* result = transfer->GetOutput();
+  auto* source = vtkPolyData::SafeDownCast(transfer->GetInputDataObject(1, 0));
   std::string names;
   vtkPointData* pd = result->GetPointData();
   for (int a = 0; a < pd->GetNumberOfArrays(); ++a)
   {
     const char* name = pd->GetArrayName(a);
     names += (names.empty() ? "" : ", ") + std::string(name ? name : "(unnamed)");
+    vtkAbstractArray* carried =
+      name && source ? source->GetPointData()->GetAbstractArray(name) : nullptr;
+    if (carried)
+    {
+      names += std::string(" (") +
+        vtkSurfaceMapTransfer::GetArrayTransferModeAsString(
+          transfer->ResolveArrayTransferMode(carried)) +
+        ")";
+    }
   }
   std::printf("input %d -> input %d: %lld vertices of input %d received %s\n",
     arguments.from,
@@ -237,14 +278,14 @@ void reportTransfer(const TransferArguments& arguments, vtkPolyData* result)
 
 int runTransfer(const std::vector<std::string>& args)
 {
-  const TransferArguments arguments = parseArguments(args);
+  vtkNew<vtkSurfaceMapTransfer> transfer;
+  const TransferArguments arguments = parseArguments(args, transfer);
   const std::vector<std::string> files = mapFiles(arguments);
   if (!findMapFiles(arguments.directory, files) || !canWrite(arguments.output))
   {
     return ExitBadInput;
   }
-  vtkNew<vtkSurfaceMapTransfer> transfer;
-  if (!readMapFiles(transfer, arguments.directory, files))
+  if (!readMapFiles(transfer, arguments, files))
   {
     return ExitBadInput;
   }
@@ -258,7 +299,7 @@ int runTransfer(const std::vector<std::string>& args)
   {
     return ExitBadInput;
   }
-  reportTransfer(arguments, result);
+  reportTransfer(arguments, transfer);
   return ExitOk;
 }
 

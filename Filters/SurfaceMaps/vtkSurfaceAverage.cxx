@@ -312,7 +312,7 @@ int vtkSurfaceAverage::RequestData(vtkInformation*,
       vtkSurfaceMapsCombination::CheckSameConnectivity(inputs, "input");
       const Alignment alignment = alignOntoFirst(inputs, this->AlignMode, report);
       report(static_cast<double>(n) / (n + 1), "Averaging");
-      vtkSurfaceMapsCombination::Combine(inputs, weights, alignment.Transforms, output);
+      vtkSurfaceMapsCombination::Combine(inputs, weights, alignment.Transforms, 0, this, output);
       addAlignmentFields(output, alignment, weights, this->AlignMode == ALIGN_SIMILARITY);
       report(1.0, "Done");
       return 1;

@@ -26,12 +26,17 @@
  * input 0: cell 17 has the points (3 4 5) instead of (3 5 4)") and the output
  * is empty.
  *
- * Output: input 0's cells with the averaged points. Point data:
- * - floating-point arrays present on every input with the same name, type
- *   and number of components are averaged with the same weights; the active
- *   vectors are rotated by R_i first;
- * - "Landmarks" is input 0's; other integer arrays (labels, ids) are passed
- *   when identical on every input, dropped otherwise;
+ * Output: input 0's cells with the averaged points. Point data, for arrays
+ * present on every input with the same name, type and number of components
+ * (others are dropped):
+ * - continuous arrays (by default the floating-point ones) are averaged with
+ *   the same weights (integers rounded); the active vectors are rotated by
+ *   R_i first;
+ * - categorical arrays (by default the integer ones: labels, region ids) are
+ *   input 0's values, even where other inputs differ and whatever input 0's
+ *   weight: a mean of labels is no label. SetArrayTransferMode chooses per
+ *   array (see vtkSurfaceArrayTransferAlgorithm);
+ * - "Landmarks" is input 0's;
  * - "SourceCellId", "SourceBarycentric" and "SpherePosition" (where a vertex
  *   lies on one input and on its sphere) and the active normals are dropped
  *   (recompute normals with vtkPolyDataNormals).
@@ -52,20 +57,21 @@
  * input, and AbortExecute is honoured there.
  *
  * @sa vtkSurfaceMapFilter vtkSurfaceSequenceInterpolator vtkProcrustesAlignmentFilter
+ * vtkSurfaceArrayTransferAlgorithm
  */
 #ifndef vtkSurfaceAverage_h
 #define vtkSurfaceAverage_h
 
 #include "SurfaceMapsFiltersModule.h" // for export macro
-#include "vtkPolyDataAlgorithm.h"
+#include "vtkSurfaceArrayTransferAlgorithm.h"
 
 #include <memory> // for std::unique_ptr
 
-class SURFACEMAPSFILTERS_EXPORT vtkSurfaceAverage : public vtkPolyDataAlgorithm
+class SURFACEMAPSFILTERS_EXPORT vtkSurfaceAverage : public vtkSurfaceArrayTransferAlgorithm
 {
 public:
   static vtkSurfaceAverage* New();
-  vtkTypeMacro(vtkSurfaceAverage, vtkPolyDataAlgorithm);
+  vtkTypeMacro(vtkSurfaceAverage, vtkSurfaceArrayTransferAlgorithm);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   /** How each input is aligned onto input 0 before averaging. */

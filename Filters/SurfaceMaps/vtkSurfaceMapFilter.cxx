@@ -189,7 +189,7 @@ struct vtkSurfaceMapFilter::vtkInternals
     }
     const vtkInternals& internals = *this;
     const vtkSurfaceMapOutputs writer(
-      internals.Map, inputs, internals.MapInputs, internals.EmbeddingSeconds);
+      internals.Map, inputs, internals.MapInputs, internals.EmbeddingSeconds, this->Filter);
     switch (mode)
     {
       case vtkSurfaceMapFilter::INPUT_EMBEDDINGS:

@@ -39,16 +39,22 @@
  * embedding after the landmark rotation), "SourceCellId" (triangle of
  * input i containing the vertex), "SourceBarycentric" (its barycentric
  * coordinates in that triangle), "Landmarks" (id per T vertex, -1 none), and
- * every other point array of input i interpolated with those barycentric
- * coordinates (its own "Landmarks", "Sizing" and "SpherePosition" are not).
+ * every other point array of input i read there (its own "Landmarks",
+ * "Sizing", "SpherePosition" and global ids are not): continuous arrays
+ * interpolated with those barycentric coordinates (integers rounded),
+ * categorical ones taken from the triangle's corner with the largest
+ * barycentric coordinate, so no output holds a value its input does not have.
+ * Integer arrays are categorical and floating-point ones continuous unless
+ * SetArrayTransferMode says otherwise (see vtkSurfaceArrayTransferAlgorithm);
+ * changing the modes does not recompute the map.
  *
  * OutputMode MAPPED_INPUT: output j is the mesh of
  * input k = MappedInput mapped onto input j by the exact map (k's
  * connectivity, vertex v at Phi_kj(v) on input j): for transferring data
  * between inputs and for measuring the exact map. Point data:
  * "SourceCellId", "SourceBarycentric" (where on input j), "Landmarks" (input
- * k's ids) and input j's point arrays interpolated; cell data: input k's (same
- * cells). Output k is input k itself.
+ * k's ids) and input j's point arrays read there, continuous or categorical
+ * as above; cell data: input k's (same cells). Output k is input k itself.
  *
  * Texture coordinates (both modes above): when input i carries per-corner
  * texture coordinates (the 6-component cell array "CornerTCoords" of
@@ -56,7 +62,7 @@
  * texture coordinates): the corner values of the input triangle the point
  * lies in ("SourceCellId"), interpolated with "SourceBarycentric", so texture
  * seams stay sharp. Active point texture coordinates of an input are
- * interpolated like any point array (the corner ones take precedence).
+ * carried like any point array (the corner ones take precedence).
  *
  * OutputMode INPUT_EMBEDDINGS: output i is input i unchanged (points, cells,
  * point and cell data) with the point array "SpherePosition" set to its sphere
@@ -107,7 +113,8 @@
  * leaves every output empty without an error.
  *
  * Settings: every setting of the map (all but SizingMode, NumberOfThreads,
- * OutputMode and MappedInput) has its default, range and documentation in
+ * OutputMode, MappedInput and the array transfer modes of the superclass,
+ * which only shape the outputs) has its default, range and documentation in
  * one table, the engine's (Core/map/MapSettings.cxx): a new filter starts at
  * the defaults, Set<Name>() clamps into the range that Get<Name>MinValue()
  * and Get<Name>MaxValue() return, and GetNumberOfSettings(),
@@ -131,14 +138,14 @@
  * until the next update.
  *
  * @sa vtkSphereEmbeddingFilter vtkSurfaceMapEvaluation vtkSurfaceMeshValidator
- * vtkSurfaceMapTransfer
+ * vtkSurfaceMapTransfer vtkSurfaceArrayTransferAlgorithm
  */
 #ifndef vtkSurfaceMapFilter_h
 #define vtkSurfaceMapFilter_h
 
 #include "SurfaceMapsFiltersModule.h" // for export macro
 #include "vtkErrorCode.h"             // for the error codes
-#include "vtkPolyDataAlgorithm.h"
+#include "vtkSurfaceArrayTransferAlgorithm.h"
 
 #include <memory> // for std::unique_ptr
 
@@ -151,11 +158,11 @@
   type Get##name##MinValue();                                                                      \
   type Get##name##MaxValue()
 
-class SURFACEMAPSFILTERS_EXPORT vtkSurfaceMapFilter : public vtkPolyDataAlgorithm
+class SURFACEMAPSFILTERS_EXPORT vtkSurfaceMapFilter : public vtkSurfaceArrayTransferAlgorithm
 {
 public:
   static vtkSurfaceMapFilter* New();
-  vtkTypeMacro(vtkSurfaceMapFilter, vtkPolyDataAlgorithm);
+  vtkTypeMacro(vtkSurfaceMapFilter, vtkSurfaceArrayTransferAlgorithm);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   /** Which input pairs the map-distortion term measures. */

@@ -1,6 +1,8 @@
 #include "vtkSurfaceMapOutputs.h"
 
+#include "vtkSurfaceArrayTransferAlgorithm.h"
 #include "vtkSurfaceMapsConversion.h"
+#include "vtkSurfaceMapsPointDataTransfer.h"
 
 #include "geometry/MapMetrics.h"
 #include "map/MapTransfer.h"
@@ -8,12 +10,11 @@
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
 #include "vtkDataArray.h"
+#include "vtkDataSetAttributes.h"
 #include "vtkDoubleArray.h"
 #include "vtkFieldData.h"
-#include "vtkIdList.h"
 #include "vtkIdTypeArray.h"
 #include "vtkIntArray.h"
-#include "vtkNew.h"
 #include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
@@ -22,7 +23,7 @@
 
 #include <cmath>
 #include <limits>
-#include <stdexcept>
+#include <set>
 #include <string>
 
 namespace
@@ -104,38 +105,35 @@ void setGeometry(vtkPolyData* output,
 }
 
 // Where the output's points lie on `input` (SourceCellId, SourceBarycentric),
-// and the input's own point arrays interpolated there.
+// and the input's own point arrays read there, each continuous or categorical
+// as `modes` says. The map's own arrays are not carried over, nor global ids
+// (they would no longer be unique) and ghost markers.
 void setSourcePointData(vtkPolyData* output,
   vtkPolyData* input,
   const surfacemaps::PolygonMesh& inputMesh,
-  const std::vector<surfacemaps::SurfacePoint>& points)
+  const std::vector<surfacemaps::SurfacePoint>& points,
+  vtkSurfaceArrayTransferAlgorithm* modes)
 {
-  const vtkIdType n = static_cast<vtkIdType>(points.size());
-  vtkPointData* to = output->GetPointData();
   vtkPointData* from = input->GetPointData();
-  for (const char* skip :
-    { LandmarksName, SizingName, SpherePositionName, SourceCellIdName, SourceBarycentricName })
+  const std::set<std::string> skipped = { LandmarksName,
+    SizingName,
+    SpherePositionName,
+    SourceCellIdName,
+    SourceBarycentricName,
+    vtkDataSetAttributes::GhostArrayName() };
+  vtkAbstractArray* globalIds = from->GetGlobalIds();
+  std::vector<vtkAbstractArray*> arrays;
+  for (int a = 0; a < from->GetNumberOfArrays(); ++a)
   {
-    to->CopyFieldOff(skip);
-  }
-  to->InterpolateAllocate(from, n);
-  vtkNew<vtkIdList> corners;
-  corners->SetNumberOfIds(3);
-  for (vtkIdType v = 0; v < n; ++v)
-  {
-    const surfacemaps::SurfacePoint& p = points[v];
-    if (p.triangle < 0 || static_cast<std::size_t>(p.triangle) >= inputMesh.numberOfFaces())
+    vtkAbstractArray* array = from->GetAbstractArray(a);
+    if (array && array->GetName() && !skipped.count(array->GetName()) && array != globalIds)
     {
-      throw std::logic_error("point " + std::to_string(v) + " lies on no triangle of its input");
+      arrays.push_back(array);
     }
-    const int* t = inputMesh.face(static_cast<std::size_t>(p.triangle));
-    for (int k = 0; k < 3; ++k)
-    {
-      corners->SetId(k, t[k]);
-    }
-    double w[3] = { p.barycentric[0], p.barycentric[1], p.barycentric[2] };
-    to->InterpolatePoint(from, v, corners, w);
   }
+  vtkPointData* to = output->GetPointData();
+  vtkSurfaceMapsPointDataTransfer::SampleArrays(
+    from, arrays, to, inputMesh.triangles(), points, modes);
   vtkSurfaceMapsConversion::AddSourcePoints(to, points);
 }
 
@@ -251,11 +249,13 @@ void setDistortion(vtkPolyData* output, const std::vector<double>& distortion)
 vtkSurfaceMapOutputs::vtkSurfaceMapOutputs(const surfacemaps::SurfaceMapResult& map,
   const std::vector<vtkPolyData*>& inputs,
   const std::vector<surfacemaps::MapInput>& mapInputs,
-  const std::vector<double>& embeddingSeconds)
+  const std::vector<double>& embeddingSeconds,
+  vtkSurfaceArrayTransferAlgorithm* arrayModes)
   : Map(map)
   , Inputs(inputs)
   , MapInputs(mapInputs)
   , EmbeddingSeconds(embeddingSeconds)
+  , ArrayModes(arrayModes)
 {
 }
 
@@ -277,7 +277,7 @@ void vtkSurfaceMapOutputs::CommonTriangulation(const std::vector<vtkPolyData*>& 
     vtkPolyData* output = outputs[i];
     const surfacemaps::MapInput& input = this->MapInputs[i];
     setGeometry(output, map.lifted[i], map.triangles);
-    setSourcePointData(output, this->Inputs[i], input.mesh, map.sourcePoints[i]);
+    setSourcePointData(output, this->Inputs[i], input.mesh, map.sourcePoints[i], this->ArrayModes);
     vtkSurfaceMapsConversion::SetCornerTCoords(
       output->GetPointData(), input.mesh.cornerTexCoords, map.sourcePoints[i]);
     output->GetPointData()->AddArray(vectorArray(SpherePositionName, map.spherePositions[i]));
@@ -311,7 +311,7 @@ void vtkSurfaceMapOutputs::MappedInput(const std::vector<vtkPolyData*>& outputs,
     vtkPolyData* output = outputs[i];
     const surfacemaps::MapInput& input = this->MapInputs[i];
     setGeometry(output, points[i], triangles);
-    setSourcePointData(output, this->Inputs[i], input.mesh, sources[i]);
+    setSourcePointData(output, this->Inputs[i], input.mesh, sources[i], this->ArrayModes);
     vtkSurfaceMapsConversion::SetCornerTCoords(
       output->GetPointData(), input.mesh.cornerTexCoords, sources[i]);
     setLandmarks(output, this->MapInputs[k].landmarks);

@@ -4,7 +4,9 @@
  *
  * Builds the outputs of each OutputMode (see vtkSurfaceMapFilter): T lifted
  * onto every input, input k mapped onto every input, or every input with its
- * sphere embedding; their point, cell and field data.
+ * sphere embedding; their point, cell and field data. The inputs' point
+ * arrays are carried continuous or categorical by the filter's rule
+ * (vtkSurfaceArrayTransferAlgorithm).
  */
 #ifndef vtkSurfaceMapOutputs_h
 #define vtkSurfaceMapOutputs_h
@@ -15,16 +17,19 @@
 #include <vector>
 
 class vtkPolyData;
+class vtkSurfaceArrayTransferAlgorithm;
 
 class vtkSurfaceMapOutputs
 {
 public:
-  /// The map, its inputs as vtkPolyData and as the engine saw them, and the
-  /// embeddings' times (field data).
+  /// The map, its inputs as vtkPolyData and as the engine saw them, the
+  /// embeddings' times (field data) and the filter whose array transfer
+  /// modes say how the inputs' point arrays are carried.
   vtkSurfaceMapOutputs(const surfacemaps::SurfaceMapResult& map,
     const std::vector<vtkPolyData*>& inputs,
     const std::vector<surfacemaps::MapInput>& mapInputs,
-    const std::vector<double>& embeddingSeconds);
+    const std::vector<double>& embeddingSeconds,
+    vtkSurfaceArrayTransferAlgorithm* arrayModes);
 
   /// Output i: T lifted onto input i.
   void CommonTriangulation(const std::vector<vtkPolyData*>& outputs) const;
@@ -38,6 +43,7 @@ private:
   const std::vector<vtkPolyData*>& Inputs;
   const std::vector<surfacemaps::MapInput>& MapInputs;
   const std::vector<double>& EmbeddingSeconds;
+  vtkSurfaceArrayTransferAlgorithm* ArrayModes;
 };
 
 #endif

@@ -2,6 +2,7 @@
 
 #include "vtkSurfaceMapsConversion.h"
 #include "vtkSurfaceMapsErrorGuard.h"
+#include "vtkSurfaceMapsPointDataTransfer.h"
 
 #include "base/InputError.h"
 #include "geometry/SphericalTriangulation.h"
@@ -12,7 +13,6 @@
 #include "vtkDataArray.h"
 #include "vtkDoubleArray.h"
 #include "vtkFieldData.h"
-#include "vtkIdList.h"
 #include "vtkIdTypeArray.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
@@ -244,31 +244,6 @@ std::vector<vtkAbstractArray*> selectArrays(vtkPointData* source,
   return arrays;
 }
 
-// `array` of the source interpolated at the surface points.
-vtkSmartPointer<vtkAbstractArray> sampled(vtkAbstractArray* array,
-  const std::vector<std::array<int, 3>>& sourceTriangles,
-  const std::vector<surfacemaps::SurfacePoint>& points)
-{
-  auto result = vtk::TakeSmartPointer(array->NewInstance());
-  result->SetName(array->GetName());
-  result->SetNumberOfComponents(array->GetNumberOfComponents());
-  result->CopyComponentNames(array);
-  result->SetNumberOfTuples(static_cast<vtkIdType>(points.size()));
-  vtkNew<vtkIdList> corners;
-  corners->SetNumberOfIds(3);
-  for (std::size_t v = 0; v < points.size(); ++v)
-  {
-    const auto& tri = sourceTriangles[points[v].triangle];
-    double w[3] = { points[v].barycentric[0], points[v].barycentric[1], points[v].barycentric[2] };
-    for (int k = 0; k < 3; ++k)
-    {
-      corners->SetId(k, tri[k]);
-    }
-    result->InterpolateTuple(static_cast<vtkIdType>(v), corners, array, w);
-  }
-  return result;
-}
-
 // The four meshes with their certified embeddings f_to, f_from, g_to, g_from;
 // ports 2 and 3 checked to hold the same triangulation.
 struct Ports
@@ -307,13 +282,15 @@ std::vector<surfacemaps::SurfacePoint> mapTargetVertices(const Ports& ports,
 }
 
 // The target with the source's arrays (and point texture coordinates, unless
-// the source has per-corner ones) sampled at the mapped points.
+// the source has per-corner ones) sampled at the mapped points, each in the
+// mode `modes` gives it.
 void sampleOntoTarget(vtkPolyData* output,
   vtkPolyData* target,
   vtkPolyData* source,
   const PortMesh& sourcePort,
   const std::vector<vtkAbstractArray*>& arrays,
-  const std::vector<surfacemaps::SurfacePoint>& points)
+  const std::vector<surfacemaps::SurfacePoint>& points,
+  vtkSurfaceArrayTransferAlgorithm* modes)
 {
   output->CopyStructure(target);
   output->GetCellData()->PassData(target->GetCellData());
@@ -328,17 +305,8 @@ void sampleOntoTarget(vtkPolyData* output,
   {
     transferred.push_back(pointTCoords);
   }
-  for (vtkAbstractArray* array : transferred)
-  {
-    to->AddArray(sampled(array, sourcePort.triangles, points));
-    int index = -1;
-    from->GetAbstractArray(array->GetName(), index);
-    const int attribute = index >= 0 ? from->IsArrayAnAttribute(index) : -1;
-    if (attribute >= 0)
-    {
-      to->SetActiveAttribute(array->GetName(), attribute);
-    }
-  }
+  vtkSurfaceMapsPointDataTransfer::SampleArrays(
+    from, transferred, to, sourcePort.triangles, points, modes);
   vtkSurfaceMapsConversion::AddSourcePoints(to, points);
   vtkSurfaceMapsConversion::SetCornerTCoords(to, sourcePort.mesh.cornerTexCoords, points);
 }
@@ -435,7 +403,7 @@ int vtkSurfaceMapTransfer::RequestData(vtkInformation*,
 
       this->SetProgressText("Sampling the source's point data");
       this->UpdateProgress(0.8);
-      sampleOntoTarget(output, target, source, ports.Source, arrays, points);
+      sampleOntoTarget(output, target, source, ports.Source, arrays, points, this);
       this->UpdateProgress(1.0);
       return 1;
     },

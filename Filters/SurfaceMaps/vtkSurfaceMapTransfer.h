@@ -12,7 +12,7 @@
  * triangulation T's embedding g_to, the same barycentric coordinates are
  * taken on g_from (and normalised), and that sphere point is located in the
  * source's embedding f_from: a source triangle and barycentric coordinates,
- * where the source's arrays are interpolated.
+ * where the source's arrays are read.
  *
  * Inputs (one vtkPolyData each, triangles only, all from the same map):
  * - port 0, target mesh: input `to` with the point array "SpherePosition" =
@@ -28,11 +28,16 @@
  *
  * Output: the target mesh (its points, triangles, cell data and field data)
  * with point data:
- * - the source's point arrays interpolated (VTK's rules: integer values are
- *   rounded), keeping their names and their roles as active attributes: all
- *   of them except "SpherePosition", "Landmarks", "SourceCellId",
- *   "SourceBarycentric" and id-typed arrays, or those named with
- *   AddArrayName (any point array of the source);
+ * - the source's point arrays, keeping their names, types and their roles as
+ *   active attributes: all of them except "SpherePosition", "Landmarks",
+ *   "SourceCellId", "SourceBarycentric" and id-typed arrays, or those named
+ *   with AddArrayName (any point array of the source). Each is continuous
+ *   (interpolated with the barycentric coordinates; integers rounded) or
+ *   categorical (the value at the corner of the source triangle with the
+ *   largest barycentric coordinate, so never a value the source does not
+ *   have): integer arrays categorical and floating-point ones continuous
+ *   unless SetArrayTransferMode says otherwise (see
+ *   vtkSurfaceArrayTransferAlgorithm);
  * - "SourceCellId" (the source triangle the vertex maps into) and
  *   "SourceBarycentric" (its barycentric coordinates there);
  * - "TCoords" (active texture coordinates) when the source carries per-corner
@@ -57,22 +62,22 @@
  * certification of the four embeddings: roughly linear in the sizes, about
  * 0.2 s for 100 000 target vertices. Single-threaded.
  *
- * @sa vtkSurfaceMapFilter
+ * @sa vtkSurfaceMapFilter vtkSurfaceArrayTransferAlgorithm
  */
 #ifndef vtkSurfaceMapTransfer_h
 #define vtkSurfaceMapTransfer_h
 
 #include "SurfaceMapsFiltersModule.h" // for export macro
 #include "vtkErrorCode.h"             // for the error codes
-#include "vtkPolyDataAlgorithm.h"
+#include "vtkSurfaceArrayTransferAlgorithm.h"
 
 #include <memory> // for std::unique_ptr
 
-class SURFACEMAPSFILTERS_EXPORT vtkSurfaceMapTransfer : public vtkPolyDataAlgorithm
+class SURFACEMAPSFILTERS_EXPORT vtkSurfaceMapTransfer : public vtkSurfaceArrayTransferAlgorithm
 {
 public:
   static vtkSurfaceMapTransfer* New();
-  vtkTypeMacro(vtkSurfaceMapTransfer, vtkPolyDataAlgorithm);
+  vtkTypeMacro(vtkSurfaceMapTransfer, vtkSurfaceArrayTransferAlgorithm);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   /** Values of GetErrorCode() after a failed update. */

@@ -1,5 +1,7 @@
 #include "vtkSurfaceMapsCombination.h"
 
+#include "vtkSurfaceArrayTransferAlgorithm.h"
+
 #include "vtkCellArray.h"
 #include "vtkDataArray.h"
 #include "vtkDataSetAttributes.h"
@@ -14,6 +16,8 @@
 
 #include <Eigen/Dense>
 
+#include <algorithm>
+#include <cmath>
 #include <set>
 #include <sstream>
 #include <stdexcept>
@@ -63,23 +67,8 @@ std::vector<vtkDataArray*> sameArrayOnEveryMesh(const std::vector<vtkPolyData*>&
   return arrays;
 }
 
-bool identicalValues(const std::vector<vtkDataArray*>& arrays)
-{
-  const vtkIdType n = arrays[0]->GetNumberOfValues();
-  for (std::size_t i = 1; i < arrays.size(); ++i)
-  {
-    for (vtkIdType v = 0; v < n; ++v)
-    {
-      if (arrays[i]->GetVariantValue(v) != arrays[0]->GetVariantValue(v))
-      {
-        return false;
-      }
-    }
-  }
-  return true;
-}
-
-// sum_i c_i A_i a_i per tuple, A_i = rotation_i for rotated vectors, else identity.
+// sum_i c_i A_i a_i per tuple, A_i = rotation_i for rotated vectors, else
+// identity; rounded (and clamped to the type's range) for integer types.
 vtkSmartPointer<vtkDataArray> combineArray(const std::vector<vtkDataArray*>& arrays,
   const std::vector<double>& coefficients,
   const std::vector<Eigen::Matrix3d>* rotations)
@@ -97,6 +86,8 @@ vtkSmartPointer<vtkDataArray> combineArray(const std::vector<vtkDataArray*>& arr
     }
   }
   result->SetNumberOfTuples(nt);
+  const bool integer = !isFloating(result);
+  const double lowest = result->GetDataTypeMin(), highest = result->GetDataTypeMax();
   std::vector<double> sum(nc), tuple(nc);
   for (vtkIdType t = 0; t < nt; ++t)
   {
@@ -116,6 +107,13 @@ vtkSmartPointer<vtkDataArray> combineArray(const std::vector<vtkDataArray*>& arr
       for (int c = 0; c < nc; ++c)
       {
         sum[c] += coefficients[i] * tuple[c];
+      }
+    }
+    if (integer)
+    {
+      for (double& x : sum)
+      {
+        x = std::min(highest, std::max(lowest, std::round(x)));
       }
     }
     result->SetTuple(t, sum.data());
@@ -205,6 +203,8 @@ void vtkSurfaceMapsCombination::CheckSameConnectivity(const std::vector<vtkPolyD
 void vtkSurfaceMapsCombination::Combine(const std::vector<vtkPolyData*>& meshes,
   const std::vector<double>& coefficients,
   const std::vector<Similarity>& transforms,
+  int reference,
+  vtkSurfaceArrayTransferAlgorithm* modes,
   vtkPolyData* output)
 {
   vtkPolyData* first = meshes[0];
@@ -272,12 +272,10 @@ void vtkSurfaceMapsCombination::Combine(const std::vector<vtkPolyData*>& meshes,
     {
       continue;
     }
-    if (!isFloating(array))
+    if (modes->ResolveArrayTransferMode(array) ==
+      vtkSurfaceArrayTransferAlgorithm::ARRAY_TRANSFER_CATEGORICAL)
     {
-      if (identicalValues(arrays))
-      {
-        to->AddArray(array);
-      }
+      to->AddArray(arrays[reference]);
       continue;
     }
     const bool rotate =

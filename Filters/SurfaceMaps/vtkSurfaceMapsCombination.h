@@ -12,13 +12,18 @@
  *   its surface orientation), which a blend of positions does not carry over
  *   (recompute normals with vtkPolyDataNormals).
  * - "Landmarks" is input 0's.
- * - Other integer arrays (labels, ids) are passed from input 0 when they are
- *   identical on every input, dropped otherwise.
- * - Floating-point arrays with the same name, type and number of components
- *   on every input are combined component-wise with the same coefficients, in
- *   double precision, into an array of that type; the active vectors are first
- *   rotated by each input's transform. Arrays missing on some input, or of a
- *   different type or shape there, are dropped.
+ * - Other arrays with the same name, type and number of components on every
+ *   input go the way the filter's rule says
+ *   (vtkSurfaceArrayTransferAlgorithm::ResolveArrayTransferMode; by default
+ *   integer arrays categorical, floating-point ones continuous):
+ *   categorical ones are the reference input's values (input 0 for the
+ *   average, the keyframe nearest in time for the interpolator); continuous
+ *   ones are combined component-wise with the same coefficients, in double
+ *   precision, into an array of that type (integers rounded and clamped to
+ *   the type's range); the active vectors are first rotated by each input's
+ *   transform.
+ * - Arrays missing on some input, or of a different type or shape there, and
+ *   arrays that are not numeric are dropped.
  * Cell data and field data are not passed.
  */
 #ifndef vtkSurfaceMapsCombination_h
@@ -33,6 +38,7 @@
 #include <vector>
 
 class vtkPolyData;
+class vtkSurfaceArrayTransferAlgorithm;
 
 class vtkSurfaceMapsCombination
 {
@@ -76,11 +82,14 @@ public:
     const std::string& kind);
 
   /// output = mesh 0's cells with points sum_i c_i T_i(x_i) and the point
-  /// arrays described above. `transforms` is empty (identity) or one per
-  /// mesh. Meshes with coefficient 0 do not contribute values.
+  /// arrays described above, categorical ones from mesh `reference`, each
+  /// array's mode from `modes`. `transforms` is empty (identity) or one per
+  /// mesh. Meshes with coefficient 0 do not contribute continuous values.
   static void Combine(const std::vector<vtkPolyData*>& meshes,
     const std::vector<double>& coefficients,
     const std::vector<Similarity>& transforms,
+    int reference,
+    vtkSurfaceArrayTransferAlgorithm* modes,
     vtkPolyData* output);
 };
 

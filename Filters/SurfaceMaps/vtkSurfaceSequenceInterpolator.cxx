@@ -174,6 +174,21 @@ std::vector<double> keyframeTimes(vtkSurfaceSequenceInterpolator* self, int n)
   return t;
 }
 
+// The keyframe nearest to `time` (the earlier one at a midpoint): where
+// categorical arrays come from.
+int nearestKeyframe(const std::vector<double>& t, double time)
+{
+  int nearest = 0;
+  for (int k = 1; k < static_cast<int>(t.size()); ++k)
+  {
+    if (std::abs(t[k] - time) < std::abs(t[nearest] - time))
+    {
+      nearest = k;
+    }
+  }
+  return nearest;
+}
+
 // The requested time clamped into the keyframe range (the first keyframe's
 // time when none is requested).
 double clampedTime(const std::vector<double>& t, double requested)
@@ -266,7 +281,7 @@ int vtkSurfaceSequenceInterpolator::RequestData(vtkInformation*,
       const double time = clampedTime(t, requested);
       const std::vector<double> c =
         coefficients(t, time, this->InterpolationMode == INTERPOLATE_SMOOTH);
-      vtkSurfaceMapsCombination::Combine(inputs, c, {}, output);
+      vtkSurfaceMapsCombination::Combine(inputs, c, {}, nearestKeyframe(t, time), this, output);
       auto interpolated = vtkSmartPointer<vtkDoubleArray>::New();
       interpolated->SetName("InterpolationTime");
       interpolated->InsertNextValue(time);

@@ -33,12 +33,16 @@
  * the output is empty. The keyframes are requested without a time (they are
  * static surfaces).
  *
- * Output: keyframe 0's cells with the interpolated points; point data
- * interpolated with the same coefficients under vtkSurfaceAverage's rules
- * (floating-point arrays present on every keyframe with the same name, type
- * and components are interpolated; "Landmarks" is keyframe 0's; other integer
- * arrays pass when identical on every keyframe; "SourceCellId",
- * "SourceBarycentric", "SpherePosition" and the active normals are dropped).
+ * Output: keyframe 0's cells with the interpolated points; point data under
+ * vtkSurfaceAverage's rules, for arrays present on every keyframe with the
+ * same name, type and components: continuous arrays (by default the
+ * floating-point ones) interpolated with the same coefficients (integers
+ * rounded); categorical arrays (by default the integer ones: labels) the
+ * values of the keyframe nearest in time (the earlier one at a midpoint), so
+ * they switch at the midpoints between keyframes; SetArrayTransferMode
+ * chooses per array (see vtkSurfaceArrayTransferAlgorithm). "Landmarks" is
+ * keyframe 0's; "SourceCellId", "SourceBarycentric", "SpherePosition" and the
+ * active normals are dropped.
  * No cell data. Field data "InterpolationTime": the time actually
  * interpolated (the requested time clamped into [t_0, t_{K-1}]). The output's
  * vtkDataObject::DATA_TIME_STEP is the requested time.
@@ -51,20 +55,22 @@
  * or four keyframes around the time contribute values); single-threaded.
  *
  * @sa vtkSurfaceMapFilter vtkSurfaceAverage vtkTemporalInterpolator
+ * vtkSurfaceArrayTransferAlgorithm
  */
 #ifndef vtkSurfaceSequenceInterpolator_h
 #define vtkSurfaceSequenceInterpolator_h
 
 #include "SurfaceMapsFiltersModule.h" // for export macro
-#include "vtkPolyDataAlgorithm.h"
+#include "vtkSurfaceArrayTransferAlgorithm.h"
 
 #include <memory> // for std::unique_ptr
 
-class SURFACEMAPSFILTERS_EXPORT vtkSurfaceSequenceInterpolator : public vtkPolyDataAlgorithm
+class SURFACEMAPSFILTERS_EXPORT vtkSurfaceSequenceInterpolator
+  : public vtkSurfaceArrayTransferAlgorithm
 {
 public:
   static vtkSurfaceSequenceInterpolator* New();
-  vtkTypeMacro(vtkSurfaceSequenceInterpolator, vtkPolyDataAlgorithm);
+  vtkTypeMacro(vtkSurfaceSequenceInterpolator, vtkSurfaceArrayTransferAlgorithm);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   /** How the surface moves between keyframes. */

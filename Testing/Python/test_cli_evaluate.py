@@ -25,6 +25,28 @@ def test_evaluate_writes_summary_and_tables(tmp_path):
     assert f"SymmetricDirichlet     {summary['SymmetricDirichlet']:.10g}"[:30] in r.stdout
 
 
+def test_evaluate_creates_a_new_output_dir(tmp_path):
+    out = tmp_path / "new" / "nested"  # neither exists
+    r = run("evaluate", data("ellipsoid.obj"), data("blob.off"), "--output-dir", out)
+    assert r.returncode == 0, r.stderr
+    assert sorted(p.name for p in out.iterdir()) == [
+        "distortion_curve.csv", "evaluated.vtp", "summary.json", "triangles.csv"]
+    assert json.loads((out / "summary.json").read_text())["triangles"] == 1280
+
+
+def test_output_dir_is_checked_before_computing(tmp_path):
+    blocker = tmp_path / "a_file"
+    blocker.write_text("not a directory")
+    r = run("evaluate", data("ellipsoid.obj"), data("blob.off"), "--output-dir", blocker / "out")
+    assert r.returncode == 2
+    assert "cannot create the output directory" in r.stderr
+    assert "SymmetricDirichlet" not in r.stdout  # nothing was computed
+    # A failed evaluation leaves no directory behind that it created.
+    r = run("evaluate", data("ellipsoid.obj"), data("limbs.ply"), "--output-dir", tmp_path / "made")
+    assert r.returncode == 2 and "do not have the same connectivity" in r.stderr
+    assert not (tmp_path / "made").exists()
+
+
 def test_mismatched_connectivity_is_bad_input():
     r = run("evaluate", data("ellipsoid.obj"), data("limbs.ply"))
     assert r.returncode == 2

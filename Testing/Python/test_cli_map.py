@@ -138,6 +138,56 @@ def test_report_records_absolute_input_paths(tmp_path):
     assert [os.path.realpath(p) for p in recorded] == [os.path.realpath(p) for p in expected]
 
 
+def with_labels(path, out, seed):
+    """The mesh at `path` as a .vtp with random "Label" (int: 0 or 100) and "Mask" (float: 0 or 1)."""
+    import random
+    from vtkmodules.vtkCommonCore import vtkFloatArray, vtkIntArray
+    from vtkmodules.vtkIOXML import vtkXMLPolyDataWriter
+    import surfacemaps
+    mesh = surfacemaps.read_mesh(path)
+    pick = random.Random(seed)
+    label, mask = vtkIntArray(), vtkFloatArray()
+    label.SetName("Label")
+    mask.SetName("Mask")
+    for v in range(mesh.GetNumberOfPoints()):
+        label.InsertNextValue(pick.choice((0, 100)))
+        mask.InsertNextValue(pick.choice((0.0, 1.0)))
+    mesh.GetPointData().AddArray(label)
+    mesh.GetPointData().AddArray(mask)
+    writer = vtkXMLPolyDataWriter()
+    writer.SetInputData(mesh)
+    writer.SetFileName(str(out))
+    assert writer.Write() == 1
+    return out
+
+
+def test_array_transfer_flags(tmp_path):
+    a = with_labels(data("ellipsoid.obj"), tmp_path / "a.vtp", 1)
+    b = with_labels(data("blob.off"), tmp_path / "b.vtp", 2)
+    # A name no input has is bad usage, found before anything is created.
+    r = run("map", a, b, *SHORT, "--categorical", "Nope", "--output-dir", tmp_path / "never")
+    assert r.returncode == 2 and "no input has a point array 'Nope'" in r.stderr
+    assert not (tmp_path / "never").exists()
+    r = run("map", a, b, "--continuous", "Mask", "--categorical", "Mask", "--output-dir", tmp_path / "never")
+    assert r.returncode == 2 and "given both as --categorical and as --continuous" in r.stderr
+    help_text = run("map", "--help").stdout
+    assert "--categorical NAME" in help_text and "--continuous NAME" in help_text
+
+    out = tmp_path / "out"
+    r = run("map", a, b, *SHORT, "--continuous", "Label", "--categorical", "Mask", "--output-dir", out)
+    assert r.returncode == 0, r.stderr
+    assert json.loads((out / "report.json").read_text())["array_transfer_modes"] == {
+        "Label": "continuous", "Mask": "categorical"}
+    for name in ("common_0.vtp", "common_1.vtp", "mapped_1.vtp"):
+        mesh = read_vtp(out / name)
+        mask, label = mesh.GetPointData().GetArray("Mask"), mesh.GetPointData().GetArray("Label")
+        masks = {mask.GetTuple1(v) for v in range(mesh.GetNumberOfPoints())}
+        labels = {label.GetTuple1(v) for v in range(mesh.GetNumberOfPoints())}
+        assert masks == {0.0, 1.0}, name  # categorical floats keep to the inputs' values
+        assert len(labels - {0.0, 100.0}) > 0, name  # continuous integers are interpolated
+        assert all(x == round(x) and 0 <= x <= 100 for x in labels), name
+
+
 def test_bad_input_is_exit_2_and_writes_nothing(tmp_path):
     out = tmp_path / "out"
     r = run("map", data("ellipsoid_coarse.stl"), data("bad/torus.obj"), *SHORT, "--output-dir", out)

@@ -16,12 +16,27 @@ def write_vtp(mesh, path):
     assert writer.Write() == 1
 
 
-def with_coordinates(path, landmarks, out, corner_tcoords=False):
+LABELS = (-5, 3, 17, 42, 1000)
+
+
+def with_coordinates(path, landmarks, out, corner_tcoords=False, labels=False):
     """The mesh at `path` with the point array "Coordinates" (its own points) and, if asked, a
-    synthetic per-corner "CornerTCoords" with a seam at every vertex (u = triangle id, v = corner)."""
-    from vtkmodules.vtkCommonCore import vtkDoubleArray
+    synthetic per-corner "CornerTCoords" with a seam at every vertex (u = triangle id, v = corner)
+    and random "Label" (int, values from LABELS) and "Mask" (float, 0 or 1) point arrays."""
+    import random
+    from vtkmodules.vtkCommonCore import vtkDoubleArray, vtkFloatArray, vtkIntArray
     import surfacemaps
     mesh = surfacemaps.read_mesh(path, landmarks=landmarks)
+    if labels:
+        pick = random.Random(19)
+        label, mask = vtkIntArray(), vtkFloatArray()
+        label.SetName("Label")
+        mask.SetName("Mask")
+        for v in range(mesh.GetNumberOfPoints()):
+            label.InsertNextValue(pick.choice(LABELS))
+            mask.InsertNextValue(pick.choice((0.0, 1.0)))
+        mesh.GetPointData().AddArray(label)
+        mesh.GetPointData().AddArray(mask)
     coordinates = vtkDoubleArray()
     coordinates.SetName("Coordinates")
     coordinates.SetNumberOfComponents(3)
@@ -42,10 +57,10 @@ def with_coordinates(path, landmarks, out, corner_tcoords=False):
 @pytest.fixture(scope="module")
 def map_dir(tmp_path_factory):
     """A map of ellipsoid (input 0, with Coordinates and CornerTCoords) and blob (input 1, with
-    Coordinates), both with landmarks."""
+    Coordinates, Label and Mask), both with landmarks."""
     root = tmp_path_factory.mktemp("transfer")
     with_coordinates(data("ellipsoid.obj"), data("ellipsoid.pinned"), root / "ellipsoid.vtp", corner_tcoords=True)
-    with_coordinates(data("blob.off"), data("blob.vts"), root / "blob.vtp")
+    with_coordinates(data("blob.off"), data("blob.vts"), root / "blob.vtp", labels=True)
     out = root / "map"
     r = run("map", root / "ellipsoid.vtp", root / "blob.vtp", *SHORT, "--output-dir", out)
     assert r.returncode == 0, r.stderr
@@ -140,6 +155,66 @@ def test_python_helper(map_dir):
         surfacemaps.transfer(map_dir, 7, 1)
     with pytest.raises(TypeError):
         surfacemaps.transfer(map_dir, "0", 1)
+
+
+def values(mesh, name):
+    array = mesh.GetPointData().GetArray(name)
+    assert array is not None, name
+    return {array.GetTuple1(v) for v in range(array.GetNumberOfTuples())}
+
+
+def test_labels_are_categorical_and_flags_choose_per_array(map_dir, tmp_path):
+    blob = read_vtp(map_dir / "embedding_1.vtp")
+    # By type: the int labels keep to the blob's values, the float mask is interpolated.
+    out = tmp_path / "by_type.vtp"
+    r = run("transfer", map_dir, "--from", "1", "--to", "0", "-o", out)
+    assert r.returncode == 0, r.stderr
+    assert "Label (categorical)" in r.stdout and "Mask (continuous)" in r.stdout
+    result = read_vtp(out)
+    assert values(blob, "Label") == set(map(float, LABELS))
+    assert 1 < len(values(result, "Label")) and values(result, "Label") <= values(blob, "Label")
+    assert len(values(result, "Mask")) > 2
+    # Both the other way.
+    out = tmp_path / "chosen.vtp"
+    r = run("transfer", map_dir, "--from", "1", "--to", "0", "--continuous", "Label", "--categorical", "Mask",
+            "-o", out)
+    assert r.returncode == 0, r.stderr
+    assert "Label (continuous)" in r.stdout and "Mask (categorical)" in r.stdout
+    result = read_vtp(out)
+    labels = values(result, "Label")
+    assert not labels <= set(map(float, LABELS))  # interpolated labels are invented
+    assert all(label == round(label) for label in labels)
+    assert values(result, "Mask") == {0.0, 1.0}
+    assert result.GetPointData().GetArray("Mask").GetDataType() == blob.GetPointData().GetArray("Mask").GetDataType()
+
+
+def test_array_transfer_flags_are_checked(map_dir, tmp_path):
+    out = tmp_path / "out.vtp"
+    r = run("transfer", map_dir, "--from", "1", "--to", "0", "--categorical", "Nope", "-o", out)
+    assert r.returncode == 2
+    assert "input 1 (embedding_1.vtp) has no point array 'Nope'" in r.stderr
+    r = run("transfer", map_dir, "--from", "1", "--to", "0", "--categorical", "Label", "--continuous", "Label",
+            "-o", out)
+    assert r.returncode == 2 and "'Label' is given both as --categorical and as --continuous" in r.stderr
+    r = run("transfer", map_dir, "--from", "1", "--to", "0", "-o", out, "--continuous")
+    assert r.returncode == 2 and "--continuous needs a point array name" in r.stderr
+    assert not out.exists()
+    r = run("transfer", "--help")
+    assert "--categorical NAME" in r.stdout and "--continuous NAME" in r.stdout
+
+
+def test_python_helper_array_modes(map_dir):
+    import surfacemaps
+    labels = set(map(float, LABELS))
+    result = surfacemaps.transfer(map_dir, source=1, target=0)
+    assert values(result, "Label") == labels
+    result = surfacemaps.transfer(map_dir, source=1, target=0, categorical=["Mask"], continuous=["Label"])
+    assert values(result, "Mask") == {0.0, 1.0}
+    assert not values(result, "Label") <= labels
+    with pytest.raises(ValueError, match="both categorical and continuous"):
+        surfacemaps.transfer(map_dir, 1, 0, categorical=["Mask"], continuous=["Mask"])
+    with pytest.raises(TypeError):
+        surfacemaps.transfer(map_dir, 1, 0, categorical="Mask")  # a list of names, not one string
 
 
 def test_missing_map_files_are_named(map_dir, tmp_path):

@@ -30,6 +30,14 @@ Helpers:
 ``average_surfaces(meshes, weights=None, align="rigid")``
     Weighted mean shape of meshes with identical connectivity (e.g. the
     outputs of map_surfaces), each aligned onto the first (vtkSurfaceAverage).
+
+Point arrays carried onto other points (map_surfaces, transfer,
+average_surfaces) are continuous (interpolated; by default the floating-point
+arrays) or categorical (labels: never a value the source does not have; by
+default the integer arrays): through a map the value of the nearest corner of
+the source triangle, in an average input 0's values. Each of these helpers
+takes ``categorical=[names]`` and ``continuous=[names]`` to choose per array
+(vtkSurfaceArrayTransferAlgorithm.SetArrayTransferMode).
 ``write_time_series(source, times, directory, name="surface")``
     The output of a temporal source (e.g. vtkSurfaceSequenceInterpolator) at
     each time as .vtp files plus a ParaView .pvd collection.
@@ -153,6 +161,25 @@ def evaluate_map(source, target, source_original=None, target_original=None):
     return {name: fields.GetArray(name).GetValue(0) for name in _SUMMARY if fields.GetArray(name) is not None}
 
 
+def _set_array_transfer_modes(algorithm, categorical, continuous):
+    """Per-array transfer modes on a vtkSurfaceArrayTransferAlgorithm from two lists of array names."""
+    chosen = {}
+    for names, mode in ((categorical, algorithm.ARRAY_TRANSFER_CATEGORICAL),
+                        (continuous, algorithm.ARRAY_TRANSFER_CONTINUOUS)):
+        if names is None:
+            continue
+        if isinstance(names, (str, bytes)):
+            raise TypeError(f"categorical and continuous are lists of array names, not the string {names!r}")
+        for name in names:
+            if not isinstance(name, str) or not name:
+                raise TypeError(f"array names are non-empty strings, not {name!r}")
+            if chosen.get(name, mode) != mode:
+                raise ValueError(f"array {name!r} is given both categorical and continuous")
+            chosen[name] = mode
+    for name, mode in chosen.items():
+        algorithm.SetArrayTransferMode(name, mode)
+
+
 _PAIR_MODES = {"star": vtkSurfaceMapFilter.PAIRS_STAR, "sequence": vtkSurfaceMapFilter.PAIRS_SEQUENCE,
                "cycle": vtkSurfaceMapFilter.PAIRS_CYCLE, "all": vtkSurfaceMapFilter.PAIRS_ALL}
 
@@ -208,7 +235,7 @@ def settings_table():
 
 
 def map_surfaces(meshes, landmarks=None, target_error=None, pairs=None, keep_landmarks=None, mapped=False,
-                 **settings):
+                 categorical=None, continuous=None, **settings):
     """Certified bijective map between closed genus-0 meshes through one common triangulation.
 
     Runs vtkSurfaceMapFilter on `meshes` (vtkPolyData or file names; one mesh
@@ -224,6 +251,9 @@ def map_surfaces(meshes, landmarks=None, target_error=None, pairs=None, keep_lan
       distortion is minimised with three or more meshes.
     - `keep_landmarks`: lock landmarks exactly after the landmark phase (True)
       or release them.
+    - `categorical`, `continuous`: names of point arrays carried onto the
+      outputs as labels (the nearest corner's value) or interpolated, instead
+      of by type (integer arrays categorical, floating-point ones continuous).
     - `settings`: any other setting of vtkSurfaceMapFilter's settings table by
       name, e.g. ``CoarseIterations=10``, ``FineIterations=20``,
       ``MapWeight=2.0`` (``settings_table()`` lists them).
@@ -232,7 +262,8 @@ def map_surfaces(meshes, landmarks=None, target_error=None, pairs=None, keep_lan
     Returns the list of outputs, one per mesh: the common triangulation lifted
     onto mesh i, same triangles for all, with the point arrays
     "SpherePosition", "SourceCellId", "SourceBarycentric", "Landmarks" and the
-    mesh's own point arrays, cell data "Distortion" and field data (energies,
+    mesh's own point arrays (continuous or categorical, see above), cell data
+    "Distortion" and field data (energies,
     per-phase iterations and times, "Bijective"). With ``mapped=True`` returns
     ``(common, mapped)`` where ``mapped[j]`` is the first mesh mapped onto mesh
     j by the exact map (its connectivity), computed from the same map.
@@ -257,6 +288,7 @@ def map_surfaces(meshes, landmarks=None, target_error=None, pairs=None, keep_lan
         f.SetPairMode(_PAIR_MODES[pairs])
     if keep_landmarks is not None:
         f.SetKeepLandmarks(bool(keep_landmarks))
+    _set_array_transfer_modes(f, categorical, continuous)
     known = {row["name"] for row in settings_table()} | {"SizingMode", "NumberOfThreads"}
     for name, value in settings.items():
         if name not in known:
@@ -284,19 +316,24 @@ def map_surfaces(meshes, landmarks=None, target_error=None, pairs=None, keep_lan
     return common, outputs()
 
 
-def transfer(map_dir, source, target, arrays=None):
+def transfer(map_dir, source, target, arrays=None, categorical=None, continuous=None):
     """Carry the point data of input `source` of a saved map onto the vertices of input `target`.
 
     `map_dir` is an output directory of ``surfacemap map`` (it reads
     embedding_<i>.vtp and common_<i>.vtp of both inputs); `source` and `target`
     are input indices. Runs vtkSurfaceMapTransfer: every vertex of the target
     is sent onto the source by the map, where the source's point arrays are
-    interpolated. Returns the target mesh (vtkPolyData) with those arrays (all
-    but "SpherePosition", "Landmarks", "SourceCellId", "SourceBarycentric", or
-    the names in `arrays`), "SourceCellId", "SourceBarycentric" (where on the
-    source) and "TCoords" (the source's per-corner or point texture
-    coordinates evaluated there). Raises InputError for missing files, unknown
-    array names or files that do not fit together.
+    read: continuous arrays interpolated, categorical ones (labels) taken from
+    the nearest corner of the source triangle, so the target never gets a
+    label the source does not have. By default integer arrays are categorical
+    and floating-point ones continuous; `categorical` and `continuous` (lists
+    of array names) choose per array. Returns the target mesh (vtkPolyData)
+    with those arrays (all but "SpherePosition", "Landmarks", "SourceCellId",
+    "SourceBarycentric", or the names in `arrays`), "SourceCellId",
+    "SourceBarycentric" (where on the source) and "TCoords" (the source's
+    per-corner or point texture coordinates evaluated there). Raises
+    InputError for missing files, unknown array names or files that do not
+    fit together, ValueError for an array given both ways.
     """
     import os
     for name, index in (("source", source), ("target", target)):
@@ -308,6 +345,7 @@ def transfer(map_dir, source, target, arrays=None):
     if missing:
         raise InputError(f"{map_dir} has no {', '.join(missing)} (written by 'surfacemap map')")
     t = vtkSurfaceMapTransfer()
+    _set_array_transfer_modes(t, categorical, continuous)
     errors = _collect_errors(t)
     for port, path in enumerate(files):
         t.SetInputDataObject(port, read_mesh(path))
@@ -326,7 +364,7 @@ _ALIGN_MODES = {"none": vtkSurfaceAverage.ALIGN_NONE, "rigid": vtkSurfaceAverage
                 "similarity": vtkSurfaceAverage.ALIGN_SIMILARITY}
 
 
-def average_surfaces(meshes, weights=None, align="rigid"):
+def average_surfaces(meshes, weights=None, align="rigid", categorical=None, continuous=None):
     """Weighted mean shape of meshes with identical connectivity (vtkSurfaceAverage).
 
     - `meshes`: vtkPolyData or file names, all with the same points count and
@@ -335,6 +373,9 @@ def average_surfaces(meshes, weights=None, align="rigid"):
     - `weights`: None (all 1) or one weight >= 0 per mesh; normalised to sum 1.
     - `align`: "none", "rigid" (rotation and translation of each mesh onto the
       first, area-weighted least squares) or "similarity" (also a uniform scale).
+    - `categorical`, `continuous`: names of point arrays taken from the first
+      mesh (labels) or averaged, instead of by type (integer arrays
+      categorical, floating-point ones continuous).
 
     Returns a vtkPolyData in the first mesh's frame with its cells, the averaged
     points and point arrays, and field data "AlignmentRMS",
@@ -351,6 +392,7 @@ def average_surfaces(meshes, weights=None, align="rigid"):
         if len(weights) != len(meshes):
             raise InputError(f"{len(meshes)} meshes but {len(weights)} weights")
     a = vtkSurfaceAverage()
+    _set_array_transfer_modes(a, categorical, continuous)
     errors = _collect_errors(a)
     a.SetAlignMode(_ALIGN_MODES[align])
     for k, mesh in enumerate(meshes):

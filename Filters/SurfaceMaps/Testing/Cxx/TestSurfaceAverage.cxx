@@ -326,7 +326,7 @@ TEST(SurfaceAverage, PointArraysFollowTheRules)
   // Landmarks: input 0's even where input 1 differs.
   pointArray<vtkIntArray>(a, "Landmarks", 1, [](vtkIdType v, int) { return v == 3 ? 0.0 : -1.0; });
   pointArray<vtkIntArray>(b, "Landmarks", 1, [](vtkIdType v, int) { return v == 4 ? 0.0 : -1.0; });
-  // Integer labels: passed when identical, dropped when not.
+  // Integer labels are categorical: input 0's values, identical or not.
   pointArray<vtkIntArray>(a, "Region", 1, [](vtkIdType v, int) { return v % 3 * 1.0; });
   pointArray<vtkIntArray>(b, "Region", 1, [](vtkIdType v, int) { return v % 3 * 1.0; });
   pointArray<vtkIntArray>(a, "Label", 1, [](vtkIdType v, int) { return v % 2 * 1.0; });
@@ -382,15 +382,62 @@ TEST(SurfaceAverage, PointArraysFollowTheRules)
   EXPECT_EQ(pd->GetArray("Landmarks")->GetTuple1(4), -1.0);
   ASSERT_NE(pd->GetArray("Region"), nullptr);
   EXPECT_EQ(pd->GetArray("Region")->GetTuple1(5), 2.0);
-  for (const char* name : { "Label",
-         "SourceCellId",
-         "SourceBarycentric",
-         "SpherePosition",
-         "Pressure",
-         "OnlyHere",
-         "Normals" })
+  ASSERT_NE(pd->GetArray("Label"), nullptr);
+  EXPECT_EQ(pd->GetArray("Label")->GetDataType(), VTK_INT);
+  for (vtkIdType v = 0; v < a->GetNumberOfPoints(); ++v)
+  {
+    ASSERT_EQ(pd->GetArray("Label")->GetTuple1(v), v % 2 * 1.0) << v; // not a mean of labels
+  }
+  for (const char* name :
+    { "SourceCellId", "SourceBarycentric", "SpherePosition", "Pressure", "OnlyHere", "Normals" })
   {
     EXPECT_EQ(pd->GetAbstractArray(name), nullptr) << name;
+  }
+}
+
+// The per-array choice both ways: a double array taken from input 0 as a
+// label, an int array averaged (and rounded); input 0's weight does not
+// matter for categorical arrays.
+TEST(SurfaceAverage, ArrayTransferModesOverrideTheType)
+{
+  vtkSmartPointer<vtkPolyData> a = shape();
+  auto b = vtkSmartPointer<vtkPolyData>::New();
+  b->DeepCopy(a);
+  pointArray<vtkDoubleArray>(a, "Thickness", 1, [](vtkIdType v, int) { return 1.0 * v; });
+  pointArray<vtkDoubleArray>(b, "Thickness", 1, [](vtkIdType v, int) { return 3.0 * v; });
+  pointArray<vtkIntArray>(a, "Count", 1, [](vtkIdType v, int) { return 10.0 * v; });
+  pointArray<vtkIntArray>(b, "Count", 1, [](vtkIdType v, int) { return 10.0 * v + 5.0; });
+
+  vtkNew<vtkSurfaceAverage> average;
+  average->AddInputData(a);
+  average->AddInputData(b);
+  average->SetInputWeight(0, 0.0);
+  average->SetArrayTransferModeToCategorical("Thickness");
+  average->SetArrayTransferMode("Count", vtkSurfaceAverage::ARRAY_TRANSFER_CONTINUOUS);
+  EXPECT_EQ(
+    average->GetArrayTransferMode("Thickness"), vtkSurfaceAverage::ARRAY_TRANSFER_CATEGORICAL);
+  EXPECT_EQ(average->GetNumberOfArrayTransferModes(), 2);
+  average->Update();
+  vtkPointData* pd = average->GetOutput()->GetPointData();
+  ASSERT_NE(pd->GetArray("Thickness"), nullptr);
+  ASSERT_NE(pd->GetArray("Count"), nullptr);
+  EXPECT_EQ(pd->GetArray("Count")->GetDataType(), VTK_INT);
+  for (vtkIdType v = 0; v < a->GetNumberOfPoints(); ++v)
+  {
+    ASSERT_EQ(pd->GetArray("Thickness")->GetTuple1(v), 1.0 * v);    // input 0's, weight 0
+    ASSERT_EQ(pd->GetArray("Count")->GetTuple1(v), 10.0 * v + 5.0); // input 1's alone
+  }
+
+  // Equal weights: the mean 10 v + 2.5 rounds (half away from zero).
+  average->SetInputWeight(0, 1.0);
+  average->ClearArrayTransferModes();
+  average->SetArrayTransferModeToContinuous("Count");
+  average->Update();
+  pd = average->GetOutput()->GetPointData();
+  for (vtkIdType v = 0; v < a->GetNumberOfPoints(); ++v)
+  {
+    ASSERT_EQ(pd->GetArray("Count")->GetTuple1(v), 10.0 * v + 3.0);
+    ASSERT_NEAR(pd->GetArray("Thickness")->GetTuple1(v), 2.0 * v, 1e-12); // by type again
   }
 }
 
@@ -449,4 +496,10 @@ TEST(SurfaceAverage, PipelineAndPrintSelf)
   average->Print(print);
   EXPECT_TRUE(contains(print.str(), "AlignMode: 2")) << print.str();
   EXPECT_TRUE(contains(print.str(), "InputWeights: 1: 2.5")) << print.str();
+  EXPECT_TRUE(contains(print.str(), "ArrayTransferModes: (by type")) << print.str();
+  average->SetArrayTransferModeToCategorical("Thickness");
+  std::ostringstream chosen;
+  average->Print(chosen);
+  EXPECT_TRUE(contains(chosen.str(), "ArrayTransferModes: Thickness: categorical;"))
+    << chosen.str();
 }

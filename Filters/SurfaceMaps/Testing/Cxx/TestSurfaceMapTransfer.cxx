@@ -6,9 +6,9 @@
 #include "vtkSurfaceMapsConversion.h"
 #include "vtkSurfaceMeshReader.h"
 
-#include "mesh/Primitives.h"
 #include "geometry/SphereLocator.h"
 #include "geometry/SphericalTriangulation.h"
+#include "mesh/Primitives.h"
 
 #include "vtkCallbackCommand.h"
 #include "vtkCellArray.h"
@@ -17,17 +17,21 @@
 #include "vtkDataArray.h"
 #include "vtkDoubleArray.h"
 #include "vtkFieldData.h"
+#include "vtkFloatArray.h"
 #include "vtkIntArray.h"
 #include "vtkNew.h"
 #include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
+#include "vtkShortArray.h"
 #include "vtkStringArray.h"
 
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
+#include <random>
 #include <set>
 #include <sstream>
 #include <string>
@@ -586,4 +590,353 @@ TEST(SurfaceMapTransfer, PrintSelfListsTheArrayNames)
   transfer->Print(some);
   EXPECT_NE(some.str().find("ArrayNames: Height Label"), std::string::npos);
   EXPECT_EQ(transfer->GetArrayName(2), nullptr);
+}
+
+namespace
+{
+// Point array `name` of type ArrayT, value(v) per vertex.
+template<typename ArrayT, typename F>
+void addPointArray(vtkPolyData* mesh, const char* name, F value)
+{
+  vtkNew<ArrayT> array;
+  array->SetName(name);
+  array->SetNumberOfValues(mesh->GetNumberOfPoints());
+  for (vtkIdType v = 0; v < mesh->GetNumberOfPoints(); ++v)
+  {
+    array->SetValue(v, value(v));
+  }
+  mesh->GetPointData()->AddArray(array);
+}
+
+std::set<double> valuesOf(vtkDataArray* array)
+{
+  std::set<double> values;
+  for (vtkIdType v = 0; v < array->GetNumberOfTuples(); ++v)
+  {
+    values.insert(array->GetTuple1(v));
+  }
+  return values;
+}
+
+// Every value of `name` on `output` is the value of `source`'s array at the
+// corner of the landing triangle (SourceCellId) with the largest
+// barycentric coordinate (SourceBarycentric): in particular a source value.
+void expectNearestCornerValues(vtkPolyData* output, vtkPolyData* source, const char* name)
+{
+  vtkDataArray* got = output->GetPointData()->GetArray(name);
+  vtkDataArray* own = source->GetPointData()->GetArray(name);
+  ASSERT_NE(got, nullptr) << name;
+  ASSERT_NE(own, nullptr) << name;
+  EXPECT_EQ(got->GetDataType(), own->GetDataType());
+  const std::set<double> present = valuesOf(own);
+  for (vtkIdType v = 0; v < output->GetNumberOfPoints(); ++v)
+  {
+    const Landing l = landing(output, source, v);
+    int corner = 0;
+    for (int k = 1; k < 3; ++k)
+    {
+      corner = l.weights[k] > l.weights[corner] ? k : corner;
+    }
+    ASSERT_TRUE(present.count(got->GetTuple1(v)))
+      << name << " at " << v << ": " << got->GetTuple1(v);
+    ASSERT_EQ(got->GetTuple1(v), own->GetTuple1(l.corners[corner])) << name << " at " << v;
+  }
+}
+
+// Number of connected regions of equal value of `array` over the edges of `mesh`.
+int regionCount(vtkPolyData* mesh, vtkDataArray* array)
+{
+  const vtkIdType n = mesh->GetNumberOfPoints();
+  std::vector<vtkIdType> parent(n);
+  for (vtkIdType v = 0; v < n; ++v)
+  {
+    parent[v] = v;
+  }
+  std::function<vtkIdType(vtkIdType)> root = [&](vtkIdType v)
+  { return parent[v] == v ? v : parent[v] = root(parent[v]); };
+  for (const auto& t : triangles(mesh))
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      const int a = t[k], b = t[(k + 1) % 3];
+      if (array->GetTuple1(a) == array->GetTuple1(b))
+      {
+        parent[root(a)] = root(b);
+      }
+    }
+  }
+  int regions = 0;
+  for (vtkIdType v = 0; v < n; ++v)
+  {
+    regions += root(v) == v ? 1 : 0;
+  }
+  return regions;
+}
+
+// Contiguous regions: every vertex takes the label of the nearest of `seeds`
+// along the edges (breadth first), so each region is connected.
+std::vector<int> seededRegions(vtkPolyData* mesh, const std::vector<vtkIdType>& seeds)
+{
+  const vtkIdType n = mesh->GetNumberOfPoints();
+  std::vector<std::vector<int>> neighbours(n);
+  for (const auto& t : triangles(mesh))
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      neighbours[t[k]].push_back(t[(k + 1) % 3]);
+      neighbours[t[(k + 1) % 3]].push_back(t[k]);
+    }
+  }
+  std::vector<int> label(n, -1);
+  std::vector<vtkIdType> queue;
+  for (std::size_t s = 0; s < seeds.size(); ++s)
+  {
+    label[seeds[s]] = 10 * static_cast<int>(s) + 1;
+    queue.push_back(seeds[s]);
+  }
+  for (std::size_t q = 0; q < queue.size(); ++q)
+  {
+    for (int w : neighbours[queue[q]])
+    {
+      if (label[w] < 0)
+      {
+        label[w] = label[queue[q]];
+        queue.push_back(w);
+      }
+    }
+  }
+  return label;
+}
+
+// The Data pair with landmarks, `arrays` adds point arrays to each input.
+template<typename F>
+std::vector<vtkSmartPointer<vtkPolyData>> dataPair(F arrays)
+{
+  std::vector<vtkSmartPointer<vtkPolyData>> inputs = { read("ellipsoid.obj", "ellipsoid.pinned"),
+    read("blob.off", "blob.vts") };
+  for (std::size_t i = 0; i < inputs.size(); ++i)
+  {
+    arrays(inputs[i], static_cast<int>(i));
+  }
+  return inputs;
+}
+} // namespace
+
+// The test: random integer labels never come out as a value the
+// source does not have, through the map filter's outputs (T on each input,
+// input 0 mapped onto each input) and through the transfer filter.
+TEST(SurfaceMapTransfer, CategoricalLabelsAreNeverInvented)
+{
+  const int palette[] = { -5, 3, 17, 42, 1000 };
+  const MapOutputs m = computeMap(dataPair(
+    [&palette](vtkPolyData* mesh, int i)
+    {
+      std::mt19937 random(19 + i);
+      std::uniform_int_distribution<int> pick(0, 4);
+      addPointArray<vtkIntArray>(mesh, "Label", [&](vtkIdType) { return palette[pick(random)]; });
+      addPointArray<vtkShortArray>(
+        mesh, "Small", [&](vtkIdType) { return static_cast<short>(pick(random)); });
+    }));
+  for (int i = 0; i < 2; ++i)
+  {
+    SCOPED_TRACE("input " + std::to_string(i));
+    for (const char* name : { "Label", "Small" })
+    {
+      expectNearestCornerValues(m.common[i], m.inputs[i], name);
+      expectNearestCornerValues(m.mapped[i], m.inputs[i], name);
+    }
+  }
+  // Not a lucky draw: the vertices of input 0 land inside triangles of input
+  // 1, where interpolation would mix labels.
+  int inside = 0;
+  for (vtkIdType v = 0; v < m.mapped[1]->GetNumberOfPoints(); ++v)
+  {
+    inside += landing(m.mapped[1], m.inputs[1], v).weights.maxCoeff() < 0.9 ? 1 : 0;
+  }
+  EXPECT_GT(inside, 100);
+
+  for (int from = 0; from < 2; ++from)
+  {
+    const int to = 1 - from;
+    vtkNew<vtkSurfaceMapTransfer> transfer;
+    Events events;
+    watch(transfer, events);
+    connect(transfer, m.embeddings[to], m.embeddings[from], m.common[to], m.common[from]);
+    transfer->Update();
+    ASSERT_TRUE(events.Errors.empty()) << events.Errors.front();
+    SCOPED_TRACE("transfer " + std::to_string(from) + " -> " + std::to_string(to));
+    expectNearestCornerValues(transfer->GetOutput(), m.inputs[from], "Label");
+    expectNearestCornerValues(transfer->GetOutput(), m.inputs[from], "Small");
+  }
+}
+
+// A label field of a few contiguous regions stays that many regions on the
+// other surface, through the transfer filter and the mapped outputs.
+TEST(SurfaceMapTransfer, ContiguousLabelRegionsKeepTheirCount)
+{
+  const std::vector<vtkIdType> seeds = { 0, 130, 260, 390, 520 };
+  const MapOutputs m = computeMap(dataPair(
+    [&seeds](vtkPolyData* mesh, int)
+    {
+      const std::vector<int> labels = seededRegions(mesh, seeds);
+      addPointArray<vtkIntArray>(mesh, "Region", [&labels](vtkIdType v) { return labels[v]; });
+    }));
+  for (int i = 0; i < 2; ++i)
+  {
+    vtkDataArray* own = m.inputs[i]->GetPointData()->GetArray("Region");
+    ASSERT_EQ(regionCount(m.inputs[i], own), 5); // the premise: five connected regions
+    ASSERT_EQ(valuesOf(own).size(), 5u);
+  }
+  // Input 1's regions on input 0's mesh (mapped_1), and input 0's on input 1's.
+  vtkDataArray* onMapped = m.mapped[1]->GetPointData()->GetArray("Region");
+  ASSERT_NE(onMapped, nullptr);
+  EXPECT_EQ(valuesOf(onMapped), valuesOf(m.inputs[1]->GetPointData()->GetArray("Region")));
+  EXPECT_EQ(regionCount(m.mapped[1], onMapped), 5);
+
+  vtkNew<vtkSurfaceMapTransfer> transfer;
+  connect(transfer, m.embeddings[1], m.embeddings[0], m.common[1], m.common[0]);
+  transfer->Update();
+  vtkDataArray* onTarget = transfer->GetOutput()->GetPointData()->GetArray("Region");
+  ASSERT_NE(onTarget, nullptr);
+  EXPECT_EQ(valuesOf(onTarget), valuesOf(m.inputs[0]->GetPointData()->GetArray("Region")));
+  EXPECT_EQ(regionCount(transfer->GetOutput(), onTarget), 5);
+
+  // Interpolated instead, the same field gets values between the regions'.
+  transfer->SetArrayTransferModeToContinuous("Region");
+  transfer->Update();
+  onTarget = transfer->GetOutput()->GetPointData()->GetArray("Region");
+  EXPECT_GT(valuesOf(onTarget).size(), 5u);
+}
+
+// The per-array choice both ways, on the map filter (without recomputing the
+// map) and on the transfer filter: a float array chosen categorical keeps to
+// the source's values, an int array chosen continuous is interpolated.
+TEST(SurfaceMapTransfer, ArrayTransferModesOverrideTheType)
+{
+  auto inputs = dataPair(
+    [](vtkPolyData* mesh, int i)
+    {
+      std::mt19937 random(7 + i);
+      std::uniform_int_distribution<int> coin(0, 1);
+      addPointArray<vtkFloatArray>(mesh, "Mask", [&](vtkIdType) { return coin(random) * 1.0f; });
+      addPointArray<vtkIntArray>(mesh, "Percent", [&](vtkIdType) { return 100 * coin(random); });
+    });
+  vtkNew<vtkSurfaceMapFilter> filter;
+  useShortSchedule(filter);
+  Events events;
+  watch(filter, events);
+  filter->AddInputData(inputs[0]);
+  filter->AddInputData(inputs[1]);
+  filter->SetOutputModeToMappedFirstInput();
+  filter->Update();
+  ASSERT_TRUE(events.Errors.empty()) << events.Errors.front();
+  auto values = [&filter](const char* name)
+  {
+    vtkDataArray* array = filter->GetOutput(1)->GetPointData()->GetArray(name);
+    EXPECT_NE(array, nullptr) << name;
+    return array ? valuesOf(array) : std::set<double>();
+  };
+  const std::set<double> twoValues = { 0.0, 1.0 }, twoPercents = { 0.0, 100.0 };
+  // By type: the float mask blends, the int percentages do not.
+  EXPECT_GT(values("Mask").size(), 2u);
+  EXPECT_EQ(values("Percent"), twoPercents);
+
+  events.Texts.clear();
+  filter->SetArrayTransferModeToCategorical("Mask");
+  filter->SetArrayTransferMode("Percent", vtkSurfaceMapFilter::ARRAY_TRANSFER_CONTINUOUS);
+  filter->Update();
+  ASSERT_TRUE(events.Errors.empty()) << events.Errors.front();
+  EXPECT_FALSE(computedTheMap(events)); // only the outputs changed
+  EXPECT_EQ(values("Mask"), twoValues);
+  EXPECT_EQ(filter->GetOutput(1)->GetPointData()->GetArray("Mask")->GetDataType(), VTK_FLOAT);
+  const std::set<double> percents = values("Percent");
+  EXPECT_GT(percents.size(), 2u);
+  for (double p : percents)
+  {
+    ASSERT_EQ(p, std::round(p)); // integers stay integers
+    ASSERT_TRUE(p >= 0.0 && p <= 100.0) << p;
+  }
+
+  // Back to the types.
+  filter->ClearArrayTransferModes();
+  EXPECT_EQ(filter->GetNumberOfArrayTransferModes(), 0);
+  filter->Update();
+  EXPECT_GT(values("Mask").size(), 2u);
+  EXPECT_EQ(values("Percent"), twoPercents);
+
+  // The transfer filter, input 1 onto input 0.
+  const MapOutputs m = computeMap(inputs);
+  vtkNew<vtkSurfaceMapTransfer> transfer;
+  connect(transfer, m.embeddings[0], m.embeddings[1], m.common[0], m.common[1]);
+  transfer->SetArrayTransferModeToCategorical("Mask");
+  transfer->SetArrayTransferModeToContinuous("Percent");
+  transfer->Update();
+  vtkPointData* pd = transfer->GetOutput()->GetPointData();
+  ASSERT_NE(pd->GetArray("Mask"), nullptr);
+  expectNearestCornerValues(transfer->GetOutput(), m.inputs[1], "Mask");
+  ASSERT_NE(pd->GetArray("Percent"), nullptr);
+  EXPECT_GT(valuesOf(pd->GetArray("Percent")).size(), 2u);
+}
+
+TEST(SurfaceMapTransfer, ArrayTransferModeSettings)
+{
+  vtkNew<vtkSurfaceMapTransfer> transfer;
+  Events events;
+  watch(transfer, events);
+  EXPECT_EQ(transfer->GetArrayTransferMode("Label"), vtkSurfaceMapTransfer::ARRAY_TRANSFER_BY_TYPE);
+  const vtkMTimeType before = transfer->GetMTime();
+  transfer->SetArrayTransferMode("Label", vtkSurfaceMapTransfer::ARRAY_TRANSFER_BY_TYPE);
+  EXPECT_EQ(transfer->GetMTime(), before); // nothing changed
+  transfer->SetArrayTransferModeToContinuous("Label");
+  transfer->SetArrayTransferModeToCategorical("Height");
+  EXPECT_GT(transfer->GetMTime(), before);
+  EXPECT_EQ(transfer->GetNumberOfArrayTransferModes(), 2);
+  EXPECT_STREQ(transfer->GetArrayTransferModeArrayName(0), "Height"); // name order
+  EXPECT_STREQ(transfer->GetArrayTransferModeArrayName(1), "Label");
+  EXPECT_EQ(transfer->GetArrayTransferModeArrayName(2), nullptr);
+  EXPECT_EQ(
+    transfer->GetArrayTransferMode("Label"), vtkSurfaceMapTransfer::ARRAY_TRANSFER_CONTINUOUS);
+
+  // The rule: the choice, else the type; strings are always categorical.
+  vtkNew<vtkIntArray> label;
+  label->SetName("Label");
+  vtkNew<vtkIntArray> other;
+  other->SetName("Other");
+  vtkNew<vtkDoubleArray> height;
+  height->SetName("Height");
+  vtkNew<vtkDoubleArray> depth;
+  depth->SetName("Depth");
+  vtkNew<vtkStringArray> names;
+  names->SetName("Names");
+  EXPECT_EQ(
+    transfer->ResolveArrayTransferMode(label), vtkSurfaceMapTransfer::ARRAY_TRANSFER_CONTINUOUS);
+  EXPECT_EQ(
+    transfer->ResolveArrayTransferMode(other), vtkSurfaceMapTransfer::ARRAY_TRANSFER_CATEGORICAL);
+  EXPECT_EQ(
+    transfer->ResolveArrayTransferMode(height), vtkSurfaceMapTransfer::ARRAY_TRANSFER_CATEGORICAL);
+  EXPECT_EQ(
+    transfer->ResolveArrayTransferMode(depth), vtkSurfaceMapTransfer::ARRAY_TRANSFER_CONTINUOUS);
+  transfer->SetArrayTransferModeToContinuous("Names");
+  EXPECT_EQ(
+    transfer->ResolveArrayTransferMode(names), vtkSurfaceMapTransfer::ARRAY_TRANSFER_CATEGORICAL);
+
+  std::ostringstream print;
+  transfer->Print(print);
+  EXPECT_NE(print.str().find(
+              "ArrayTransferModes: Height: categorical; Label: continuous; Names: continuous;"),
+    std::string::npos)
+    << print.str();
+
+  // Bad modes and names are errors that change nothing; BY_TYPE removes a choice.
+  transfer->SetArrayTransferMode("Label", 3);
+  transfer->SetArrayTransferMode(nullptr, 1);
+  EXPECT_EQ(events.Errors.size(), 2u);
+  EXPECT_EQ(
+    transfer->GetArrayTransferMode("Label"), vtkSurfaceMapTransfer::ARRAY_TRANSFER_CONTINUOUS);
+  transfer->SetArrayTransferMode("Label", vtkSurfaceMapTransfer::ARRAY_TRANSFER_BY_TYPE);
+  EXPECT_EQ(transfer->GetNumberOfArrayTransferModes(), 2);
+  transfer->ClearArrayTransferModes();
+  EXPECT_EQ(transfer->GetNumberOfArrayTransferModes(), 0);
+  EXPECT_EQ(
+    transfer->ResolveArrayTransferMode(label), vtkSurfaceMapTransfer::ARRAY_TRANSFER_CATEGORICAL);
 }

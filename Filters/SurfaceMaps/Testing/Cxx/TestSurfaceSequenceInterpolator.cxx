@@ -9,6 +9,7 @@
 #include "vtkDoubleArray.h"
 #include "vtkFieldData.h"
 #include "vtkInformation.h"
+#include "vtkIntArray.h"
 #include "vtkNew.h"
 #include "vtkPointData.h"
 #include "vtkPoints.h"
@@ -342,6 +343,54 @@ TEST(SurfaceSequenceInterpolator, PlainUpdateUsesTimeValue)
   interpolator->Update();
   EXPECT_EQ(
     interpolator->GetOutput()->GetFieldData()->GetArray("InterpolationTime")->GetTuple1(0), 1.0);
+}
+
+// Categorical arrays (integers by default) are the keyframe nearest in time;
+// continuous ones are blended, also an integer array chosen continuous.
+TEST(SurfaceSequenceInterpolator, CategoricalArraysComeFromTheNearestKeyframe)
+{
+  Sequence s(wobble, Times); // keyframes at 0, 1, 2.5, 3, 5
+  s.Interpolator->SetInterpolationModeToLinear();
+  for (std::size_t k = 0; k < s.Keyframes.size(); ++k)
+  {
+    vtkNew<vtkIntArray> stage;
+    stage->SetName("Stage");
+    stage->SetNumberOfValues(s.Keyframes[k]->GetNumberOfPoints());
+    stage->Fill(static_cast<int>(10 * k));
+    s.Keyframes[k]->GetPointData()->AddArray(stage);
+    s.Keyframes[k]->Modified();
+  }
+  auto valueAt = [&s](double t, const char* name)
+  {
+    s.Interpolator->UpdateTimeStep(t);
+    vtkDataArray* array = s.Interpolator->GetOutput()->GetPointData()->GetArray(name);
+    EXPECT_NE(array, nullptr) << name;
+    EXPECT_EQ(array->GetRange()[0], array->GetRange()[1]) << name << " at " << t;
+    return array ? array->GetTuple1(0) : -1.0;
+  };
+  EXPECT_EQ(valueAt(0.4, "Stage"), 0.0);
+  EXPECT_EQ(valueAt(0.5, "Stage"), 0.0); // the midpoint: the earlier keyframe
+  EXPECT_EQ(valueAt(1.6, "Stage"), 10.0);
+  EXPECT_EQ(valueAt(2.0, "Stage"), 20.0);
+  EXPECT_EQ(valueAt(4.2, "Stage"), 40.0);
+  EXPECT_EQ(valueAt(5.0, "Stage"), 40.0);
+
+  // Chosen continuous: blended and rounded (0.3 of the way from 0 to 10).
+  s.Interpolator->SetArrayTransferModeToContinuous("Stage");
+  EXPECT_EQ(valueAt(0.3, "Stage"), 3.0);
+  EXPECT_EQ(valueAt(0.74, "Stage"), 7.0);
+  EXPECT_EQ(s.Interpolator->GetOutput()->GetPointData()->GetArray("Stage")->GetDataType(), VTK_INT);
+
+  // A floating-point array chosen categorical: exactly the nearest keyframe's.
+  s.Interpolator->SetArrayTransferModeToCategorical("Value");
+  s.Interpolator->UpdateTimeStep(1.6);
+  vtkDataArray* value = s.Interpolator->GetOutput()->GetPointData()->GetArray("Value");
+  vtkDataArray* expected = s.Keyframes[1]->GetPointData()->GetArray("Value");
+  ASSERT_NE(value, nullptr);
+  for (vtkIdType v = 0; v < expected->GetNumberOfTuples(); ++v)
+  {
+    ASSERT_EQ(value->GetTuple1(v), expected->GetTuple1(v)) << v;
+  }
 }
 
 TEST(SurfaceSequenceInterpolator, PrintSelfShowsEverySetting)

@@ -127,6 +127,37 @@ def test_average_surfaces_errors(copies):
         surfacemaps.average_surfaces([])
 
 
+def with_array(mesh, name, values):
+    """A shallow copy of `mesh` with the point array `name` (numpy values, their dtype)."""
+    copy = vtkPolyData()
+    copy.ShallowCopy(mesh)
+    array = numpy_to_vtk(np.ascontiguousarray(values), deep=True)
+    array.SetName(name)
+    copy.GetPointData().AddArray(array)
+    return copy
+
+
+def test_average_surfaces_array_modes(copies):
+    _, common = copies
+    n = common[0].GetNumberOfPoints()
+    v = np.arange(n)
+    meshes = [with_array(with_array(c, "Label", (10 * i + v % 3).astype(np.int32)), "Thickness", (i + 1.0) * v)
+              for i, c in enumerate(common)]
+    label = lambda mesh: vtk_to_numpy(mesh.GetPointData().GetArray("Label"))  # noqa: E731
+    thickness = lambda mesh: vtk_to_numpy(mesh.GetPointData().GetArray("Thickness"))  # noqa: E731
+    # By type: the int labels are the first mesh's, the double thickness the mean.
+    average = surfacemaps.average_surfaces(meshes)
+    assert np.array_equal(label(average), v % 3)
+    assert np.allclose(thickness(average), 2.0 * v)
+    # Chosen the other way: labels averaged (and rounded), thickness the first mesh's.
+    average = surfacemaps.average_surfaces(meshes, categorical=["Thickness"], continuous=["Label"])
+    assert label(average).dtype == np.int32
+    assert np.array_equal(label(average), 10 + v % 3)
+    assert np.array_equal(thickness(average), 1.0 * v)
+    with pytest.raises(ValueError, match="both categorical and continuous"):
+        surfacemaps.average_surfaces(meshes, categorical=["Label"], continuous=["Label"])
+
+
 def keyframe_sequence(common, times):
     interpolator = surfacemaps.vtkSurfaceSequenceInterpolator()
     for k, (mesh, t) in enumerate(zip(common, times)):

@@ -140,6 +140,29 @@ def test_map_surfaces_landmarks_as_vertex_ids():
         surfacemaps.map_surfaces([a, b], landmarks=[[0, 100000], [0, 1]])
 
 
+def test_map_surfaces_array_modes():
+    from vtkmodules.util.numpy_support import numpy_to_vtk
+    rng = np.random.default_rng(3)
+    meshes = []
+    for name in ("ellipsoid_coarse.stl", "limbs_coarse.vtk"):
+        mesh = surfacemaps.read_mesh(data(name))
+        for array_name in ("Label", "Percent"):
+            array = numpy_to_vtk(rng.choice([0, 100], mesh.GetNumberOfPoints()).astype(np.int32), deep=True)
+            array.SetName(array_name)
+            mesh.GetPointData().AddArray(array)
+        meshes.append(mesh)
+    common = surfacemaps.map_surfaces(meshes, continuous=["Percent"], **SHORT)
+    for out in common:
+        labels = vtk_to_numpy(out.GetPointData().GetArray("Label"))
+        percents = vtk_to_numpy(out.GetPointData().GetArray("Percent"))
+        assert set(np.unique(labels)) <= {0, 100}  # categorical by type: no invented labels
+        assert len(set(np.unique(percents)) - {0, 100}) > 0  # chosen continuous: interpolated
+    with pytest.raises(ValueError, match="both categorical and continuous"):
+        surfacemaps.map_surfaces(meshes, categorical=["Label"], continuous=["Label"])
+    with pytest.raises(TypeError, match="lists of array names"):
+        surfacemaps.map_surfaces(meshes, categorical="Label")
+
+
 def test_map_surfaces_errors():
     with pytest.raises(surfacemaps.InputError, match=r"input 1 \(.*torus.obj\) has genus 1"):
         surfacemaps.map_surfaces([data("ellipsoid_coarse.stl"), surfacemaps.read_mesh(data("bad/torus.obj"))])
