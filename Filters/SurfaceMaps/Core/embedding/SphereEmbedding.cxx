@@ -402,6 +402,15 @@ private:
       result.lineSearchSeconds += step.lineSearchSeconds;
       result.energy = step.energyAfter;
       energyNow = step.energyAfter;
+      {
+        std::ostringstream line;
+        line << "embedding iteration " << it + 1 << ": " << points.numberOfVariables() / 2
+             << " moving points, E "
+             << step.energyAfter << ", decrement " << step.decrement << ", step " << step.step
+             << " (" << step.lineSearchTrials << " trials" << (step.stalled ? ", stalled" : "")
+             << (step.regularised ? ", shifted" : "") << ")";
+        this->Options.log(Logger::Detail, line.str());
+      }
       // Converged when the decrease a Newton step expects (decrement^2 / 2)
       // is negligible. Absolute, in units of the distortion (whose minimum is
       // 1): a relative test would stop at once when one bad triangle makes

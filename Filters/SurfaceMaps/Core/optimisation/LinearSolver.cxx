@@ -143,21 +143,30 @@ LinearSolveResult LinearSolver::solve(const Eigen::SparseMatrix<double>& H,
     }
   }
 
-  // Regularise: H + shift I, the shift growing from a tiny fraction of the
-  // largest diagonal entry. The pattern already holds the diagonal.
+  // Regularise: H + mu diag(H) (Levenberg-Marquardt's scaling), mu growing
+  // from a tiny value. A shift proportional to each variable's own curvature
+  // keeps every variable's step in proportion. A shift of the identity sized
+  // by the largest diagonal entry would not: where a few nearly degenerate
+  // triangles make that entry 1e12 times the others (the case in which the
+  // factorisation fails), it freezes every ordinary variable and the
+  // optimisation crawls for dozens of steps. Variables without curvature get
+  // a floor relative to the largest entry. The pattern already holds the
+  // diagonal.
   double maxDiagonal = 0.0;
   for (Eigen::Index i = 0; i < H.rows(); ++i)
   {
     maxDiagonal = std::max(maxDiagonal, std::abs(H.coeff(i, i)));
   }
+  const double floor = std::max(1e-300, 1e-14 * maxDiagonal);
   Eigen::SparseMatrix<double> shifted = H;
-  double shift = std::max(1e-12, 1e-10 * maxDiagonal);
+  double shift = 1e-10;
   for (int attempt = 0; attempt < 12; ++attempt, shift *= 10.0)
   {
     shifted = H;
     for (Eigen::Index i = 0; i < shifted.rows(); ++i)
     {
-      shifted.coeffRef(i, i) += shift;
+      double& h = shifted.coeffRef(i, i);
+      h += shift * std::max(std::abs(h), floor);
     }
     cholesky.factorize(shifted);
     if (cholesky.info() != Eigen::Success)
@@ -168,8 +177,8 @@ LinearSolveResult LinearSolver::solve(const Eigen::SparseMatrix<double>& H,
     if (cholesky.info() == Eigen::Success && x.allFinite())
     {
       std::ostringstream message;
-      message << "Cholesky factorisation failed; solved with diagonal shift " << shift;
-      log(Logger::Warning, message.str());
+      message << "Cholesky factorisation failed; solved with the diagonal scaled by 1 + " << shift;
+      log(Logger::Detail, message.str());
       result.success = true;
       result.shift = shift;
       return result;

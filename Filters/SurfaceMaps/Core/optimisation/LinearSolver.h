@@ -15,7 +15,8 @@ namespace surfacemaps
 struct LinearSolveResult
 {
   bool success = false;
-  /// Diagonal shift that had to be added (0: the plain factorisation worked).
+  /// Relative diagonal shift mu that had to be added, H + mu diag(H) (0: the
+  /// plain factorisation worked).
   double shift = 0.0;
   /// Whether the symbolic analysis was (re)done for this solve.
   bool analysed = false;
@@ -25,8 +26,10 @@ struct LinearSolveResult
 /// its upper triangle, with CHOLMOD's Cholesky factorisation (supernodal for
 /// dense factors, simplicial for sparse ones). The symbolic
 /// analysis is kept while the sparsity pattern stays the same. If the
-/// factorisation fails (H not numerically positive definite), H + shift I is
-/// factorised with a growing shift; the log says which happened.
+/// factorisation fails (H not numerically positive definite, or definite but
+/// scaled beyond what rounding allows), H + mu diag(H) is factorised with a
+/// growing mu (Levenberg-Marquardt's scaling, so that every variable keeps its
+/// step in proportion); the log says which happened.
 class LinearSolver
 {
 public:
