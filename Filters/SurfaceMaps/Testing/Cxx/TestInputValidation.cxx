@@ -2,6 +2,7 @@
 // ids, the Landmarks array's shape and values, and what evaluation accepts.
 #include "FilterTestData.h"
 #include "vtkSphereEmbeddingFilter.h"
+#include "vtkSurfaceAverage.h"
 #include "vtkSurfaceMapEvaluation.h"
 #include "vtkSurfaceMeshValidator.h"
 
@@ -168,4 +169,23 @@ TEST(InputValidation, EvaluationRejectsWhatItCannotMeasure)
   EXPECT_TRUE(contains(error, "non-finite coordinates (first: vertex 17")) << error;
 
   EXPECT_EQ(evaluationError(mesh, mesh, mesh, mesh), "");
+}
+
+TEST(InputValidation, AverageRejectsIndicesOutsideThePoints)
+{
+  vtkSmartPointer<vtkPolyData> mesh = read("ellipsoid.obj");
+  for (const vtkIdType bad : { vtkIdType(-2), vtkIdType(642), vtkIdType(4294967299LL) })
+  {
+    vtkSmartPointer<vtkPolyData> broken = withIndex(mesh, 7, bad);
+    vtkNew<vtkSurfaceAverage> average;
+    filtertest::Events events;
+    filtertest::watch(average, events);
+    average->AddInputData(broken);
+    average->AddInputData(broken);
+    average->Update();
+    ASSERT_FALSE(events.Errors.empty()) << bad;
+    EXPECT_TRUE(contains(events.Errors.front(), "cell 2 uses vertex index " + std::to_string(bad)))
+      << events.Errors.front();
+    EXPECT_EQ(average->GetOutput()->GetNumberOfPoints(), 0);
+  }
 }
