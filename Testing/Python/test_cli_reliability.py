@@ -62,6 +62,18 @@ def test_map_into_a_full_disk_leaves_no_broken_file(tmp_path):
                 assert read_vtp(out / name).GetNumberOfPoints() > 0, name
 
 
+def test_transfer_into_a_full_disk_leaves_nothing(tmp_path):
+    mapdir = tmp_path / "map"
+    r = run("map", data("ellipsoid.obj"), data("blob.off"), "--output-dir", mapdir, *SHORT)
+    assert r.returncode == 0, r.stderr
+    out = tmp_path / "transferred.vtp"
+    r = limited_run(2048, "transfer", mapdir, "--from", 0, "--to", 1, "-o", out)
+    assert r.returncode == 2, (r.stdout, r.stderr)
+    assert f"cannot write '{out}'" in r.stderr
+    assert not out.exists()
+    assert leftovers(tmp_path) == []
+
+
 def test_stdout_write_error_is_reported():
     with open("/dev/full", "w") as full:
         r = subprocess.run([CLI, "check", data("ellipsoid.obj")], stdout=full, stderr=subprocess.PIPE,
@@ -70,9 +82,10 @@ def test_stdout_write_error_is_reported():
     assert "cannot write to standard output" in r.stderr
 
 
-def test_sigterm_removes_the_temporary_file(tmp_path):
+@pytest.mark.parametrize("signum", [signal.SIGTERM, signal.SIGINT], ids=["SIGTERM", "SIGINT"])
+def test_signal_removes_the_temporary_file(tmp_path, signum):
     """A FIFO stands in for the temporary file of common_0.vtp: the map blocks writing it
-    (a 4 KiB pipe nobody reads), so SIGTERM arrives while the temporary file exists."""
+    (a 4 KiB pipe nobody reads), so the signal arrives while the temporary file exists."""
     out = tmp_path / "map"
     out.mkdir()
 
@@ -89,14 +102,14 @@ def test_sigterm_removes_the_temporary_file(tmp_path):
         ready, _, _ = select.select([reader], [], [], 120)
         assert ready, "the map never started writing"
         assert fifo.exists()
-        process.send_signal(signal.SIGTERM)
+        process.send_signal(signum)
         process.wait(timeout=60)
     finally:
         os.close(reader)
         if process.poll() is None:
             process.kill()
             process.wait()
-    assert process.returncode == -signal.SIGTERM, process.stderr.read()
+    assert process.returncode == -signum, process.stderr.read()
     assert not fifo.exists()
     assert leftovers(out) == []
     assert not (out / "common_0.vtp").exists()
