@@ -425,6 +425,9 @@ def _replace_atomically(path, write):
     temporary = os.path.join(os.path.dirname(path), f".{os.path.basename(path)}.{os.getpid()}.tmp")
     try:
         write(temporary)
+        # Data on the disk before the rename (a full disk may only show here).
+        with open(temporary, "rb") as written:
+            os.fsync(written.fileno())
         os.replace(temporary, path)
     except BaseException:
         if os.path.exists(temporary):
@@ -452,8 +455,10 @@ def write_mesh(mesh, path):
         writer = vtkXMLPolyDataWriter()
         writer.SetInputData(mesh)
         writer.SetFileName(temporary)
-        if writer.Write() != 1:
-            raise OSError(f"cannot write {path}")
+        # Write() returns 1 even when the data did not fit on the disk; the
+        # error code says so.
+        if writer.Write() != 1 or writer.GetErrorCode() != 0:
+            raise OSError(f"cannot write {path} (VTK error code {writer.GetErrorCode()})")
 
     _replace_atomically(path, write)
 

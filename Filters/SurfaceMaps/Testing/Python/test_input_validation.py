@@ -77,3 +77,24 @@ def test_landmark_lists_name_integer_distinct_vertices():
         surfacemaps.map_surfaces(meshes, landmarks=[[7.5, 20, 30], [1, 2, 3]])
     with pytest.raises(surfacemaps.InputError, match="not an integer"):
         surfacemaps.map_surfaces(meshes, landmarks=[["7", 20, 30], [1, 2, 3]])
+
+
+def test_write_mesh_into_a_full_disk_raises_and_leaves_nothing(tmp_path):
+    """RLIMIT_FSIZE stands in for a full disk; the writer's Write() still returns 1 there."""
+    import subprocess
+    import sys
+    script = (
+        "import resource, signal, sys, surfacemaps\n"
+        "signal.signal(signal.SIGXFSZ, signal.SIG_IGN)\n"
+        "resource.setrlimit(resource.RLIMIT_FSIZE, (4096, 4096))\n"
+        "mesh = surfacemaps.read_mesh(sys.argv[1])\n"
+        "try:\n"
+        "    surfacemaps.write_mesh(mesh, sys.argv[2])\n"
+        "except OSError as e:\n"
+        "    print('OSError', e)\n")
+    out = tmp_path / "mesh.vtp"
+    r = subprocess.run([sys.executable, "-c", script, data("limbs.ply"), str(out)], capture_output=True,
+                       text=True, timeout=120, env=os.environ)
+    assert r.returncode == 0, r.stderr
+    assert f"OSError cannot write {out}" in r.stdout
+    assert os.listdir(tmp_path) == []
