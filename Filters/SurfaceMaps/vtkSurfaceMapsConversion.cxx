@@ -39,9 +39,11 @@ surfacemaps::PolygonMesh vtkSurfaceMapsConversion::ToPolygonMesh(vtkPolyData* in
   // The engine indexes with int: larger meshes are refused, never wrapped.
   if (np > std::numeric_limits<int>::max() || corners > std::numeric_limits<int>::max())
   {
-    throw surfacemaps::InputError(InputName(input, 0) + " is too large: " + std::to_string(np) +
-      " points and " + std::to_string(corners) + " polygon corners (at most " +
-      std::to_string(std::numeric_limits<int>::max()) + " of each are supported)");
+    const std::string name = InputName(input, 0);
+    throw surfacemaps::InputError((name == "input 0" ? std::string("a mesh") : name) +
+      " is too large: " + std::to_string(np) + " points and " + std::to_string(corners) +
+      " polygon corners (at most " + std::to_string(std::numeric_limits<int>::max()) +
+      " of each are supported)");
   }
   mesh.points.resize(np);
   for (vtkIdType i = 0; i < np; ++i)
