@@ -16,7 +16,12 @@
 #include "vtkVariant.h"
 #include "vtkXMLPolyDataWriter.h"
 
+#include <fcntl.h>
+#include <sys/stat.h>
 #include <unistd.h>
+
+#include <atomic>
+#include <csignal>
 
 #include <cerrno>
 #include <cmath>
@@ -228,7 +233,149 @@ std::string temporaryName(const std::string& path)
 {
   return path + ".tmp." + std::to_string(getpid());
 }
+
+// Temporary files being written, for the signal handler to remove: fixed
+// storage, since a handler may neither allocate nor take locks.
+constexpr int TemporarySlots = 16;
+constexpr std::size_t TemporaryPathSize = 4096;
+char TemporaryPaths[TemporarySlots][TemporaryPathSize];
+volatile std::sig_atomic_t TemporaryInUse[TemporarySlots];
+
+extern "C" void removeTemporariesAndExit(int signal)
+{
+  for (int k = 0; k < TemporarySlots; ++k)
+  {
+    if (TemporaryInUse[k])
+    {
+      unlink(TemporaryPaths[k]);
+    }
+  }
+  // The default action, so the parent sees death by this signal.
+  std::signal(signal, SIG_DFL);
+  std::raise(signal);
+}
+
+// A temporary file name registered for removal on SIGINT/SIGTERM while this
+// object lives; the file itself is removed by remove() or the destructor.
+class TemporaryFile
+{
+public:
+  explicit TemporaryFile(const std::string& path)
+    : Path(temporaryName(path))
+  {
+    for (int k = 0; k < TemporarySlots; ++k)
+    {
+      if (!TemporaryInUse[k] && this->Path.size() < TemporaryPathSize)
+      {
+        std::memcpy(TemporaryPaths[k], this->Path.c_str(), this->Path.size() + 1);
+        std::atomic_signal_fence(std::memory_order_seq_cst);
+        TemporaryInUse[k] = 1;
+        this->Slot = k;
+        break;
+      }
+    }
+  }
+  ~TemporaryFile()
+  {
+    this->remove();
+    if (this->Slot >= 0)
+    {
+      TemporaryInUse[this->Slot] = 0;
+    }
+  }
+  TemporaryFile(const TemporaryFile&) = delete;
+  TemporaryFile& operator=(const TemporaryFile&) = delete;
+
+  const std::string& path() const { return this->Path; }
+  void remove()
+  {
+    if (!this->Renamed)
+    {
+      std::remove(this->Path.c_str());
+    }
+  }
+  /// Renames the file to `target`; throws std::runtime_error naming `target`.
+  void renameTo(const std::string& target)
+  {
+    if (std::rename(this->Path.c_str(), target.c_str()) != 0)
+    {
+      throw std::runtime_error("cannot write '" + target + "': " + std::strerror(errno));
+    }
+    this->Renamed = true;
+  }
+
+private:
+  std::string Path;
+  int Slot = -1;
+  bool Renamed = false;
+};
+
+[[noreturn]] void writeFailed(const std::string& path, const std::string& reason)
+{
+  throw std::runtime_error("cannot write '" + path + "': " + reason);
+}
+
+// Writes `content` to a new file `temporary` with every step checked: each
+// write, fsync (data on the disk, where the file system supports it), close,
+// and the size that arrived. Throws std::runtime_error naming `path`.
+void writeChecked(const std::string& temporary, const std::string& path, const std::string& content)
+{
+  const int fd = open(temporary.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0666);
+  if (fd < 0)
+  {
+    writeFailed(path, std::strerror(errno));
+  }
+  std::size_t written = 0;
+  while (written < content.size())
+  {
+    const ssize_t n = write(fd, content.data() + written, content.size() - written);
+    if (n < 0 && errno == EINTR)
+    {
+      continue;
+    }
+    if (n <= 0)
+    {
+      const std::string reason = n < 0 ? std::strerror(errno) : "nothing was written";
+      close(fd);
+      writeFailed(path, reason);
+    }
+    written += static_cast<std::size_t>(n);
+  }
+  if (fsync(fd) != 0 && errno != EINVAL && errno != EROFS)
+  {
+    const std::string reason = std::strerror(errno);
+    close(fd);
+    writeFailed(path, reason);
+  }
+  if (close(fd) != 0)
+  {
+    writeFailed(path, std::strerror(errno));
+  }
+  struct stat info;
+  if (stat(temporary.c_str(), &info) != 0)
+  {
+    writeFailed(path, std::strerror(errno));
+  }
+  if (static_cast<unsigned long long>(info.st_size) != content.size())
+  {
+    writeFailed(path,
+      "only " + std::to_string(static_cast<long long>(info.st_size)) + " of " +
+        std::to_string(content.size()) + " bytes reached the disk");
+  }
+}
 } // namespace
+
+void installSignalHandlers()
+{
+  struct sigaction action = {};
+  action.sa_handler = removeTemporariesAndExit;
+  sigemptyset(&action.sa_mask);
+  sigaction(SIGINT, &action, nullptr);
+  sigaction(SIGTERM, &action, nullptr);
+  // Past a file size limit write() then fails with EFBIG, which is reported,
+  // instead of the process dying with the temporary file left behind.
+  std::signal(SIGXFSZ, SIG_IGN);
+}
 
 bool isFile(const std::string& path)
 {
@@ -283,14 +430,13 @@ void removeCreatedDirectory(const std::string& created)
 
 void checkWritable(const std::string& path)
 {
-  const std::string temporary = temporaryName(path);
-  std::FILE* file = std::fopen(temporary.c_str(), "wb");
+  TemporaryFile temporary(path);
+  std::FILE* file = std::fopen(temporary.path().c_str(), "wb");
   if (!file)
   {
     throw std::runtime_error("cannot write '" + path + "': " + std::strerror(errno));
   }
   std::fclose(file);
-  std::remove(temporary.c_str());
 }
 
 bool canWrite(const std::string& path)
@@ -300,47 +446,32 @@ bool canWrite(const std::string& path)
 
 void writeFileAtomically(const std::string& path, const std::string& content)
 {
-  const std::string temporary = temporaryName(path);
-  {
-    std::ofstream out(temporary, std::ios::binary);
-    out << content;
-    if (!out)
-    {
-      std::remove(temporary.c_str());
-      throw std::runtime_error("cannot write '" + path + "': " + std::strerror(errno));
-    }
-  }
-  if (std::rename(temporary.c_str(), path.c_str()) != 0)
-  {
-    const std::string reason = std::strerror(errno);
-    std::remove(temporary.c_str());
-    throw std::runtime_error("cannot write '" + path + "': " + reason);
-  }
+  TemporaryFile temporary(path);
+  writeChecked(temporary.path(), path, content);
+  temporary.renameTo(path);
 }
 
 void writePolyDataAtomically(vtkPolyData* data, const std::string& path)
 {
-  const std::string temporary = temporaryName(path);
+  // Into memory first: the XML writer does not notice every failed write
+  // (a full disk), so the bytes go to the file through writeFileAtomically.
   vtkNew<vtkXMLPolyDataWriter> writer;
   ErrorCapture errors(writer);
   writer->SetInputData(data);
-  writer->SetFileName(temporary.c_str());
+  writer->WriteToOutputStringOn();
   writer->SetDataModeToAppended();
   writer->EncodeAppendedDataOff();
   writer->SetCompressorTypeToZLib();
   const int ok = writer->Write();
-  if (!ok || !errors.messages().empty())
+  const unsigned long code = writer->GetErrorCode();
+  if (!ok || code != 0 || !errors.messages().empty())
   {
-    std::remove(temporary.c_str());
-    throw std::runtime_error("cannot write '" + path + "'" +
-      (errors.messages().empty() ? std::string() : ": " + errors.messages().front()));
+    writeFailed(path,
+      errors.messages().empty()
+        ? "the XML writer failed (VTK error code " + std::to_string(code) + ")"
+        : errors.messages().front());
   }
-  if (std::rename(temporary.c_str(), path.c_str()) != 0)
-  {
-    const std::string reason = std::strerror(errno);
-    std::remove(temporary.c_str());
-    throw std::runtime_error("cannot write '" + path + "': " + reason);
-  }
+  writeFileAtomically(path, writer->GetOutputString());
 }
 
 vtkSmartPointer<vtkPolyData> measureMap(vtkPolyData* source,

@@ -132,13 +132,19 @@ std::string jsonNumber(double value);
 /// characters escaped).
 std::string jsonString(const std::string& text);
 
-/// Writes `content` to a temporary name beside `path`, then renames it.
-/// Throws std::runtime_error naming the file on failure.
+/// Makes SIGINT and SIGTERM remove the temporary files being written before
+/// the process ends, and ignores SIGXFSZ so a file size limit is a reported
+/// write error. Call once at the start of main.
+void installSignalHandlers();
+
+/// Writes `content` to a temporary name beside `path`, checks every write,
+/// fsync, close and the size on disk, then renames it. On any failure the
+/// temporary file is removed and std::runtime_error names `path`.
 void writeFileAtomically(const std::string& path, const std::string& content);
 
-/// Writes VTK XML PolyData to a temporary name beside `path`, then renames it,
-/// so a failed or interrupted write never leaves a half-written file. Throws
-/// std::runtime_error naming the file on failure.
+/// Writes VTK XML PolyData (also checking the writer's own error code)
+/// through writeFileAtomically, so a failed or interrupted write never leaves
+/// a half-written file. Throws std::runtime_error naming the file on failure.
 void writePolyDataAtomically(vtkPolyData* data, const std::string& path);
 
 } // namespace surfacemap

@@ -1,9 +1,12 @@
 // surfacemap: command-line front end of SurfaceMaps.
+#include "CommandSupport.h"
 #include "Commands.h"
 
 #include "vtkLogger.h"
 #include "vtkOutputWindow.h"
 
+#include <cerrno>
+#include <cstdio>
 #include <cstring>
 #include <exception>
 #include <iostream>
@@ -77,6 +80,7 @@ int main(int argc, char* argv[])
   // logger would repeat them with source locations. -v shows them again.
   vtkOutputWindow::GetInstance()->SetDisplayModeToNever();
   vtkLogger::SetStderrVerbosity(vtkLogger::VERBOSITY_OFF);
+  surfacemap::installSignalHandlers();
 
   std::vector<std::string> args;
   int verbosity = 0;
@@ -122,7 +126,16 @@ int main(int argc, char* argv[])
     }
     try
     {
-      return command.Run(rest);
+      const int code = command.Run(rest);
+      // Output lost on stdout (a full disk, a closed pipe) is a failure too.
+      std::cout.flush();
+      if (std::fflush(stdout) != 0 || std::ferror(stdout) || !std::cout)
+      {
+        surfacemap::printError(
+          std::string("cannot write to standard output: ") + std::strerror(errno ? errno : EIO));
+        return code == surfacemap::ExitOk ? surfacemap::ExitBadInput : code;
+      }
+      return code;
     }
     catch (const surfacemap::UsageError& e)
     {

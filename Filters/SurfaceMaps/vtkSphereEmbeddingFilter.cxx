@@ -3,6 +3,7 @@
 #include "vtkSurfaceMapsConversion.h"
 #include "vtkSurfaceMapsErrorGuard.h"
 
+#include "base/InputError.h"
 #include "embedding/SphereEmbedding.h"
 #include "geometry/Rotation.h"
 #include "mesh/MeshValidation.h"
@@ -55,11 +56,18 @@ int vtkSphereEmbeddingFilter::FillInputPortInformation(int port, vtkInformation*
 namespace
 {
 // Landmark id -> sphere position, for the vertices with an id >= 0.
+// A defective Landmarks array is an input error naming `what`.
 std::map<int, Eigen::Vector3d> landmarkPositions(vtkPolyData* mesh,
-  const std::vector<Eigen::Vector3d>& sphere)
+  const std::vector<Eigen::Vector3d>& sphere,
+  const std::string& what)
 {
   std::map<int, Eigen::Vector3d> result;
-  const std::vector<int> ids = vtkSurfaceMapsConversion::LandmarkIds(mesh);
+  std::vector<std::string> defects;
+  const std::vector<int> ids = vtkSurfaceMapsConversion::LandmarkIds(mesh, defects);
+  if (!defects.empty())
+  {
+    throw surfacemaps::InputError(what + " " + defects.front());
+  }
   for (std::size_t v = 0; v < ids.size() && v < sphere.size(); ++v)
   {
     if (ids[v] >= 0)
@@ -71,9 +79,8 @@ std::map<int, Eigen::Vector3d> landmarkPositions(vtkPolyData* mesh,
 }
 
 // Every defect of the mesh, each after the input's name; empty when valid.
-std::string defectsOf(const surfacemaps::PolygonMesh& mesh, const std::string& name)
+std::string defectsOf(const surfacemaps::MeshValidationResult& validation, const std::string& name)
 {
-  const surfacemaps::MeshValidationResult validation = surfacemaps::validateMesh(mesh);
   std::string message;
   for (const std::string& defect : validation.defects)
   {
@@ -111,9 +118,9 @@ double alignToReference(vtkSphereEmbeddingFilter* self,
   const std::string& name,
   surfacemaps::SphereEmbeddingResult& result)
 {
-  const auto own = landmarkPositions(input, result.positions);
-  const auto other =
-    landmarkPositions(reference, vtkSurfaceMapsConversion::SpherePositions(reference));
+  const auto own = landmarkPositions(input, result.positions, name);
+  const auto other = landmarkPositions(
+    reference, vtkSurfaceMapsConversion::SpherePositions(reference), "the reference");
   std::vector<Eigen::Vector3d> from, to;
   for (const auto& [id, p] : own)
   {
@@ -217,8 +224,10 @@ int vtkSphereEmbeddingFilter::RequestData(vtkInformation*,
     [&]
     {
       this->SetProgressText("Validating the input");
-      const surfacemaps::PolygonMesh mesh = vtkSurfaceMapsConversion::ToPolygonMesh(input);
-      const std::string defects = defectsOf(mesh, name);
+      const vtkSurfaceMapsConversion::ValidatedInput validated =
+        vtkSurfaceMapsConversion::Validate(input);
+      const surfacemaps::PolygonMesh& mesh = validated.mesh;
+      const std::string defects = defectsOf(validated.validation, name);
       if (!defects.empty())
       {
         vtkErrorMacro(<< defects);

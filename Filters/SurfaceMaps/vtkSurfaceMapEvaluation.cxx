@@ -3,6 +3,7 @@
 #include "vtkSurfaceMapsConversion.h"
 #include "vtkSurfaceMapsErrorGuard.h"
 
+#include "base/InputError.h"
 #include "geometry/MapMetrics.h"
 #include "geometry/SphericalTriangulation.h"
 #include "mesh/MeshValidation.h"
@@ -162,6 +163,44 @@ void checkSameTriangulation(const surfacemaps::PolygonMesh& P,
   }
 }
 
+// Every given input passes the module's input validation, to the extent a
+// measurement needs (results may hold degenerate triangles); throws
+// surfacemaps::InputError naming the input and the first defects otherwise.
+void checkMeasurable(vtkPolyData* const inputs[4])
+{
+  static const char* const roles[4] = { "source", "target", "source original", "target original" };
+  surfacemaps::MeshValidationOptions options;
+  options.requireSurface = false;
+  std::string message;
+  for (int k = 0; k < 4; ++k)
+  {
+    if (!inputs[k] && k >= 2)
+    {
+      continue;
+    }
+    std::string name = roles[k];
+    const std::string fileName = vtkSurfaceMapsConversion::InputName(inputs[k], k);
+    if (inputs[k] && fileName != "input " + std::to_string(k))
+    {
+      name = fileName;
+    }
+    if (!inputs[k])
+    {
+      message += (message.empty() ? "" : "; ") + name + " is missing";
+      continue;
+    }
+    for (const std::string& d :
+      vtkSurfaceMapsConversion::Validate(inputs[k], options).validation.defects)
+    {
+      message += (message.empty() ? "" : "; ") + name + " " + d;
+    }
+  }
+  if (!message.empty())
+  {
+    throw surfacemaps::InputError(message);
+  }
+}
+
 // Per-triangle singular values, distortion and areas, and their summary.
 void addDistortion(vtkPolyData* output, const surfacemaps::MapMetrics& metrics)
 {
@@ -297,6 +336,8 @@ int vtkSurfaceMapEvaluation::RequestData(vtkInformation*,
     vtkSurfaceMapsErrorGuard::MessageOnly(),
     [&]
     {
+      vtkPolyData* const inputs[4] = { source, target, sourceOriginal, targetOriginal };
+      checkMeasurable(inputs);
       const surfacemaps::PolygonMesh P = vtkSurfaceMapsConversion::ToPolygonMesh(source);
       const surfacemaps::PolygonMesh Q = vtkSurfaceMapsConversion::ToPolygonMesh(target);
       checkSameTriangulation(P,

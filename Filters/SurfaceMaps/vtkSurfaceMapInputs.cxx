@@ -126,24 +126,14 @@ std::vector<surfacemaps::MapInput> vtkSurfaceMapInputs::Read(
   for (int i = 0; i < n; ++i)
   {
     names[i] = vtkSurfaceMapInputs::Name(inputs[i], i);
-    result[i].mesh = vtkSurfaceMapsConversion::ToPolygonMesh(inputs[i]);
-    for (const std::string& d : surfacemaps::validateMesh(result[i].mesh).defects)
+    vtkSurfaceMapsConversion::ValidatedInput validated =
+      vtkSurfaceMapsConversion::Validate(inputs[i]);
+    for (const std::string& d : validated.validation.defects)
     {
       defects.push_back(names[i] + " " + d);
     }
-
-    landmarks[i] = vtkSurfaceMapsConversion::LandmarkIds(inputs[i]);
-    if (!landmarks[i].empty() && landmarks[i].size() != result[i].mesh.points.size())
-    {
-      defects.push_back(names[i] + " has a Landmarks array of the wrong length (" +
-        std::to_string(landmarks[i].size()) + " values for " +
-        std::to_string(result[i].mesh.points.size()) + " points)");
-      landmarks[i].clear();
-    }
-    for (const std::string& d : surfacemaps::checkLandmarkIds(landmarks[i]))
-    {
-      defects.push_back(names[i] + " " + d);
-    }
+    result[i].mesh = std::move(validated.mesh);
+    landmarks[i] = std::move(validated.landmarkIds);
     anyLandmarks = anyLandmarks ||
       std::any_of(landmarks[i].begin(), landmarks[i].end(), [](int id) { return id >= 0; });
 

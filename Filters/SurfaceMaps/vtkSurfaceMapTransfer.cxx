@@ -7,6 +7,7 @@
 #include "base/InputError.h"
 #include "geometry/SphericalTriangulation.h"
 #include "map/MapTransfer.h"
+#include "mesh/MeshValidation.h"
 
 #include "vtkAbstractArray.h"
 #include "vtkCellData.h"
@@ -83,30 +84,23 @@ PortMesh readPort(vtkPolyData* data, int port)
   {
     throw surfacemaps::InputError(p.name + " is empty");
   }
-  p.mesh = vtkSurfaceMapsConversion::ToPolygonMesh(data);
-  if (p.mesh.nonPolygonCells > 0)
+  // The module's input validation, as far as a lookup needs (ids in range
+  // for 64-bit, triangles only, finite coordinates).
+  surfacemaps::MeshValidationOptions options;
+  options.requireSurface = false;
+  vtkSurfaceMapsConversion::ValidatedInput validated =
+    vtkSurfaceMapsConversion::Validate(data, options);
+  if (!validated.validation.valid())
   {
-    throw surfacemaps::InputError(p.name + " has " + std::to_string(p.mesh.nonPolygonCells) +
-      " cells that are not triangles (vertices, lines or strips)");
+    std::string message;
+    for (const std::string& d : validated.validation.defects)
+    {
+      message += (message.empty() ? "" : "; ") + p.name + " " + d;
+    }
+    throw surfacemaps::InputError(message);
   }
+  p.mesh = std::move(validated.mesh);
   const std::size_t nv = p.mesh.points.size();
-  for (std::size_t f = 0; f < p.mesh.numberOfFaces(); ++f)
-  {
-    if (p.mesh.faceSize(f) != 3)
-    {
-      throw surfacemaps::InputError(p.name + " is not a triangle mesh (cell " + std::to_string(f) +
-        " has " + std::to_string(p.mesh.faceSize(f)) + " points)");
-    }
-    for (int k = 0; k < 3; ++k)
-    {
-      const int v = p.mesh.face(f)[k];
-      if (v < 0 || static_cast<std::size_t>(v) >= nv)
-      {
-        throw surfacemaps::InputError(p.name + ": cell " + std::to_string(f) + " uses point " +
-          std::to_string(v) + " of " + std::to_string(nv));
-      }
-    }
-  }
   p.triangles = p.mesh.triangles();
 
   vtkDataArray* array = data->GetPointData()->GetArray(SpherePositionName);

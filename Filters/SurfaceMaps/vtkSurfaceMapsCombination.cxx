@@ -136,9 +136,55 @@ std::string vtkSurfaceMapsCombination::Name(vtkPolyData* mesh, const std::string
   return name;
 }
 
+namespace
+{
+// Every cell of `mesh` uses existing points, and every point is finite.
+void checkIndices(vtkPolyData* mesh, const std::string& name)
+{
+  const vtkIdType np = mesh->GetNumberOfPoints();
+  vtkCellArray* arrays[4] = {
+    mesh->GetVerts(), mesh->GetLines(), mesh->GetPolys(), mesh->GetStrips()
+  };
+  vtkIdType offset = 0;
+  vtkNew<vtkIdList> ids;
+  for (vtkCellArray* cells : arrays)
+  {
+    const vtkIdType n = cells ? cells->GetNumberOfCells() : 0;
+    for (vtkIdType c = 0; c < n; ++c)
+    {
+      cells->GetCellAtId(c, ids);
+      for (vtkIdType k = 0; k < ids->GetNumberOfIds(); ++k)
+      {
+        if (ids->GetId(k) < 0 || ids->GetId(k) >= np)
+        {
+          throw std::invalid_argument(name + ": cell " + std::to_string(offset + c) +
+            " uses vertex index " + std::to_string(ids->GetId(k)) + " (valid are 0 to " +
+            std::to_string(np - 1) + ")");
+        }
+      }
+    }
+    offset += n;
+  }
+  for (vtkIdType v = 0; v < np; ++v)
+  {
+    double p[3];
+    mesh->GetPoint(v, p);
+    if (!std::isfinite(p[0]) || !std::isfinite(p[1]) || !std::isfinite(p[2]))
+    {
+      throw std::invalid_argument(
+        name + " has a vertex with non-finite coordinates (vertex " + std::to_string(v) + ")");
+    }
+  }
+}
+} // namespace
+
 void vtkSurfaceMapsCombination::CheckSameConnectivity(const std::vector<vtkPolyData*>& meshes,
   const std::string& kind)
 {
+  for (std::size_t i = 0; i < meshes.size(); ++i)
+  {
+    checkIndices(meshes[i], Name(meshes[i], kind, static_cast<int>(i)));
+  }
   vtkPolyData* first = meshes[0];
   vtkNew<vtkIdList> a, b;
   for (std::size_t i = 1; i < meshes.size(); ++i)

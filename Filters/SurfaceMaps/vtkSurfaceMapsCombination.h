@@ -77,7 +77,9 @@ public:
   static std::string Name(vtkPolyData* mesh, const std::string& kind, int index);
 
   /// Throws std::invalid_argument naming the first mesh (as `kind` i) whose
-  /// number of points or cells differs from mesh 0's, and where.
+  /// number of points or cells differs from mesh 0's, and where; also the
+  /// first mesh with a cell using a vertex index outside its points (64-bit
+  /// ids included) or a point with non-finite coordinates.
   static void CheckSameConnectivity(const std::vector<vtkPolyData*>& meshes,
     const std::string& kind);
 

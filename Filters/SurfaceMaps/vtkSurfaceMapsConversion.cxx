@@ -1,7 +1,10 @@
 #include "vtkSurfaceMapsConversion.h"
 
+#include "base/InputError.h"
 #include "map/MapTransfer.h"
+#include "mesh/LandmarkValidation.h"
 
+#include "vtkAbstractArray.h"
 #include "vtkCellArray.h"
 #include "vtkCellArrayIterator.h"
 #include "vtkCellData.h"
@@ -16,7 +19,10 @@
 #include "vtkPolyData.h"
 #include "vtkStringArray.h"
 
+#include <charconv>
+#include <cmath>
 #include <limits>
+#include <sstream>
 
 namespace
 {
@@ -28,6 +34,17 @@ surfacemaps::PolygonMesh vtkSurfaceMapsConversion::ToPolygonMesh(vtkPolyData* in
   surfacemaps::PolygonMesh mesh;
   vtkPoints* points = input->GetPoints();
   const vtkIdType np = points ? points->GetNumberOfPoints() : 0;
+  vtkCellArray* polys = input->GetPolys();
+  const vtkIdType corners = polys ? polys->GetNumberOfConnectivityIds() : 0;
+  // The engine indexes with int: larger meshes are refused, never wrapped.
+  if (np > std::numeric_limits<int>::max() || corners > std::numeric_limits<int>::max())
+  {
+    const std::string name = InputName(input, 0);
+    throw surfacemaps::InputError((name == "input 0" ? std::string("a mesh") : name) +
+      " is too large: " + std::to_string(np) + " points and " + std::to_string(corners) +
+      " polygon corners (at most " + std::to_string(std::numeric_limits<int>::max()) +
+      " of each are supported)");
+  }
   mesh.points.resize(np);
   for (vtkIdType i = 0; i < np; ++i)
   {
@@ -36,10 +53,9 @@ surfacemaps::PolygonMesh vtkSurfaceMapsConversion::ToPolygonMesh(vtkPolyData* in
   mesh.nonPolygonCells = static_cast<std::size_t>(
     input->GetNumberOfVerts() + input->GetNumberOfLines() + input->GetNumberOfStrips());
 
-  vtkCellArray* polys = input->GetPolys();
   if (polys)
   {
-    mesh.faceVertices.reserve(polys->GetNumberOfConnectivityIds());
+    mesh.faceVertices.reserve(corners);
     auto it = vtk::TakeSmartPointer(polys->NewIterator());
     for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell())
     {
@@ -48,6 +64,17 @@ surfacemaps::PolygonMesh vtkSurfaceMapsConversion::ToPolygonMesh(vtkPolyData* in
       it->GetCurrentCell(n, ids);
       for (vtkIdType k = 0; k < n; ++k)
       {
+        // Out of int range: -1 (never a valid index), the value kept for messages.
+        if (ids[k] < std::numeric_limits<int>::min() || ids[k] > std::numeric_limits<int>::max())
+        {
+          if (mesh.wideIndices++ == 0)
+          {
+            mesh.firstWideIndexFace = static_cast<long long>(mesh.numberOfFaces());
+            mesh.firstWideIndex = static_cast<long long>(ids[k]);
+          }
+          mesh.faceVertices.push_back(-1);
+          continue;
+        }
         mesh.faceVertices.push_back(static_cast<int>(ids[k]));
       }
       mesh.faceOffsets.push_back(static_cast<int>(mesh.faceVertices.size()));
@@ -154,23 +181,73 @@ std::vector<Eigen::Vector3d> vtkSurfaceMapsConversion::SpherePositions(vtkPolyDa
   return positions;
 }
 
-std::vector<int> vtkSurfaceMapsConversion::LandmarkIds(vtkPolyData* input)
+std::vector<int> vtkSurfaceMapsConversion::LandmarkIds(vtkPolyData* input,
+  std::vector<std::string>& defects)
 {
   std::vector<int> ids;
-  vtkDataArray* array = input->GetPointData()->GetArray("Landmarks");
-  if (!array || array->GetNumberOfComponents() != 1)
+  vtkAbstractArray* abstract = input->GetPointData()->GetAbstractArray("Landmarks");
+  if (!abstract)
   {
+    return ids;
+  }
+  auto* array = vtkDataArray::SafeDownCast(abstract);
+  if (!array)
+  {
+    defects.push_back("has a Landmarks array that is not numeric (one integer id per point, "
+                      "-1 for none, is required)");
+    return ids;
+  }
+  if (array->GetNumberOfComponents() != 1)
+  {
+    defects.push_back("has a Landmarks array with " +
+      std::to_string(array->GetNumberOfComponents()) +
+      " components (one integer id per point, -1 for none, is required)");
+    return ids;
+  }
+  if (array->GetNumberOfTuples() != input->GetNumberOfPoints())
+  {
+    defects.push_back("has a Landmarks array of the wrong length (" +
+      std::to_string(array->GetNumberOfTuples()) + " values for " +
+      std::to_string(input->GetNumberOfPoints()) + " points)");
     return ids;
   }
   ids.resize(static_cast<std::size_t>(array->GetNumberOfTuples()));
   for (vtkIdType i = 0; i < array->GetNumberOfTuples(); ++i)
   {
     const double value = array->GetComponent(i, 0);
-    ids[i] = value >= std::numeric_limits<int>::min() && value <= std::numeric_limits<int>::max()
-      ? static_cast<int>(value)
-      : std::numeric_limits<int>::min();
+    if (!(value >= std::numeric_limits<int>::min() && value <= std::numeric_limits<int>::max()) ||
+      value != std::floor(value))
+    {
+      char text[32];
+      const auto end = std::to_chars(text, text + sizeof text, value).ptr; // shortest exact form
+      defects.push_back("has a landmark id that is not an integer (" + std::string(text, end) +
+        " at vertex " + std::to_string(i) + ")");
+      ids.clear();
+      return ids;
+    }
+    ids[i] = static_cast<int>(value);
   }
   return ids;
+}
+
+vtkSurfaceMapsConversion::ValidatedInput vtkSurfaceMapsConversion::Validate(vtkPolyData* input,
+  const surfacemaps::MeshValidationOptions& options)
+{
+  ValidatedInput result;
+  result.mesh = ToPolygonMesh(input);
+  result.validation = surfacemaps::validateMesh(result.mesh, options);
+  if (options.requireSurface)
+  {
+    std::vector<std::string>& defects = result.validation.defects;
+    result.landmarkIds = LandmarkIds(input, defects);
+    const std::vector<std::string> idDefects = surfacemaps::checkLandmarkIds(result.landmarkIds);
+    defects.insert(defects.end(), idDefects.begin(), idDefects.end());
+    if (!idDefects.empty())
+    {
+      result.landmarkIds.clear();
+    }
+  }
+  return result;
 }
 
 std::string vtkSurfaceMapsConversion::InputName(vtkPolyData* input, int index)

@@ -12,6 +12,7 @@
 
 #include "base/Log.h"
 #include "mesh/HalfedgeMesh.h"
+#include "mesh/MeshValidation.h"
 #include "mesh/PolygonMesh.h"
 #include "mesh/SurfacePoint.h"
 
@@ -42,7 +43,27 @@ public:
   static std::vector<Eigen::Vector3d> SpherePositions(vtkPolyData* input);
 
   /// The "Landmarks" point array as ids per vertex (-1 none); empty if absent.
-  static std::vector<int> LandmarkIds(vtkPolyData* input);
+  /// An array that is not one integer-valued component per point (values in
+  /// int range) adds a defect (a sentence without the input's name) to
+  /// `defects` and gives no ids.
+  static std::vector<int> LandmarkIds(vtkPolyData* input, std::vector<std::string>& defects);
+
+  /// An input as the engine sees it, with everything validation found.
+  struct ValidatedInput
+  {
+    surfacemaps::PolygonMesh mesh;
+    /// Statistics and defects of the mesh and of its "Landmarks" array.
+    surfacemaps::MeshValidationResult validation;
+    /// Per vertex (-1 none); empty when absent or defective.
+    std::vector<int> landmarkIds;
+  };
+
+  /// The one input validation of the module (readers' output, every filter,
+  /// the command line): the mesh (validateMesh with `options`) and, when
+  /// options.requireSurface, its "Landmarks" array (shape, integer values,
+  /// one vertex per id). Defects are sentences without the input's name.
+  static ValidatedInput Validate(vtkPolyData* input,
+    const surfacemaps::MeshValidationOptions& options = surfacemaps::MeshValidationOptions());
 
   /// Adds "SourceCellId" (the input triangle) and "SourceBarycentric" (the
   /// barycentric coordinates in it) of every surface point, one per point.

@@ -109,18 +109,11 @@ InputReport validateInput(vtkPolyData* input,
 {
   InputReport report;
   report.Name = vtkSurfaceMapsConversion::InputName(input, i);
-  const surfacemaps::MeshValidationResult result =
-    surfacemaps::validateMesh(vtkSurfaceMapsConversion::ToPolygonMesh(input), options);
-  const surfacemaps::MeshStatistics& s = result.statistics;
-  report.Defects = result.defects;
-
-  report.LandmarkIds = vtkSurfaceMapsConversion::LandmarkIds(input);
-  if (!report.LandmarkIds.empty() &&
-    report.LandmarkIds.size() != static_cast<std::size_t>(input->GetNumberOfPoints()))
-  {
-    report.Defects.push_back("has a Landmarks array of the wrong length");
-    report.LandmarkIds.clear();
-  }
+  vtkSurfaceMapsConversion::ValidatedInput validated =
+    vtkSurfaceMapsConversion::Validate(input, options);
+  const surfacemaps::MeshStatistics& s = validated.validation.statistics;
+  report.Defects = validated.validation.defects;
+  report.LandmarkIds = std::move(validated.landmarkIds);
   const int count = static_cast<int>(std::count_if(
     report.LandmarkIds.begin(), report.LandmarkIds.end(), [](int id) { return id >= 0; }));
 
@@ -142,8 +135,8 @@ InputReport validateInput(vtkPolyData* input,
   return report;
 }
 
-// Landmark ids: unique per input always; the same on all inputs on request
-// (when any input has landmarks).
+// Landmark ids (each input's own checked by Validate): the same on all
+// inputs on request (when any input has landmarks).
 void addLandmarkDefects(std::vector<InputReport>& reports, bool checkCorrespondence)
 {
   const std::size_t n = reports.size();
@@ -165,10 +158,6 @@ void addLandmarkDefects(std::vector<InputReport>& reports, bool checkCorresponde
   for (std::size_t i = 0; i < n; ++i)
   {
     std::vector<std::string>& defects = reports[i].Defects;
-    for (const std::string& d : surfacemaps::checkLandmarkIds(landmarkIds[i]))
-    {
-      defects.push_back(d);
-    }
     defects.insert(defects.end(), correspondence[i].begin(), correspondence[i].end());
   }
 }

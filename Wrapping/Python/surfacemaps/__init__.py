@@ -199,15 +199,26 @@ def _with_landmarks(mesh, landmarks):
         return mesh
     if isinstance(landmarks, (str, os.PathLike)):
         raise TypeError("a landmark file needs its mesh as a file name; give vertex ids for a vtkPolyData")
+    import math
+    import numbers
     ids = vtkIntArray()
     ids.SetName("Landmarks")
     ids.SetNumberOfValues(mesh.GetNumberOfPoints())
     ids.Fill(-1)
+    seen = {}
     for landmark_id, vertex in enumerate(landmarks):
-        if not 0 <= int(vertex) < mesh.GetNumberOfPoints():
+        # Vertex ids are integers: 3.7 is an error, not vertex 3 (3.0 is vertex 3).
+        if (isinstance(vertex, bool) or not isinstance(vertex, numbers.Real) or not math.isfinite(vertex)
+                or vertex != int(vertex)):
+            raise InputError(f"landmark {landmark_id} is {vertex!r}, not an integer vertex id")
+        vertex = int(vertex)
+        if not 0 <= vertex < mesh.GetNumberOfPoints():
             raise InputError(f"landmark {landmark_id} is vertex {vertex}, but the mesh has "
                              f"{mesh.GetNumberOfPoints()} vertices")
-        ids.SetValue(int(vertex), landmark_id)
+        if vertex in seen:
+            raise InputError(f"landmarks {seen[vertex]} and {landmark_id} are the same vertex {vertex}")
+        seen[vertex] = landmark_id
+        ids.SetValue(vertex, landmark_id)
     copy = vtkPolyData()
     copy.ShallowCopy(mesh)  # the caller's mesh keeps its own arrays
     copy.GetPointData().AddArray(ids)
@@ -414,6 +425,9 @@ def _replace_atomically(path, write):
     temporary = os.path.join(os.path.dirname(path), f".{os.path.basename(path)}.{os.getpid()}.tmp")
     try:
         write(temporary)
+        # Data on the disk before the rename (a full disk may only show here).
+        with open(temporary, "rb") as written:
+            os.fsync(written.fileno())
         os.replace(temporary, path)
     except BaseException:
         if os.path.exists(temporary):
@@ -441,8 +455,10 @@ def write_mesh(mesh, path):
         writer = vtkXMLPolyDataWriter()
         writer.SetInputData(mesh)
         writer.SetFileName(temporary)
-        if writer.Write() != 1:
-            raise OSError(f"cannot write {path}")
+        # Write() returns 1 even when the data did not fit on the disk; the
+        # error code says so.
+        if writer.Write() != 1 or writer.GetErrorCode() != 0:
+            raise OSError(f"cannot write {path} (VTK error code {writer.GetErrorCode()})")
 
     _replace_atomically(path, write)
 

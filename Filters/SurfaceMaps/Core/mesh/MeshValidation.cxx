@@ -78,6 +78,8 @@ bool checkStructure(const PolygonMesh& mesh, MeshValidationResult& result)
   long long nonTriangles = 0;
   long long firstNonTriangle = -1;
   long long badIndex = 0;
+  long long firstBadFace = -1;
+  long long firstBadIndex = 0;
   long long repeated = 0;
   long long firstRepeated = -1;
   for (std::size_t f = 0; f < nf; ++f)
@@ -95,7 +97,11 @@ bool checkStructure(const PolygonMesh& mesh, MeshValidationResult& result)
     {
       if (face[k] < 0 || static_cast<std::size_t>(face[k]) >= nv)
       {
-        ++badIndex;
+        if (badIndex++ == 0)
+        {
+          firstBadFace = static_cast<long long>(f);
+          firstBadIndex = face[k];
+        }
       }
       for (int l = k + 1; l < n; ++l)
       {
@@ -115,8 +121,16 @@ bool checkStructure(const PolygonMesh& mesh, MeshValidationResult& result)
   }
   if (badIndex > 0)
   {
-    result.defects.push_back(
-      "has " + plural(badIndex, "face corner", "face corners") + " referring to missing vertices");
+    // A 64-bit index is stored as -1: name its real value.
+    if (mesh.wideIndices > 0 && mesh.firstWideIndexFace <= firstBadFace)
+    {
+      firstBadFace = mesh.firstWideIndexFace;
+      firstBadIndex = mesh.firstWideIndex;
+    }
+    result.defects.push_back("has " + plural(badIndex, "face corner", "face corners") +
+      " referring to missing vertices (first: face " + std::to_string(firstBadFace) +
+      " uses vertex index " + std::to_string(firstBadIndex) + ", valid are 0 to " +
+      std::to_string(static_cast<long long>(nv) - 1) + ")");
   }
   if (repeated > 0)
   {
@@ -126,16 +140,28 @@ bool checkStructure(const PolygonMesh& mesh, MeshValidationResult& result)
   return nonTriangles == 0 && badIndex == 0 && repeated == 0;
 }
 
-void checkVertices(const PolygonMesh& mesh, MeshValidationResult& result)
+// Finite coordinates within the dynamic range; false if any is not.
+bool checkCoordinates(const PolygonMesh& mesh,
+  const MeshValidationOptions& options,
+  MeshValidationResult& result)
 {
   const std::size_t nv = mesh.points.size();
   long long nonFinite = 0;
   long long firstNonFinite = -1;
+  long long outOfRange = 0;
+  long long firstOutOfRange = -1;
   for (std::size_t v = 0; v < nv; ++v)
   {
-    if (!mesh.points[v].allFinite() && nonFinite++ == 0)
+    if (!mesh.points[v].allFinite())
     {
-      firstNonFinite = static_cast<long long>(v);
+      if (nonFinite++ == 0)
+      {
+        firstNonFinite = static_cast<long long>(v);
+      }
+    }
+    else if (!(mesh.points[v].cwiseAbs().maxCoeff() <= options.maxCoordinate) && outOfRange++ == 0)
+    {
+      firstOutOfRange = static_cast<long long>(v);
     }
   }
   if (nonFinite > 0)
@@ -144,6 +170,22 @@ void checkVertices(const PolygonMesh& mesh, MeshValidationResult& result)
       " with non-finite coordinates (first: vertex " + std::to_string(firstNonFinite) + " at " +
       point(mesh.points[firstNonFinite]) + ")");
   }
+  if (outOfRange > 0)
+  {
+    std::ostringstream s;
+    s << "has " << plural(outOfRange, "vertex", "vertices")
+      << " outside the valid coordinate range |x|, |y|, |z| <= " << options.maxCoordinate
+      << " (first: vertex " << firstOutOfRange << " at " << point(mesh.points[firstOutOfRange])
+      << ")";
+    result.defects.push_back(s.str());
+  }
+  return nonFinite == 0 && outOfRange == 0;
+}
+
+// Every vertex used, none twice at the same place.
+void checkVertexUse(const PolygonMesh& mesh, MeshValidationResult& result)
+{
+  const std::size_t nv = mesh.points.size();
 
   std::vector<char> used(nv, 0);
   for (int v : mesh.faceVertices)
@@ -260,7 +302,7 @@ void measureTriangles(const PolygonMesh& mesh,
   }
   stats.minAngle = measured > 0 ? minAngle : 0.0;
   stats.meanMinAngle = measured > 0 ? sumMinAngle / measured : 0.0;
-  if (zero > 0)
+  if (zero > 0 && options.requireSurface)
   {
     std::ostringstream s;
     s.precision(3);
@@ -524,6 +566,28 @@ void checkTopology(const PolygonMesh& mesh, MeshValidationResult& result)
   }
 }
 
+// The measured size within the dynamic range (coordinates already are).
+void checkSize(const MeshValidationOptions& options, MeshValidationResult& result)
+{
+  const MeshStatistics& stats = result.statistics;
+  std::ostringstream s;
+  s.precision(3);
+  if (!(std::isfinite(stats.area) && stats.area > 0.0))
+  {
+    s << "has total area " << stats.area << "; a finite, positive area is required";
+  }
+  else if (!(stats.boundingBoxDiagonal >= options.minBoundingBoxDiagonal &&
+             std::isfinite(stats.boundingBoxDiagonal)))
+  {
+    s << "has a bounding-box diagonal of " << stats.boundingBoxDiagonal
+      << ", outside the valid range (at least " << options.minBoundingBoxDiagonal << ")";
+  }
+  if (!s.str().empty())
+  {
+    result.defects.push_back(s.str());
+  }
+}
+
 } // namespace
 
 MeshValidationResult validateMesh(const PolygonMesh& mesh, const MeshValidationOptions& options)
@@ -535,9 +599,20 @@ MeshValidationResult validateMesh(const PolygonMesh& mesh, const MeshValidationO
   {
     return result;
   }
-  checkVertices(mesh, result);
+  const bool coordinatesValid = checkCoordinates(mesh, options, result);
+  if (options.requireSurface)
+  {
+    checkVertexUse(mesh, result);
+  }
   measureTriangles(mesh, options, result);
-  checkTopology(mesh, result);
+  if (coordinatesValid)
+  {
+    checkSize(options, result);
+  }
+  if (options.requireSurface)
+  {
+    checkTopology(mesh, result);
+  }
   return result;
 }
 

@@ -15,6 +15,19 @@ struct MeshValidationOptions
   /// Triangles with area <= this fraction of the total area count as zero-area
   /// (1e-12: far below anything the optimiser can resolve in unit-area units).
   double zeroAreaFraction = 1e-12;
+  /// The valid dynamic range: every coordinate within +-maxCoordinate (1e50)
+  /// and a bounding-box diagonal of at least minBoundingBoxDiagonal (1e-50),
+  /// so that every quantity up to the fourth power of a length (squared
+  /// areas, squared norms of cross products, which norm() forms) stays
+  /// finite and far from the denormal range (1e+-308) in double precision.
+  /// The total area must also be finite and positive.
+  double maxCoordinate = 1e50;
+  double minBoundingBoxDiagonal = 1e-50;
+  /// True: everything validateMesh lists. False: only what any measurement
+  /// of a triangle mesh needs (triangles only, vertex ids in range, finite
+  /// coordinates in the dynamic range, positive finite area), for meshes that
+  /// are results rather than inputs (a map's triangles may degenerate).
+  bool requireSurface = true;
 };
 
 /// What a mesh is, as far as it could be determined (-1: not determined).
@@ -47,8 +60,9 @@ struct MeshValidationResult
 };
 
 /// Validates `mesh` as input for the sphere embedding and the map: triangles
-/// only, no bad or unused or duplicate vertices, finite coordinates, no
-/// zero-area triangles, closed, edge- and vertex-manifold, consistently
+/// only, vertex ids in range (also 64-bit ones), no unused or duplicate
+/// vertices, finite coordinates within the dynamic range of `options`, finite
+/// positive area, no zero-area triangles, closed, edge- and vertex-manifold, consistently
 /// oriented, one connected component, genus 0. Defects name where they are
 /// (first offending element and counts). Never throws on bad content.
 MeshValidationResult validateMesh(const PolygonMesh& mesh,

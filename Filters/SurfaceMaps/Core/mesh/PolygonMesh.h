@@ -25,6 +25,12 @@ struct PolygonMesh
   std::vector<Eigen::Vector2d> cornerTexCoords;
   /// Cells of the source that are not polygons (lines, vertices, strips).
   std::size_t nonPolygonCells = 0;
+  /// Face corners of the source whose vertex index does not fit an int (64-bit
+  /// ids): stored as -1 in faceVertices, the first one's face and index kept
+  /// here so validation can name it instead of a wrapped value.
+  std::size_t wideIndices = 0;
+  long long firstWideIndexFace = -1;
+  long long firstWideIndex = 0;
 
   std::size_t numberOfFaces() const { return this->faceOffsets.size() - 1; }
   int faceSize(std::size_t f) const { return this->faceOffsets[f + 1] - this->faceOffsets[f]; }

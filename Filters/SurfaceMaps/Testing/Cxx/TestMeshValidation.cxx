@@ -230,3 +230,71 @@ TEST(MeshValidation, TwoComponents)
   EXPECT_TRUE(onlyDefect(r, "has 2 connected components"));
   EXPECT_EQ(r.statistics.components, 2);
 }
+
+TEST(MeshValidation, CoordinateBeyondTheDynamicRangeIsNamed)
+{
+  PolygonMesh mesh = makeIcosphere(1);
+  mesh.points[7].x() = 1e308;
+  const MeshValidationResult r = validateMesh(mesh);
+  ASSERT_FALSE(r.valid());
+  EXPECT_NE(r.defects[0].find("outside the valid coordinate range"), std::string::npos)
+    << r.defects[0];
+  EXPECT_NE(r.defects[0].find("first: vertex 7"), std::string::npos) << r.defects[0];
+}
+
+TEST(MeshValidation, ScaledBeyondTheDynamicRangeIsRejected)
+{
+  PolygonMesh huge = makeIcosphere(1);
+  for (auto& p : huge.points)
+  {
+    p *= 1e200;
+  }
+  EXPECT_TRUE(onlyDefect(validateMesh(huge), "outside the valid coordinate range"));
+
+  PolygonMesh tiny = makeIcosphere(1);
+  for (auto& p : tiny.points)
+  {
+    p *= 1e-200;
+  }
+  const MeshValidationResult r = validateMesh(tiny);
+  ASSERT_FALSE(r.valid());
+  bool named = false;
+  for (const auto& d : r.defects)
+  {
+    named = named || d.find("area") != std::string::npos || d.find("diagonal") != std::string::npos;
+  }
+  EXPECT_TRUE(named);
+
+  PolygonMesh large = makeIcosphere(1);
+  for (auto& p : large.points)
+  {
+    p *= 1e40; // inside the range: valid
+  }
+  EXPECT_TRUE(validateMesh(large).valid());
+}
+
+TEST(MeshValidation, WideIndexIsNamedWithItsValue)
+{
+  PolygonMesh mesh = makeIcosphere(1);
+  mesh.faceVertices[4] = -1; // as the conversion stores 2^32 + 3
+  mesh.wideIndices = 1;
+  mesh.firstWideIndexFace = 1;
+  mesh.firstWideIndex = 4294967299LL;
+  EXPECT_TRUE(onlyDefect(validateMesh(mesh), "face 1 uses vertex index 4294967299"));
+}
+
+TEST(MeshValidation, MeasurableOnlySkipsSurfaceChecks)
+{
+  PolygonMesh mesh = makeIcosphere(1);
+  mesh.points[0] = mesh.points[1]; // duplicate vertex, zero-area triangles
+  MeshValidationOptions options;
+  options.requireSurface = false;
+  EXPECT_TRUE(validateMesh(mesh, options).valid());
+  EXPECT_FALSE(validateMesh(mesh).valid());
+
+  mesh.points[2].y() = NAN;
+  EXPECT_TRUE(onlyDefect(validateMesh(mesh, options), "non-finite coordinates"));
+  PolygonMesh pointsOnly;
+  pointsOnly.points = makeIcosphere(1).points;
+  EXPECT_TRUE(onlyDefect(validateMesh(pointsOnly, options), "contains no triangles"));
+}

@@ -90,7 +90,8 @@ TEST(SurfaceMapsConversion, NonPolygonCellsAreCounted)
 TEST(SurfaceMapsConversion, LandmarkIdsAndInputName)
 {
   vtkSmartPointer<vtkPolyData> poly = vtkSurfaceMapsConversion::ToPolyData(makeTetrahedron());
-  EXPECT_TRUE(vtkSurfaceMapsConversion::LandmarkIds(poly).empty());
+  std::vector<std::string> defects;
+  EXPECT_TRUE(vtkSurfaceMapsConversion::LandmarkIds(poly, defects).empty());
   vtkNew<vtkIntArray> ids;
   ids->SetName("Landmarks");
   for (int v : { -1, 2, -1, 0 })
@@ -98,6 +99,8 @@ TEST(SurfaceMapsConversion, LandmarkIdsAndInputName)
     ids->InsertNextValue(v);
   }
   poly->GetPointData()->AddArray(ids);
-  EXPECT_EQ(vtkSurfaceMapsConversion::LandmarkIds(poly), (std::vector<int>{ -1, 2, -1, 0 }));
+  EXPECT_EQ(
+    vtkSurfaceMapsConversion::LandmarkIds(poly, defects), (std::vector<int>{ -1, 2, -1, 0 }));
+  EXPECT_TRUE(defects.empty());
   EXPECT_EQ(vtkSurfaceMapsConversion::InputName(poly, 3), "input 3");
 }

@@ -1,0 +1,300 @@
+"""Reliability of the command line: checked writes, temporary files removed on
+failures and signals, and the one input validation (64-bit ids, evaluate's
+inputs, the dynamic range, the Landmarks array) in every command."""
+
+import os
+import resource
+import select
+import signal
+import subprocess
+
+import pytest
+
+from cli import CLI, SHORT, data, read_vtp, run
+
+
+def limited_run(limit_bytes, *args, timeout=300):
+    """`surfacemap ARGS...` with files limited to `limit_bytes` (RLIMIT_FSIZE): a full disk
+    without root or a tmpfs. SIGXFSZ stays at its default, the program must handle it."""
+    def limit():
+        resource.setrlimit(resource.RLIMIT_FSIZE, (limit_bytes, limit_bytes))
+    return subprocess.run([CLI, *map(str, args)], capture_output=True, text=True, timeout=timeout,
+                          preexec_fn=limit)
+
+
+def leftovers(directory):
+    return [name for name in os.listdir(directory) if ".tmp." in name]
+
+
+# Defect 1: writes are checked end to end.
+
+def test_embed_into_a_full_disk_fails_and_leaves_nothing(tmp_path):
+    out = tmp_path / "embedded.vtp"
+    r = limited_run(8192, "embed", data("ellipsoid.obj"), "-o", out)
+    assert r.returncode == 2, (r.stdout, r.stderr)
+    assert f"cannot write '{out}'" in r.stderr
+    assert "written to" not in r.stdout
+    assert not out.exists()
+    assert leftovers(tmp_path) == []
+
+
+def test_evaluate_into_a_full_disk_fails_and_leaves_no_broken_file(tmp_path):
+    out = tmp_path / "evaluation"
+    r = limited_run(4096, "evaluate", data("blob.vtp"), data("blob.vtp"), "--output-dir", out)
+    assert r.returncode == 2, (r.stdout, r.stderr)
+    assert "cannot write" in r.stderr and "triangles.csv" in r.stderr
+    # What is there is complete: summary.json was small enough to fit.
+    if (out / "summary.json").exists():
+        assert (out / "summary.json").read_text().rstrip().endswith("}")
+    assert not (out / "triangles.csv").exists()
+    assert not out.exists() or leftovers(out) == []
+
+
+def test_map_into_a_full_disk_leaves_no_broken_file(tmp_path):
+    out = tmp_path / "map"
+    r = limited_run(16384, "map", data("ellipsoid.obj"), data("blob.off"), "--output-dir", out, *SHORT)
+    assert r.returncode == 2, (r.stdout, r.stderr)
+    assert "cannot write" in r.stderr
+    if out.exists():
+        assert leftovers(out) == []
+        for name in os.listdir(out):
+            if name.endswith(".vtp"):
+                assert read_vtp(out / name).GetNumberOfPoints() > 0, name
+
+
+def test_transfer_into_a_full_disk_leaves_nothing(tmp_path):
+    mapdir = tmp_path / "map"
+    r = run("map", data("ellipsoid.obj"), data("blob.off"), "--output-dir", mapdir, *SHORT)
+    assert r.returncode == 0, r.stderr
+    out = tmp_path / "transferred.vtp"
+    r = limited_run(2048, "transfer", mapdir, "--from", 0, "--to", 1, "-o", out)
+    assert r.returncode == 2, (r.stdout, r.stderr)
+    assert f"cannot write '{out}'" in r.stderr
+    assert not out.exists()
+    assert leftovers(tmp_path) == []
+
+
+def test_stdout_write_error_is_reported():
+    with open("/dev/full", "w") as full:
+        r = subprocess.run([CLI, "check", data("ellipsoid.obj")], stdout=full, stderr=subprocess.PIPE,
+                           text=True, timeout=60)
+    assert r.returncode == 2
+    assert "cannot write to standard output" in r.stderr
+
+
+@pytest.mark.parametrize("signum", [signal.SIGTERM, signal.SIGINT], ids=["SIGTERM", "SIGINT"])
+def test_signal_removes_the_temporary_file(tmp_path, signum):
+    """A FIFO stands in for the temporary file of common_0.vtp: the map blocks writing it
+    (a 4 KiB pipe nobody reads), so the signal arrives while the temporary file exists."""
+    out = tmp_path / "map"
+    out.mkdir()
+
+    def make_fifo():
+        os.mkfifo(out / f"common_0.vtp.tmp.{os.getpid()}")
+    process = subprocess.Popen([CLI, "map", data("ellipsoid.obj"), data("blob.off"), "--output-dir", out,
+                                *SHORT], stdout=subprocess.DEVNULL, stderr=subprocess.PIPE,
+                               preexec_fn=make_fifo)
+    fifo = out / f"common_0.vtp.tmp.{process.pid}"
+    reader = os.open(fifo, os.O_RDONLY | os.O_NONBLOCK)
+    try:
+        import fcntl
+        fcntl.fcntl(reader, 1031, 4096)  # F_SETPIPE_SZ: the writer blocks after 4 KiB
+        ready, _, _ = select.select([reader], [], [], 120)
+        assert ready, "the map never started writing"
+        assert fifo.exists()
+        process.send_signal(signum)
+        process.wait(timeout=60)
+    finally:
+        os.close(reader)
+        if process.poll() is None:
+            process.kill()
+            process.wait()
+    assert process.returncode == -signum, process.stderr.read()
+    assert not fifo.exists()
+    assert leftovers(out) == []
+    assert not (out / "common_0.vtp").exists()
+
+
+# Defect 2: 64-bit vertex ids are rejected, never wrapped.
+
+def write_vtp_with_index(source, path, position, value):
+    """`source` (a Data mesh) as a .vtp whose connectivity holds `value` at `position` (64-bit ids)."""
+    from vtkmodules.vtkCommonCore import vtkIdTypeArray
+    from vtkmodules.vtkCommonDataModel import vtkCellArray, vtkPolyData
+    from vtkmodules.vtkIOXML import vtkXMLPolyDataWriter
+    import surfacemaps
+    mesh = surfacemaps.read_mesh(source)
+    offsets, connectivity = vtkIdTypeArray(), vtkIdTypeArray()
+    offsets.DeepCopy(mesh.GetPolys().GetOffsetsArray())
+    connectivity.DeepCopy(mesh.GetPolys().GetConnectivityArray())
+    connectivity.SetValue(position, value)
+    polys = vtkCellArray()
+    polys.SetData(offsets, connectivity)
+    out = vtkPolyData()
+    out.SetPoints(mesh.GetPoints())
+    out.SetPolys(polys)
+    writer = vtkXMLPolyDataWriter()
+    writer.SetFileName(str(path))
+    writer.SetInputData(out)
+    writer.SetHeaderTypeToUInt64()
+    writer.SetIdTypeToInt64()
+    assert writer.Write() == 1
+    return path
+
+
+@pytest.mark.parametrize("command", ["check", "embed", "map"])
+def test_wide_index_is_rejected_by_every_command(tmp_path, command):
+    wide = write_vtp_with_index(data("ellipsoid.obj"), tmp_path / "wide.vtp", 4, 2**32 + 3)
+    args = {"check": ["check", wide],
+            "embed": ["embed", wide, "-o", tmp_path / "out.vtp"],
+            "map": ["map", wide, data("blob.off"), "--output-dir", tmp_path / "map", *SHORT]}[command]
+    r = run(*args)
+    assert r.returncode == 2, (r.stdout, r.stderr)
+    assert f"{wide}" in r.stderr
+    assert "face 1 uses vertex index 4294967299" in r.stderr
+    assert not (tmp_path / "out.vtp").exists()
+    assert not (tmp_path / "map" / "common_0.vtp").exists()
+
+
+def test_huge_index_is_rejected_by_evaluate(tmp_path):
+    huge = write_vtp_with_index(data("blob.vtp"), tmp_path / "huge.vtp", 0, 10**12)
+    r = run("evaluate", huge, data("blob.vtp"))
+    assert r.returncode == 2, (r.stdout, r.stderr)
+    assert f"{huge}" in r.stderr and "uses vertex index 1000000000000" in r.stderr
+
+
+# Defect 3: evaluate validates its inputs.
+
+def test_evaluate_rejects_negative_and_out_of_range_indices(tmp_path):
+    for value in (-3, 5000):
+        bad = write_vtp_with_index(data("blob.vtp"), tmp_path / f"bad{value}.vtp", 7, value)
+        r = run("evaluate", bad, bad)
+        assert r.returncode == 2, (value, r.stdout, r.stderr)
+        assert f"face 2 uses vertex index {value}" in r.stderr
+        assert "SymmetricDirichlet" not in r.stdout
+
+
+def test_evaluate_rejects_points_without_triangles(tmp_path):
+    from vtkmodules.vtkCommonDataModel import vtkPolyData
+    from vtkmodules.vtkIOXML import vtkXMLPolyDataWriter
+    import surfacemaps
+    points = vtkPolyData()
+    points.SetPoints(surfacemaps.read_mesh(data("blob.vtp")).GetPoints())
+    path = tmp_path / "points.vtp"
+    writer = vtkXMLPolyDataWriter()
+    writer.SetFileName(str(path))
+    writer.SetInputData(points)
+    assert writer.Write() == 1
+    r = run("evaluate", path, path)
+    assert r.returncode == 2, (r.stdout, r.stderr)
+    assert f"{path} contains no triangles" in r.stderr
+
+
+def test_evaluate_rejects_nan_in_originals():
+    r = run("evaluate", data("ellipsoid.obj"), data("ellipsoid.obj"), "--originals",
+            data("bad/nan_vertex.obj"), data("ellipsoid.obj"))
+    assert r.returncode == 2, (r.stdout, r.stderr)
+    assert (data("bad/nan_vertex.obj") + " has 1 vertex with non-finite coordinates (first: vertex 4"
+            in r.stderr)
+    assert "TwoSidedDistance" not in r.stdout
+
+
+# Defect 5: coordinates outside the dynamic range.
+
+def scaled_obj(tmp_path, factor, only_vertex=None):
+    lines = open(data("ellipsoid.obj")).read().splitlines()
+    out, k = [], 0
+    for line in lines:
+        if line.startswith("v "):
+            x, y, z = map(float, line.split()[1:4])
+            if only_vertex is None or k == only_vertex:
+                x, y, z = x * factor, y * factor, z * factor
+            line = f"v {x!r} {y!r} {z!r}"
+            k += 1
+        out.append(line)
+    path = tmp_path / f"scaled_{factor:g}_{only_vertex}.obj"
+    path.write_text("\n".join(out) + "\n")
+    return path
+
+
+@pytest.mark.parametrize("command", ["check", "embed", "map", "evaluate"])
+def test_overflowing_coordinates_are_rejected(tmp_path, command):
+    mesh = scaled_obj(tmp_path, 1e200)
+    args = {"check": ["check", mesh],
+            "embed": ["embed", mesh, "-o", tmp_path / "out.vtp"],
+            "map": ["map", mesh, data("blob.off"), "--output-dir", tmp_path / "map", *SHORT],
+            "evaluate": ["evaluate", mesh, mesh]}[command]
+    r = run(*args)
+    assert r.returncode == 2, (r.stdout, r.stderr)
+    assert f"{mesh}" in r.stderr
+    assert "has 642 vertices outside the valid coordinate range |x|, |y|, |z| <= 1e+50" in r.stderr
+    assert "first: vertex 0" in r.stderr
+    assert "certified" not in r.stdout
+
+
+def test_one_vertex_at_1e308_is_named(tmp_path):
+    mesh = scaled_obj(tmp_path, 1e308, only_vertex=9)
+    r = run("check", mesh)
+    assert r.returncode == 2, (r.stdout, r.stderr)
+    assert "has 1 vertex outside the valid coordinate range" in r.stderr
+    assert "first: vertex 9" in r.stderr
+
+
+def test_tiny_scale_is_rejected(tmp_path):
+    r = run("check", scaled_obj(tmp_path, 1e-60))
+    assert r.returncode == 2, (r.stdout, r.stderr)
+    assert "has a bounding-box diagonal of" in r.stderr and "at least 1e-50" in r.stderr
+
+
+def test_large_but_valid_scale_is_accepted(tmp_path):
+    r = run("check", scaled_obj(tmp_path, 1e40))
+    assert r.returncode == 0, r.stderr
+
+
+# Defect 7: the Landmarks array's shape and values.
+
+def write_with_landmarks(tmp_path, name, array, values=()):
+    """ellipsoid.obj as a .vtp with `array` as its Landmarks: -1 everywhere but (vertex, value) in `values`."""
+    from vtkmodules.vtkIOXML import vtkXMLPolyDataWriter
+    import surfacemaps
+    mesh = surfacemaps.read_mesh(data("ellipsoid.obj"))
+    array.SetName("Landmarks")
+    array.SetNumberOfTuples(mesh.GetNumberOfPoints())
+    for c in range(array.GetNumberOfComponents()):
+        array.FillComponent(c, -1)
+    for vertex, value in values:
+        array.SetComponent(vertex, 0, value)
+    mesh.GetPointData().AddArray(array)
+    path = tmp_path / name
+    writer = vtkXMLPolyDataWriter()
+    writer.SetFileName(str(path))
+    writer.SetInputData(mesh)
+    assert writer.Write() == 1
+    return path
+
+
+@pytest.mark.parametrize("command", ["check", "embed", "map"])
+def test_two_component_landmarks_are_rejected(tmp_path, command):
+    from vtkmodules.vtkCommonCore import vtkIntArray
+    array = vtkIntArray()
+    array.SetNumberOfComponents(2)
+    path = write_with_landmarks(tmp_path, "two.vtp", array, [(5, 0)])
+    args = {"check": ["check", path],
+            "embed": ["embed", path, "-o", tmp_path / "out.vtp"],
+            "map": ["map", path, data("blob.off"), "--output-dir", tmp_path / "map", *SHORT]}[command]
+    r = run(*args)
+    assert r.returncode == 2, (r.stdout, r.stderr)
+    assert "Landmarks array with 2 components" in r.stderr and f"{path}" in r.stderr
+    assert not (tmp_path / "out.vtp").exists()
+
+
+def test_non_integer_landmark_ids_are_rejected(tmp_path):
+    from vtkmodules.vtkCommonCore import vtkDoubleArray
+    whole = write_with_landmarks(tmp_path, "whole.vtp", vtkDoubleArray(), [(11, 2.0)])
+    r = run("check", whole)
+    assert r.returncode == 0, r.stderr  # integer-valued floats are ids
+    assert "landmarks 1" in r.stdout
+    half = write_with_landmarks(tmp_path, "half.vtp", vtkDoubleArray(), [(11, 2.5)])
+    r = run("check", half)
+    assert r.returncode == 2, (r.stdout, r.stderr)
+    assert f"{half} has a landmark id that is not an integer (2.5 at vertex 11)" in r.stderr
