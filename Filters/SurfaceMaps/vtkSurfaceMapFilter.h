@@ -271,6 +271,16 @@ public:
 
   ///@{
   /**
+   * Weight of the coverage term: per triangle of T and input, its lifted area
+   * against the input area its sphere triangle covers, so that no triangle of
+   * T is a sliver on one sphere over a fold of the surface (where the exact
+   * map would squeeze).
+   */
+  vtkSurfaceMapSettingMacro(CoverageWeight, double);
+  ///@}
+
+  ///@{
+  /**
    * Weight of the map-distortion term.
    */
   vtkSurfaceMapSettingMacro(MapWeight, double);

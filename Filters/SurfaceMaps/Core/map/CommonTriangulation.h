@@ -28,7 +28,7 @@ namespace surfacemaps
 enum class MapTerm
 {
   Barrier,
-  MeshQuality,
+  MeshQuality, ///< with the coverage term (CoverageEnergy)
   Approximation,
   Landmarks,
   Distortion,
@@ -43,6 +43,8 @@ struct MapEnergyWeights
   double approximation = 0.0; // includes 1 / eps^2 for the soft term
   double landmark = 0.0;
   double map = 0.0;
+  /// Coverage (CoverageEnergy), in the mesh-quality group.
+  double coverage = 0.0;
   /// Hard approximation bound per input (unit-area units of that input);
   /// empty: the soft term. With a bound, `approximation` is the barrier's
   /// weight (no 1 / eps^2).
@@ -131,6 +133,10 @@ public:
   /// Recomputes every face's target length (once per iteration).
   void updateTargetLengths();
 
+  /// Input i's area per sphere area under a triangle of T: the mean over its
+  /// corners' lift triangles (CoverageEnergy's density).
+  double coverageDensity(int i, const MapVertex& a, const MapVertex& b, const MapVertex& c) const;
+
   /// Energy of the per-triangle terms (barrier, mesh quality, map distortion)
   /// of one triangle, weighted; +inf if invalid.
   double triangleEnergy(const MapVertex& a,
@@ -190,6 +196,8 @@ public:
     /// Triangles with point indices of each embedding (offset i * vertices).
     std::vector<std::vector<std::array<int, 3>>> embeddedTriangles;
     std::vector<double> lengths;
+    /// Per input and triangle: the coverage density (held within a step).
+    std::vector<std::vector<double>> densities;
     /// Per point (i * vertices + v): lift triangle on input i and its lift.
     std::vector<int> liftTriangle;
     std::vector<const Lift*> lifts;

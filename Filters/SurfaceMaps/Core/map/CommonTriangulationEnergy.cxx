@@ -6,6 +6,7 @@
 #include "energy/BijectivityBarrier.h"
 #include "energy/LandmarkEnergy.h"
 #include "energy/MapDistortionEnergy.h"
+#include "energy/CoverageEnergy.h"
 #include "energy/MeshQualityEnergy.h"
 #include "geometry/Predicates.h"
 #include "geometry/SphericalTriangulation.h"
@@ -26,6 +27,15 @@ int group(MapTerm term)
   return static_cast<int>(term);
 }
 } // namespace
+
+double CommonTriangulation::coverageDensity(int i,
+  const MapVertex& a,
+  const MapVertex& b,
+  const MapVertex& c) const
+{
+  const std::vector<double>& d = this->Surfaces[i].density;
+  return (d[a.liftTriangle[i]] + d[b.liftTriangle[i]] + d[c.liftTriangle[i]]) / 3.0;
+}
 
 double CommonTriangulation::triangleEnergy(const MapVertex& a,
   const MapVertex& b,
@@ -48,6 +58,13 @@ double CommonTriangulation::triangleEnergy(const MapVertex& a,
     if (w.mesh > 0.0)
     {
       energy += w.mesh * meshQualityEnergy<double>(a.lifted[i], b.lifted[i], c.lifted[i], length);
+    }
+    if (w.coverage > 0.0)
+    {
+      energy += w.coverage *
+        coverageEnergy<double>({ a.g[i], b.g[i], c.g[i] },
+          { a.lifted[i], b.lifted[i], c.lifted[i] },
+          this->coverageDensity(i, a, b, c));
     }
   }
   if (w.map > 0.0)
@@ -249,6 +266,13 @@ void CommonTriangulation::buildObjective(const Snapshot& s,
       MeshQualityEnergy mesh{ &s.triangles, &s.lifts, &s.lengths, i * nv };
       objective.addTerm(std::make_shared<ElementTerm<3, MeshQualityEnergy>>("mesh", mesh),
         w.mesh,
+        group(MapTerm::MeshQuality));
+    }
+    if (w.coverage > 0.0)
+    {
+      CoverageEnergy coverage{ &s.triangles, &s.lifts, s.densities[i].data(), i * nv };
+      objective.addTerm(std::make_shared<ElementTerm<3, CoverageEnergy>>("coverage", coverage),
+        w.coverage,
         group(MapTerm::MeshQuality));
     }
     if (w.approximation > 0.0 && this->TrackSamples)

@@ -46,6 +46,22 @@ void CommonTriangulation::snapshot(Snapshot& s, SpherePoints& points, bool lockL
       locked[k] = lockLandmarks && this->Mesh.property(this->Landmark, v) >= 0;
     }
   }
+  s.densities.assign(n, {});
+  if (this->weights.coverage > 0.0)
+  {
+    for (int i = 0; i < n; ++i)
+    {
+      const std::vector<double>& d = this->Surfaces[i].density;
+      s.densities[i].reserve(s.triangles.size());
+      for (const auto& t : s.triangles)
+      {
+        s.densities[i].push_back(
+          (d[s.liftTriangle[i * nv + t[0]]] + d[s.liftTriangle[i * nv + t[1]]] +
+            d[s.liftTriangle[i * nv + t[2]]]) /
+          3.0);
+      }
+    }
+  }
   s.sampleTriangle.assign(n, {});
   if (this->TrackSamples)
   {

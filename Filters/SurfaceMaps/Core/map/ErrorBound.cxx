@@ -125,7 +125,10 @@ std::optional<MapPhase> ErrorBound::next(CommonTriangulation& T)
           << " of the bound, input " << violations.worstInput << " vertex "
           << violations.worstVertex << ")";
   options.log(Logger::Info, message.str());
-  if (violations.count > 0)
+  // Out of rounds with every vertex inside the bound, only short of the
+  // margin: the barrier starts finite, so the bound phase can run.
+  const bool withinBound = violations.worst < 1.0;
+  if (violations.count > 0 && !(this->Round == options.boundRefinementRounds && withinBound))
   {
     if (this->Round == options.boundRefinementRounds)
     {

@@ -47,6 +47,7 @@ struct SurfaceMapOptions
   double targetError = 1e-3;
   double fineBarrierWeight = 1e-6;
   double meshWeight = 0.5;
+  double coverageWeight = 0.1;
   double mapWeight = 1.0;
   double approximationWeight = 0.25;
 

@@ -167,6 +167,14 @@ void phaseSettings(std::vector<MapSetting>& table)
     0,
     1e6,
     "Weight of the mesh-quality term (coarse phase on)."));
+  table.push_back(real("CoverageWeight",
+    "coverage-weight",
+    &Options::coverageWeight,
+    0,
+    1e6,
+    "Weight of the coverage term (coarse phase on): per triangle of T and input, its lifted "
+    "area against the input area its sphere triangle covers; keeps T's triangles from being "
+    "slivers on one sphere over a fold of the surface, where the exact map squeezes."));
   table.push_back(real("MapWeight",
     "map-weight",
     &Options::mapWeight,
@@ -240,8 +248,8 @@ void boundSettings(std::vector<MapSetting>& table)
     &Options::boundRefinementRounds,
     0,
     100,
-    "Rounds of refinement towards MaxError at most; a bound still not met after them is an "
-    "error."));
+    "Rounds of refinement towards MaxError at most; a vertex still beyond the bound after them "
+    "is an error (one only beyond BoundMargin of it goes on to the bound phase)."));
   table.push_back(count("BoundRefinementIterations",
     "bound-refinement-iterations",
     &Options::boundRefinementIterations,

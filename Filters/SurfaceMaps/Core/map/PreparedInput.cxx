@@ -125,9 +125,15 @@ void buildSamples(PreparedInput& s, int samples)
 void buildLifts(PreparedInput& s)
 {
   s.lifts.resize(s.triangles.size());
+  s.density.resize(s.triangles.size());
   for (std::size_t t = 0; t < s.triangles.size(); ++t)
   {
     const auto& tri = s.triangles[t];
+    const double surface =
+      (s.points[tri[1]] - s.points[tri[0]]).cross(s.points[tri[2]] - s.points[tri[0]]).norm();
+    const double chord =
+      (s.sphere[tri[1]] - s.sphere[tri[0]]).cross(s.sphere[tri[2]] - s.sphere[tri[0]]).norm();
+    s.density[t] = chord > 0.0 ? surface / chord : 0.0;
     s.lifts[t] = Lift(s.points[tri[0]],
       s.points[tri[1]],
       s.points[tri[2]],

@@ -25,6 +25,9 @@ struct PreparedInput
   std::vector<Eigen::Vector3d> sphere;
   /// The lift of every triangle (sphere -> surface), built once.
   std::vector<Lift> lifts;
+  /// Per triangle: its area on the input over its chord triangle's area on
+  /// the sphere (how much input a unit of sphere carries there).
+  std::vector<double> density;
   std::unique_ptr<SphereLocator> locator;
   /// Target edge length per vertex, unit-area units (set per phase).
   std::vector<double> sizing;

@@ -27,6 +27,7 @@ MapPhase distortionPhase(PhaseKind kind,
   MapEnergyWeights& w = phase.weights;
   w.barrier = barrierWeight / n;
   w.mesh = options.meshWeight / n;
+  w.coverage = options.coverageWeight / n;
   w.map = context.pairs == 0 ? 0.0 : options.mapWeight / pairCount;
   w.bounds = bounds;
   w.approximation = options.approximationWeight / n / (bounds.empty() ? eps * eps : 1.0);

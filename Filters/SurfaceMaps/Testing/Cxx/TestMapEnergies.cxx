@@ -2,6 +2,7 @@
 #include "FiniteDifferences.h"
 #include "MapTestInputs.h"
 #include "energy/ApproximationEnergy.h"
+#include "energy/CoverageEnergy.h"
 #include "energy/MapDistortionEnergy.h"
 #include "energy/MeshQualityEnergy.h"
 #include "map/CommonTriangulation.h"
@@ -91,6 +92,45 @@ TEST(MapEnergies, AllTermsMatchFiniteDifferences)
   w.map = 1.0;
   EnergyCase c(w);
   c.expectDerivativesMatch();
+}
+
+TEST(MapEnergies, CoverageMatchesFiniteDifferences)
+{
+  MapEnergyWeights w;
+  w.barrier = 0.01;
+  w.coverage = 1.0;
+  EnergyCase c(w);
+  ASSERT_EQ(c.snapshot.densities.size(), 2u);
+  EXPECT_EQ(c.snapshot.densities[0].size(), c.snapshot.triangles.size());
+  c.expectDerivativesMatch();
+}
+
+// Zero where the lifted triangle has the area its sphere triangle covers; a
+// sphere sliver whose corners lift to a fat triangle (a fold of the surface
+// between them) costs far more than the triangle's area.
+TEST(MapEnergies, CoverageSeesSlivers)
+{
+  using V = Eigen::Vector3d;
+  const std::array<V, 3> sphere{
+    V(1, 0, 0), V(0.99, 0.1, 0).normalized(), V(0.99, 0, 0.1).normalized()
+  };
+  const double chord = 0.5 * (sphere[1] - sphere[0]).cross(sphere[2] - sphere[0]).norm();
+  std::array<V, 3> lifted{ V(0, 0, 0), V(1, 0, 0), V(0, 1, 0) }; // area 0.5
+  EXPECT_NEAR(coverageEnergy<double>(sphere, lifted, 0.5 / chord), 0.0, 1e-12);
+  // Twice the area claimed: of the order of the area.
+  const double twice = coverageEnergy<double>(sphere, lifted, 0.25 / chord);
+  EXPECT_GT(twice, 0.05);
+  EXPECT_LT(twice, 0.5);
+  // The same corners' lift over a sphere triangle 1e4 times thinner.
+  std::array<V, 3> sliver = sphere;
+  sliver[2] = (sphere[1] + 1e-4 * (sphere[2] - sphere[1])).normalized();
+  const double thin = 0.5 * (sliver[1] - sliver[0]).cross(sliver[2] - sliver[0]).norm();
+  const double e = coverageEnergy<double>(sliver, lifted, 0.5 / chord);
+  EXPECT_GT(e, 100.0);
+  EXPECT_LT(thin, 1e-3 * chord);
+  std::array<V, 3> degenerate = sphere;
+  degenerate[2] = sphere[1];
+  EXPECT_TRUE(std::isinf(coverageEnergy<double>(degenerate, lifted, 1.0)));
 }
 
 TEST(MapEnergies, HardApproximationBoundMatchesFiniteDifferences)
