@@ -134,8 +134,8 @@ public:
   void updateTargetLengths();
 
   /// Input i's area per sphere area under a triangle of T: the mean over its
-  /// corners' lift triangles (CoverageEnergy's density).
-  double coverageDensity(int i, const MapVertex& a, const MapVertex& b, const MapVertex& c) const;
+  /// corners' lift triangles a, b, c of input i (CoverageEnergy's density).
+  double coverageDensity(int i, int a, int b, int c) const;
 
   /// Energy of the per-triangle terms (barrier, mesh quality, map distortion)
   /// of one triangle, weighted; +inf if invalid.

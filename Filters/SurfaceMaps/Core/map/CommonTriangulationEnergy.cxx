@@ -28,13 +28,10 @@ int group(MapTerm term)
 }
 } // namespace
 
-double CommonTriangulation::coverageDensity(int i,
-  const MapVertex& a,
-  const MapVertex& b,
-  const MapVertex& c) const
+double CommonTriangulation::coverageDensity(int i, int a, int b, int c) const
 {
   const std::vector<double>& d = this->Surfaces[i].density;
-  return (d[a.liftTriangle[i]] + d[b.liftTriangle[i]] + d[c.liftTriangle[i]]) / 3.0;
+  return (d[a] + d[b] + d[c]) / 3.0;
 }
 
 double CommonTriangulation::triangleEnergy(const MapVertex& a,
@@ -64,7 +61,7 @@ double CommonTriangulation::triangleEnergy(const MapVertex& a,
       energy += w.coverage *
         coverageEnergy<double>({ a.g[i], b.g[i], c.g[i] },
           { a.lifted[i], b.lifted[i], c.lifted[i] },
-          this->coverageDensity(i, a, b, c));
+          this->coverageDensity(i, a.liftTriangle[i], b.liftTriangle[i], c.liftTriangle[i]));
     }
   }
   if (w.map > 0.0)

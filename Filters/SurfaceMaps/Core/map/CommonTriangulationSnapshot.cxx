@@ -51,14 +51,11 @@ void CommonTriangulation::snapshot(Snapshot& s, SpherePoints& points, bool lockL
   {
     for (int i = 0; i < n; ++i)
     {
-      const std::vector<double>& d = this->Surfaces[i].density;
+      const int* lift = s.liftTriangle.data() + static_cast<std::size_t>(i) * nv;
       s.densities[i].reserve(s.triangles.size());
       for (const auto& t : s.triangles)
       {
-        s.densities[i].push_back(
-          (d[s.liftTriangle[i * nv + t[0]]] + d[s.liftTriangle[i * nv + t[1]]] +
-            d[s.liftTriangle[i * nv + t[2]]]) /
-          3.0);
+        s.densities[i].push_back(this->coverageDensity(i, lift[t[0]], lift[t[1]], lift[t[2]]));
       }
     }
   }
