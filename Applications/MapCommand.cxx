@@ -77,7 +77,7 @@ const char* const MapExitCodes =
   "an internal error.\n";
 
 const std::string MapHelpText = std::string(MapHelpIntro) + ArrayTransferFlagsHelp +
-  MapHelpSettings + settingsHelp() + MapExitCodes;
+  MapHelpSettings + presetsHelp() + settingsHelp() + MapExitCodes;
 } // namespace
 
 const char* const MapHelp = MapHelpText.c_str();
@@ -149,11 +149,14 @@ struct MapArguments
 {
   std::vector<std::string> meshes, landmarks;
   std::string outputDir;
+  /// --preset's name, "" without one.
+  std::string preset;
 };
 
 MapArguments parseArguments(const std::vector<std::string>& args, vtkSurfaceMapFilter* map)
 {
   MapArguments parsed;
+  parsed.preset = applyPresetFlag(map, args);
   bool inLandmarks = false;
   for (std::size_t i = 0; i < args.size(); ++i)
   {
@@ -293,6 +296,8 @@ std::string reportMap(vtkSurfaceMapFilter* map,
        << ", \"map\": " << jsonNumber(field(first, "MapEnergy")) << " },\n";
   json << "  \"seconds\": { \"total\": " << jsonNumber(seconds)
        << ", \"map\": " << jsonNumber(field(first, "MapSeconds")) << " },\n";
+  json << "  \"preset\": " << (arguments.preset.empty() ? "null" : jsonString(arguments.preset))
+       << ",\n";
   json << "  \"settings\": " << settingsJson(map) << ",\n";
   json << "  \"array_transfer_modes\": {";
   for (int k = 0; k < map->GetNumberOfArrayTransferModes(); ++k)

@@ -95,11 +95,72 @@ std::string wrapped(const std::string& text, std::size_t indent, std::size_t wid
 
 } // namespace
 
+std::string applyPresetFlag(vtkSurfaceMapFilter* map, const std::vector<std::string>& args)
+{
+  std::string name;
+  for (std::size_t i = 0; i < args.size(); ++i)
+  {
+    if (args[i] != "--preset")
+    {
+      continue;
+    }
+    if (!name.empty())
+    {
+      throw UsageError{ "--preset given twice" };
+    }
+    name = optionValue(args, i);
+    int preset = 0;
+    while (preset < vtkSurfaceMapFilter::GetNumberOfPresets() &&
+      name != vtkSurfaceMapFilter::GetPresetName(preset))
+    {
+      ++preset;
+    }
+    if (preset == vtkSurfaceMapFilter::GetNumberOfPresets())
+    {
+      std::string list;
+      for (int p = 0; p < vtkSurfaceMapFilter::GetNumberOfPresets(); ++p)
+      {
+        list += (p == 0 ? "" : " or ") + std::string(vtkSurfaceMapFilter::GetPresetName(p));
+      }
+      throw UsageError{ "--preset is " + list + ", not '" + name + "'" };
+    }
+    map->ApplyPreset(preset);
+  }
+  return name;
+}
+
+std::string presetsHelp()
+{
+  std::string help = "  --preset";
+  for (int p = 0; p < vtkSurfaceMapFilter::GetNumberOfPresets(); ++p)
+  {
+    help += (p == 0 ? " " : "|") + std::string(vtkSurfaceMapFilter::GetPresetName(p));
+  }
+  help += "\n";
+  help += wrapped("Sets a group of the settings below for a kind of study, wherever the flag "
+                  "stands; the settings given as flags override it.",
+    6,
+    79);
+  for (int p = 0; p < vtkSurfaceMapFilter::GetNumberOfPresets(); ++p)
+  {
+    help += wrapped(std::string(vtkSurfaceMapFilter::GetPresetName(p)) + ": " +
+        vtkSurfaceMapFilter::GetPresetDocumentation(p),
+      6,
+      79);
+  }
+  return help;
+}
+
 bool parseSettingFlag(vtkSurfaceMapFilter* map,
   const std::vector<std::string>& args,
   std::size_t& i)
 {
   const std::string& arg = args[i];
+  if (arg == "--preset")
+  {
+    ++i; // applied by applyPresetFlag before every other flag
+    return true;
+  }
   for (int k = 0; k < vtkSurfaceMapFilter::GetNumberOfSettings(); ++k)
   {
     const char* off = vtkSurfaceMapFilter::GetSettingOffFlag(k);

@@ -17,6 +17,15 @@ namespace surfacemap
 /// the flag and its range for a bad value. False for any other argument.
 bool parseSettingFlag(vtkSurfaceMapFilter* map, const std::vector<std::string>& args, std::size_t& i);
 
+/// If args holds "--preset NAME" (anywhere), applies that preset to `map`
+/// and returns NAME ("" without one), so that the other setting flags
+/// override it wherever they stand; UsageError for an unknown or repeated
+/// preset. parseSettingFlag then skips the flag and its value.
+std::string applyPresetFlag(vtkSurfaceMapFilter* map, const std::vector<std::string>& args);
+
+/// --preset with every preset's name and documentation, for --help.
+std::string presetsHelp();
+
 /// Every setting's flag with its documentation, default and range, for --help.
 std::string settingsHelp();
 

@@ -6,6 +6,7 @@
 #include "vtkSurfaceMapsErrorGuard.h"
 
 #include "base/ThreadCount.h"
+#include "map/MapPresets.h"
 #include "map/MapSettings.h"
 #include "map/SurfaceMap.h"
 
@@ -264,6 +265,7 @@ vtkSurfaceMapSettingDefinition(TargetError, double) vtkSurfaceMapSettingDefiniti
                                               vtkSurfaceMapSettingDefinition(DecrementTolerance,
                                                 double)
                                                 vtkSurfaceMapSettingDefinition(MaxPointStep, double)
+                                                  vtkSurfaceMapSettingDefinition(BlockSolveInputs, int)
 
                                                   int vtkSurfaceMapFilter::GetNumberOfSettings()
 {
@@ -331,6 +333,61 @@ void vtkSurfaceMapFilter::SetSetting(int i, double value)
   {
     setValue(this, this->Internals->Options, *settingAt(i), value);
   }
+}
+
+namespace
+{
+/// The preset with this index; nullptr out of range.
+const surfacemaps::MapPreset* presetAt(int i)
+{
+  static const std::vector<surfacemaps::MapPreset> all = surfacemaps::presets();
+  return i >= 0 && i < static_cast<int>(all.size()) ? &all[i] : nullptr;
+}
+} // namespace
+
+void vtkSurfaceMapFilter::ApplyPreset(int preset)
+{
+  if (!presetAt(preset))
+  {
+    vtkErrorMacro(<< "no preset " << preset << " (0 to " << GetNumberOfPresets() - 1 << ")");
+    return;
+  }
+  for (const surfacemaps::PresetValue& v : surfacemaps::presetValues(*presetAt(preset)))
+  {
+    setValue(this, this->Internals->Options, *surfacemaps::findMapSetting(v.setting), v.value);
+  }
+}
+
+int vtkSurfaceMapFilter::GetNumberOfPresets()
+{
+  return static_cast<int>(surfacemaps::presets().size());
+}
+
+const char* vtkSurfaceMapFilter::GetPresetName(int preset)
+{
+  return presetAt(preset) ? surfacemaps::presetName(*presetAt(preset)) : nullptr;
+}
+
+const char* vtkSurfaceMapFilter::GetPresetDocumentation(int preset)
+{
+  static const std::vector<std::string> docs = []
+  {
+    std::vector<std::string> all;
+    for (surfacemaps::MapPreset p : surfacemaps::presets())
+    {
+      std::string doc = std::string(surfacemaps::presetDocumentation(p)) + " Sets ";
+      const std::vector<surfacemaps::PresetValue> values = surfacemaps::presetValues(p);
+      for (std::size_t k = 0; k < values.size(); ++k)
+      {
+        const surfacemaps::MapSetting* s = surfacemaps::findMapSetting(values[k].setting);
+        doc += (k == 0 ? "" : ", ") + std::string(values[k].setting) + " " +
+          s->format(s->clamp(values[k].value));
+      }
+      all.push_back(doc + ".");
+    }
+    return all;
+  }();
+  return presetAt(preset) ? docs[preset].c_str() : nullptr;
 }
 
 vtkSurfaceMapFilter::vtkSurfaceMapFilter()

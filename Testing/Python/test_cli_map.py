@@ -92,6 +92,24 @@ def test_term_weights_are_settings(tmp_path):
             assert r.returncode == 2 and option in r.stderr, (option, value, r.stderr)
 
 
+def test_preset_sets_its_settings_and_flags_override_it(tmp_path):
+    out = tmp_path / "population"
+    # The flag before --preset still overrides it: the preset applies first.
+    r = run("map", data("ellipsoid.obj"), data("blob.off"), "--landmarks", data("ellipsoid.pinned"),
+            data("blob.vts"), *SHORT, "--target-error", "0.02", "--preset", "population",
+            "--output-dir", out)
+    assert r.returncode == 0, r.stderr
+    report = json.loads((out / "report.json").read_text())
+    assert report["preset"] == "population"
+    settings = report["settings"]
+    assert settings["target_error"] == 0.02
+    assert settings["refinement_rounds"] == 0 and settings["approximation_weight"] == 2
+    r = run("map", data("ellipsoid.obj"), "--preset", "crowd", "--output-dir", tmp_path / "o")
+    assert r.returncode == 2 and "--preset is pair or population, not 'crowd'" in r.stderr, r.stderr
+    r = run("map", "--help")
+    assert "--preset pair|population" in r.stdout
+
+
 def test_refinement_is_a_setting(tmp_path):
     out = tmp_path / "unrefined"
     r = run("map", data("ellipsoid.obj"), data("blob.off"), "--landmarks", data("ellipsoid.pinned"),

@@ -245,8 +245,15 @@ def settings_table():
     return rows
 
 
+def presets():
+    """The names of the surface map's presets with their documentation (what
+    each is for and the settings it sets), from vtkSurfaceMapFilter."""
+    f = vtkSurfaceMapFilter
+    return {f.GetPresetName(p): f.GetPresetDocumentation(p) for p in range(f.GetNumberOfPresets())}
+
+
 def map_surfaces(meshes, landmarks=None, target_error=None, pairs=None, keep_landmarks=None, mapped=False,
-                 categorical=None, continuous=None, **settings):
+                 categorical=None, continuous=None, preset=None, **settings):
     """Certified bijective map between closed genus-0 meshes through one common triangulation.
 
     Runs vtkSurfaceMapFilter on `meshes` (vtkPolyData or file names; one mesh
@@ -265,6 +272,10 @@ def map_surfaces(meshes, landmarks=None, target_error=None, pairs=None, keep_lan
     - `categorical`, `continuous`: names of point arrays carried onto the
       outputs as labels (the nearest corner's value) or interpolated, instead
       of by type (integer arrays categorical, floating-point ones continuous).
+    - `preset`: None, "pair" or "population" (``presets()`` documents them):
+      sets a group of settings for a kind of study first; every other
+      argument overrides it. "population" is for many specimens in one map
+      (statistics over the common triangulation).
     - `settings`: any other setting of vtkSurfaceMapFilter's settings table by
       name, e.g. ``CoarseIterations=10``, ``FineIterations=20``,
       ``MapWeight=2.0`` (``settings_table()`` lists them).
@@ -293,6 +304,11 @@ def map_surfaces(meshes, landmarks=None, target_error=None, pairs=None, keep_lan
         raise ValueError(f"pairs is one of {sorted(_PAIR_MODES)}, not {pairs!r}")
     f = vtkSurfaceMapFilter()
     errors = _collect_errors(f)
+    if preset is not None:
+        names = [f.GetPresetName(p) for p in range(f.GetNumberOfPresets())]
+        if preset not in names:
+            raise ValueError(f"preset is one of {names}, not {preset!r}")
+        f.ApplyPreset(names.index(preset))
     if target_error is not None:
         f.SetTargetError(target_error)
     if pairs is not None:

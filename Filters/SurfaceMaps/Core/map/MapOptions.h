@@ -71,6 +71,7 @@ struct SurfaceMapOptions
   double maxEdgeLength = 100.0;
   double decrementTolerance = 1e-4;
   double maxPointStep = 0.17632698070846498;
+  int blockSolveInputs = 4;
 
   /// Called once per iteration; return false to abort (throws Aborted).
   std::function<bool(const SurfaceMapProgress&)> progress;

@@ -307,6 +307,15 @@ void detailSettings(std::vector<MapSetting>& table)
     1e3,
     "Largest tangent step (tan of the angle) of one point in a Newton step; the whole step is "
     "scaled down to respect it, never clamped per point."));
+  table.push_back(count("BlockSolveInputs",
+    "block-solve-inputs",
+    &Options::blockSolveInputs,
+    0,
+    1e6,
+    "From this many inputs on, each Newton system is solved by conjugate gradients "
+    "preconditioned with every sphere embedding's own block (time linear in the number of "
+    "inputs) instead of one Cholesky factorisation of all embeddings together (whose cost grows "
+    "with the cube of the number of inputs); 0: always the factorisation."));
 }
 
 std::vector<MapSetting> buildTable()

@@ -159,6 +159,25 @@ NewtonStepResult PhaseRunner::newtonIteration(const MapPhase& phase,
   SpherePoints points;
   this->T.snapshot(snapshot, points, phase.lockLandmarks);
   this->T.buildObjective(snapshot, this->Targets, objective);
+  const int n = this->T.numberOfInputs();
+  std::vector<int> blocks;
+  if (n > 1 && this->Options.blockSolveInputs > 0 && n >= this->Options.blockSolveInputs)
+  {
+    // One block per embedding: SpherePoints numbers the variables in point
+    // order, and the snapshot holds embedding i's points at [i nv, (i + 1) nv).
+    blocks.assign(n + 1, 0);
+    int variables = 0;
+    for (int k = 0; k < points.size(); ++k)
+    {
+      if (k % snapshot.vertices == 0)
+      {
+        blocks[k / snapshot.vertices] = variables;
+      }
+      variables += points.locked(k) ? 0 : 2;
+    }
+    blocks[n] = variables;
+  }
+  solver.setBlocks(std::move(blocks));
   report.bookkeepingSeconds += secondsSince(clock);
   NewtonOptions newton;
   newton.maxPointStep = this->Options.maxPointStep;

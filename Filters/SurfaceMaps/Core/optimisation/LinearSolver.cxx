@@ -7,7 +7,9 @@
 #include <dlfcn.h>
 #include <omp.h>
 
+#include <algorithm>
 #include <cmath>
+#include <stdexcept>
 #include <sstream>
 
 namespace surfacemaps
@@ -82,6 +84,8 @@ private:
 struct LinearSolver::Internals
 {
   Eigen::CholmodDecomposition<Eigen::SparseMatrix<double>, Eigen::Upper> Cholesky;
+  std::vector<int> Blocks;
+  std::vector<std::unique_ptr<LinearSolver>> BlockSolvers;
   bool Analysed = false;
 };
 
@@ -115,6 +119,10 @@ LinearSolveResult LinearSolver::solve(const Eigen::SparseMatrix<double>& H,
   bool patternChanged,
   const Logger& log)
 {
+  if (this->Impl->Blocks.size() > 2)
+  {
+    return this->solveByBlocks(H, b, x, patternChanged, log);
+  }
   LinearSolveResult result;
   const SingleThreadedBlas blasThreads;
   auto& cholesky = this->Impl->Cholesky;
@@ -185,6 +193,127 @@ LinearSolveResult LinearSolver::solve(const Eigen::SparseMatrix<double>& H,
     }
   }
   log(Logger::Warning, "Cholesky factorisation failed even with a diagonal shift");
+  return result;
+}
+
+void LinearSolver::setBlocks(std::vector<int> offsets)
+{
+  if (offsets != this->Impl->Blocks)
+  {
+    this->Impl->Blocks = std::move(offsets);
+    this->Impl->BlockSolvers.clear();
+  }
+}
+
+bool LinearSolver::solveAgain(const Eigen::VectorXd& b, Eigen::VectorXd& x) const
+{
+  const SingleThreadedBlas blasThreads;
+  x = this->Impl->Cholesky.solve(b);
+  return this->Impl->Cholesky.info() == Eigen::Success && x.allFinite();
+}
+
+LinearSolveResult LinearSolver::solveByBlocks(const Eigen::SparseMatrix<double>& H,
+  const Eigen::VectorXd& b,
+  Eigen::VectorXd& x,
+  bool patternChanged,
+  const Logger& log)
+{
+  const std::vector<int>& offsets = this->Impl->Blocks;
+  const int blocks = static_cast<int>(offsets.size()) - 1;
+  LinearSolveResult result;
+  if (offsets.front() != 0 || offsets.back() != H.rows())
+  {
+    throw std::logic_error("LinearSolver: the blocks do not cover the system");
+  }
+  auto& solvers = this->Impl->BlockSolvers;
+  if (static_cast<int>(solvers.size()) != blocks)
+  {
+    solvers.clear();
+    for (int k = 0; k < blocks; ++k)
+    {
+      solvers.push_back(std::make_unique<LinearSolver>());
+    }
+    patternChanged = true;
+  }
+  result.analysed = patternChanged;
+
+  // The preconditioner z = M^-1 r, block by block (in parallel: the blocks'
+  // solvers are independent). The first application factorises each block
+  // (regularised where needed) with its part of the right-hand side.
+  std::vector<Eigen::SparseMatrix<double>> diagonal(blocks);
+  std::vector<char> ok(blocks, 1);
+  std::vector<double> shifts(blocks, 0.0);
+  auto precondition = [&](const Eigen::VectorXd& r, Eigen::VectorXd& z, bool factorise)
+  {
+    z.resize(r.size());
+#pragma omp parallel for schedule(dynamic)
+    for (int k = 0; k < blocks; ++k)
+    {
+      const int first = offsets[k];
+      const int size = offsets[k + 1] - first;
+      if (size == 0)
+      {
+        continue;
+      }
+      Eigen::VectorXd zk;
+      if (factorise)
+      {
+        diagonal[k] = H.block(first, first, size, size);
+        const LinearSolveResult block =
+          solvers[k]->solve(diagonal[k], r.segment(first, size), zk, patternChanged, log);
+        ok[k] = block.success;
+        shifts[k] = block.shift;
+      }
+      else
+      {
+        ok[k] = solvers[k]->solveAgain(r.segment(first, size), zk);
+      }
+      if (ok[k])
+      {
+        z.segment(first, size) = zk;
+      }
+    }
+    return std::all_of(ok.begin(), ok.end(), [](char c) { return c != 0; });
+  };
+
+  // Preconditioned conjugate gradients from x = 0.
+  const double tolerance = 1e-8 * b.norm();
+  x = Eigen::VectorXd::Zero(b.size());
+  Eigen::VectorXd r = b, z, p, Hp;
+  if (!precondition(r, z, true))
+  {
+    log(Logger::Warning, "Cholesky factorisation of a block failed even with a diagonal shift");
+    return result;
+  }
+  result.shift = *std::max_element(shifts.begin(), shifts.end());
+  p = z;
+  double rz = r.dot(z);
+  const int maxIterations = 200;
+  while (result.iterations < maxIterations && r.norm() > tolerance)
+  {
+    Hp = H.selfadjointView<Eigen::Upper>() * p;
+    const double curvature = p.dot(Hp);
+    if (!(curvature > 0.0) || !(rz > 0.0))
+    {
+      break;
+    }
+    const double alpha = rz / curvature;
+    x += alpha * p;
+    r -= alpha * Hp;
+    ++result.iterations;
+    if (!precondition(r, z, false))
+    {
+      break;
+    }
+    const double rzNext = r.dot(z);
+    p = z + (rzNext / rz) * p;
+    rz = rzNext;
+  }
+  result.success = result.iterations > 0 && x.allFinite();
+  std::ostringstream message;
+  message << "block solve: " << blocks << " blocks, " << result.iterations
+          << " conjugate-gradient iterations, relative residual " << r.norm() / b.norm();
+  log(Logger::Detail, message.str());
   return result;
 }
 

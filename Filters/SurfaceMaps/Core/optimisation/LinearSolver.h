@@ -8,6 +8,7 @@
 
 #include <memory>
 #include <string>
+#include <vector>
 
 namespace surfacemaps
 {
@@ -20,6 +21,8 @@ struct LinearSolveResult
   double shift = 0.0;
   /// Whether the symbolic analysis was (re)done for this solve.
   bool analysed = false;
+  /// Conjugate-gradient iterations (block solves only; 0 for a direct solve).
+  int iterations = 0;
 };
 
 /// Solves H x = b for a sparse symmetric positive (semi-)definite H given by
@@ -54,7 +57,27 @@ public:
     bool patternChanged,
     const Logger& log = Logger());
 
+  /// Splits the variables into blocks [offsets[k], offsets[k + 1]) (e.g. one
+  /// per sphere embedding; offsets ascending, from 0 to the number of
+  /// variables). With two or more blocks, solve() runs conjugate gradients
+  /// on the whole system, preconditioned with each diagonal block's own
+  /// Cholesky factor (regularised like a direct solve), to a relative
+  /// residual of 1e-8 or 200 iterations. Its cost is linear in the number of
+  /// blocks, where one factorisation of a system of K coupled embeddings has
+  /// dense fronts K times as wide (cubic cost). Every iterate of conjugate
+  /// gradients from 0 is a descent direction, so a capped solve still gives
+  /// Newton a usable step. Fewer than two blocks (the default): direct solves.
+  void setBlocks(std::vector<int> offsets);
+
 private:
+  LinearSolveResult solveByBlocks(const Eigen::SparseMatrix<double>& H,
+    const Eigen::VectorXd& b,
+    Eigen::VectorXd& x,
+    bool patternChanged,
+    const Logger& log);
+  /// Solves with the factor of the last successful solve (same matrix).
+  bool solveAgain(const Eigen::VectorXd& b, Eigen::VectorXd& x) const;
+
   struct Internals;
   std::unique_ptr<Internals> Impl;
 };

@@ -717,6 +717,43 @@ TEST(SurfaceMapFilter, SettingsComeFromTheEngineTable)
   }
 }
 
+// A preset sets the settings its documentation names and leaves the others;
+// the pair preset restores those settings' defaults.
+TEST(SurfaceMapFilter, PresetsSetTheirSettingsAndUndoEachOther)
+{
+  vtkNew<vtkSurfaceMapFilter> filter;
+  ASSERT_EQ(vtkSurfaceMapFilter::GetNumberOfPresets(), 2);
+  EXPECT_STREQ(vtkSurfaceMapFilter::GetPresetName(vtkSurfaceMapFilter::PRESET_POPULATION),
+    "population");
+  EXPECT_EQ(vtkSurfaceMapFilter::GetPresetName(2), nullptr);
+  const std::string doc =
+    vtkSurfaceMapFilter::GetPresetDocumentation(vtkSurfaceMapFilter::PRESET_POPULATION);
+  filter->SetMapWeight(3.0);
+  const vtkMTimeType before = filter->GetMTime();
+  filter->SetScheduleToPopulation();
+  EXPECT_GT(filter->GetMTime(), before);
+  int changed = 0;
+  for (int i = 0; i < vtkSurfaceMapFilter::GetNumberOfSettings(); ++i)
+  {
+    const std::string name = vtkSurfaceMapFilter::GetSettingName(i);
+    const bool named = doc.find(" " + name + " ") != std::string::npos;
+    const double expected = name == "MapWeight" ? 3.0 : vtkSurfaceMapFilter::GetSettingDefault(i);
+    EXPECT_EQ(filter->GetSetting(i) != expected, named) << name;
+    changed += named ? 1 : 0;
+  }
+  EXPECT_GE(changed, 3);
+  EXPECT_EQ(filter->GetTargetError(), 0.01);
+  EXPECT_EQ(filter->GetRefinementRounds(), 0);
+  filter->SetScheduleToPair();
+  for (int i = 0; i < vtkSurfaceMapFilter::GetNumberOfSettings(); ++i)
+  {
+    const std::string name = vtkSurfaceMapFilter::GetSettingName(i);
+    EXPECT_EQ(filter->GetSetting(i),
+      name == "MapWeight" ? 3.0 : vtkSurfaceMapFilter::GetSettingDefault(i))
+      << name;
+  }
+}
+
 TEST(SurfaceMapFilter, NamedSettersUseTheTable)
 {
   vtkNew<vtkSurfaceMapFilter> filter;

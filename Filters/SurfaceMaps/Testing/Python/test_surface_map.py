@@ -163,6 +163,19 @@ def test_map_surfaces_array_modes():
         surfacemaps.map_surfaces(meshes, categorical="Label")
 
 
+def test_map_surfaces_population_preset():
+    names = ("ellipsoid_coarse.stl", "limbs_coarse.vtk", "blob.off")
+    assert set(surfacemaps.presets()) == {"pair", "population"}
+    assert "RefinementRounds 0" in surfacemaps.presets()["population"]
+    common = surfacemaps.map_surfaces([data(n) for n in names], preset="population", BlockSolveInputs=3,
+                                      **SHORT)
+    fields = common[0].GetFieldData()
+    assert fields.GetArray("Bijective").GetValue(0) == 1
+    assert len({out.GetNumberOfPoints() for out in common}) == 1
+    with pytest.raises(ValueError, match="preset is one of"):
+        surfacemaps.map_surfaces([data(names[0])], preset="crowd")
+
+
 def test_map_surfaces_errors():
     with pytest.raises(surfacemaps.InputError, match=r"input 1 \(.*torus.obj\) has genus 1"):
         surfacemaps.map_surfaces([data("ellipsoid_coarse.stl"), surfacemaps.read_mesh(data("bad/torus.obj"))])
