@@ -56,8 +56,8 @@ const char* const MapHelpIntro =
   "                      (common_0 -> common_i) and of the exact map (input 0 ->\n"
   "                      mapped_i): symmetric Dirichlet, area below distortion\n"
   "                      1.5 and 2, max distortion, Hausdorff distance per input\n"
-  "                      (% of the bounding-box diagonal), min and mean minimum\n"
-  "                      angles\n"
+  "                      (% of the bounding-box diagonal; input 0's with the\n"
+  "                      first pair only), min and mean minimum angles\n"
   "\n"
   "  --output-dir DIR     where to write (created if missing; checked for\n"
   "                       writing before computing)\n"
@@ -423,7 +423,8 @@ std::string writeOutputs(vtkSurfaceMapFilter* map,
               i,
               map->GetOutput(0),
               map->GetOutput(i),
-              withSourceOriginal ? inputs[0].Get() : nullptr,
+              // Input 0's distance to T_0 is the same for every pair: measured once.
+              withSourceOriginal && i <= 1 ? inputs[0].Get() : nullptr,
               inputs[i]);
   }
   json << "\n  ]";
