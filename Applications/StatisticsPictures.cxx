@@ -70,8 +70,10 @@ vtkSmartPointer<vtkDoubleArray> column(const char* name, const std::vector<doubl
   return array;
 }
 
-// A chart of one plot (x, y) with axis titles, rendered to `path`.
+// A chart of one plot (x, y) with axis titles, rendered to `path`; with
+// `integerX`, one tick per x value (the x are 1, 2, ...).
 void writeChart(int type,
+  bool integerX,
   const std::vector<double>& x,
   const std::vector<double>& y,
   const char* xTitle,
@@ -93,6 +95,18 @@ void writeChart(int type,
   plot->SetInputData(table, 0, 1);
   plot->SetColor(51, 102, 178, 255);
   chart->GetAxis(vtkAxis::BOTTOM)->SetTitle(xTitle);
+  if (integerX && !x.empty())
+  {
+    vtkAxis* axis = chart->GetAxis(vtkAxis::BOTTOM);
+    vtkNew<vtkDoubleArray> ticks;
+    for (double value : x)
+    {
+      ticks->InsertNextValue(value);
+    }
+    axis->SetCustomTickPositions(ticks);
+    axis->SetBehavior(vtkAxis::FIXED);
+    axis->SetRange(x.front() - 0.6, x.back() + 0.6);
+  }
   chart->GetAxis(vtkAxis::LEFT)->SetTitle(yTitle);
   writeWindow(view->GetRenderWindow(), path);
 }
@@ -107,7 +121,7 @@ void writeExplainedVariancePicture(const std::vector<double>& fractions, const s
     modes.push_back(m + 1.0);
     percent.push_back(100.0 * fractions[m]);
   }
-  writeChart(vtkChart::BAR, modes, percent, "mode", "explained variance (%)",
+  writeChart(vtkChart::BAR, true, modes, percent, "mode", "explained variance (%)",
     "Explained variance per mode", path);
 }
 
@@ -122,12 +136,12 @@ void writeScoresPicture(const std::vector<double>& scores, int modes, const std:
   }
   if (modes >= 2)
   {
-    writeChart(vtkChart::POINTS, x, y, "score on mode 1", "score on mode 2",
+    writeChart(vtkChart::POINTS, false, x, y, "score on mode 1", "score on mode 2",
       "Specimens on the first two modes", path);
   }
   else
   {
-    writeChart(vtkChart::POINTS, x, y, "specimen", "score on mode 1", "Specimens on mode 1", path);
+    writeChart(vtkChart::POINTS, false, x, y, "specimen", "score on mode 1", "Specimens on mode 1", path);
   }
 }
 
@@ -150,6 +164,7 @@ void writeSpreadPicture(vtkPolyData* mean, const std::string& path)
   mapper->SetLookupTable(colours);
   mapper->SetScalarRange(range);
   mapper->ScalarVisibilityOn();
+  mapper->InterpolateScalarsBeforeMappingOn();
   vtkNew<vtkActor> actor;
   actor->SetMapper(mapper);
   vtkNew<vtkScalarBarActor> bar;
