@@ -29,8 +29,8 @@
  * poses cancel out (e.g. a surface and its copy turned by half a turn, equal
  * weights). A single input of positive weight is the mean as given. Inputs of
  * weight 0 are aligned onto the mean but do not move it. Permuting the inputs
- * (with their weights) changes the mean by rounding only (far below 1e-9 of
- * the bounding-box diagonal).
+ * (with their weights) changes the mean only by rounding and the alignment's
+ * convergence tolerance (far below 1e-9 of the bounding-box diagonal).
  *
  * vtkProcrustesAlignmentFilter is not used: it weighs every point alike (not
  * by area, so a finely meshed region would count more), has no input
@@ -52,10 +52,10 @@
  *   R_i first;
  * - categorical arrays (by default the integer ones: labels, region ids) are
  *   input 0's values, even where other inputs differ and whatever input 0's
- *   weight: a mean of labels is no label (the one place where the input order
- *   matters). SetArrayTransferMode chooses per array (see
- *   vtkSurfaceArrayTransferAlgorithm);
- * - "Landmarks" is input 0's;
+ *   weight: a mean of labels is no label. SetArrayTransferMode chooses per
+ *   array (see vtkSurfaceArrayTransferAlgorithm);
+ * - "Landmarks" is input 0's (with the categorical arrays, the only output
+ *   that depends on the input order);
  * - "SourceCellId", "SourceBarycentric" and "SpherePosition" (where a vertex
  *   lies on one input and on its sphere) and the active normals are dropped
  *   (recompute normals with vtkPolyDataNormals).
