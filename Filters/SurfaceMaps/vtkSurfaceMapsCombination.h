@@ -4,7 +4,9 @@
  *
  * Shared by vtkSurfaceAverage (weighted mean after alignment) and
  * vtkSurfaceSequenceInterpolator (linear or cubic Hermite blend of keyframes):
- * both compute sum_i c_i x_i over N meshes that share their cells.
+ * both compute sum_i c_i x_i over N meshes that share their cells. The
+ * connectivity check, the meshes as engine shapes and the alignment's field
+ * data also serve vtkSurfaceShapeStatistics.
  *
  * Point-data rules (the same for both filters):
  * - "SourceCellId", "SourceBarycentric", "SpherePosition" and the active
