@@ -180,6 +180,7 @@ void writeSpreadPicture(vtkPolyData* mean, const std::string& path)
   renderer->ResetCamera();
   renderer->GetActiveCamera()->Azimuth(30.0);
   renderer->GetActiveCamera()->Elevation(20.0);
+  renderer->GetActiveCamera()->Zoom(1.3); // the shape, not its bounding sphere, fills the picture
   renderer->ResetCameraClippingRange();
   vtkNew<vtkRenderWindow> window;
   window->SetOffScreenRendering(1);
