@@ -16,6 +16,8 @@
 #include "vtkVariant.h"
 #include "vtkXMLPolyDataWriter.h"
 
+#include "vtk_jsoncpp.h"
+
 #include <fcntl.h>
 #include <sys/stat.h>
 #include <unistd.h>
@@ -190,6 +192,43 @@ vtkSmartPointer<vtkPolyData> readValidMesh(const std::string& path, const std::s
     return nullptr;
   }
   return mesh;
+}
+
+std::vector<std::string> mapReportInputs(const std::string& report)
+{
+  std::ifstream in(report);
+  if (!in)
+  {
+    throw std::runtime_error(
+      report + " is missing: it names the map's inputs (or give them with --inputs A B ...)");
+  }
+  Json::CharReaderBuilder builder;
+  Json::Value root;
+  std::string problems;
+  if (!Json::parseFromStream(builder, in, &root, &problems))
+  {
+    while (!problems.empty() && (problems.back() == '\n' || problems.back() == ' '))
+    {
+      problems.pop_back();
+    }
+    throw std::runtime_error(report + " is not valid JSON: " + problems);
+  }
+  const Json::Value& inputs = root["inputs"];
+  std::vector<std::string> files;
+  for (Json::ArrayIndex i = 0; inputs.isArray() && i < inputs.size(); ++i)
+  {
+    if (!inputs[i]["file"].isString())
+    {
+      throw std::runtime_error(
+        report + ": inputs[" + std::to_string(i) + "] has no \"file\" (give --inputs A B ...)");
+    }
+    files.push_back(inputs[i]["file"].asString());
+  }
+  if (files.empty())
+  {
+    throw std::runtime_error(report + " lists no inputs (give --inputs A B ...)");
+  }
+  return files;
 }
 
 std::string jsonNumber(double value)

@@ -94,6 +94,11 @@ vtkSmartPointer<vtkPolyData> readMesh(const std::string& path, const std::string
 /// validates it; on failure prints the reasons and returns null.
 vtkSmartPointer<vtkPolyData> readValidMesh(const std::string& path, const std::string& landmarks);
 
+/// The input files a map directory's report.json (`report`) names, in
+/// order. Throws std::runtime_error naming the file and what is wrong with it
+/// (missing, not JSON, no inputs).
+std::vector<std::string> mapReportInputs(const std::string& report);
+
 /// True if `path` is a regular file (false on any error).
 bool isFile(const std::string& path);
 

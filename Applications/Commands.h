@@ -39,6 +39,11 @@ extern const char* const EvaluateHelp;
 int runMap(const std::vector<std::string>& args);
 extern const char* const MapHelp;
 
+/// `surfacemap statistics MAPDIR|MESH... --output-dir DIR [--modes K] [--align MODE]
+/// [--frames F] [--pictures]`
+int runStatistics(const std::vector<std::string>& args);
+extern const char* const StatisticsHelp;
+
 /// `surfacemap transfer MAPDIR --from I --to J [--arrays NAME ...] -o OUT.vtp`
 int runTransfer(const std::vector<std::string>& args);
 extern const char* const TransferHelp;

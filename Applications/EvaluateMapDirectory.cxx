@@ -8,10 +8,7 @@
 #include "vtkPolyData.h"
 #include "vtkSmartPointer.h"
 
-#include "vtk_jsoncpp.h"
-
 #include <cstdio>
-#include <fstream>
 #include <sstream>
 #include <stdexcept>
 
@@ -65,45 +62,6 @@ int countInputs(const std::string& directory)
   return n;
 }
 
-// The input files `report.json` names, in order. Throws std::runtime_error
-// naming the file and what is wrong with it.
-std::vector<std::string> reportedInputs(const std::string& report)
-{
-  std::ifstream in(report);
-  if (!in)
-  {
-    throw std::runtime_error(
-      report + " is missing: it names the map's inputs (or give them with --inputs A B ...)");
-  }
-  Json::CharReaderBuilder builder;
-  Json::Value root;
-  std::string problems;
-  if (!Json::parseFromStream(builder, in, &root, &problems))
-  {
-    while (!problems.empty() && (problems.back() == '\n' || problems.back() == ' '))
-    {
-      problems.pop_back();
-    }
-    throw std::runtime_error(report + " is not valid JSON: " + problems);
-  }
-  const Json::Value& inputs = root["inputs"];
-  std::vector<std::string> files;
-  for (Json::ArrayIndex i = 0; inputs.isArray() && i < inputs.size(); ++i)
-  {
-    if (!inputs[i]["file"].isString())
-    {
-      throw std::runtime_error(
-        report + ": inputs[" + std::to_string(i) + "] has no \"file\" (give --inputs A B ...)");
-    }
-    files.push_back(inputs[i]["file"].asString());
-  }
-  if (files.empty())
-  {
-    throw std::runtime_error(report + " lists no inputs (give --inputs A B ...)");
-  }
-  return files;
-}
-
 // The map's n input files: those given, or those report.json names. Throws
 // std::runtime_error for a report that is missing, invalid or of another
 // count, UsageError for --inputs of another count.
@@ -111,7 +69,7 @@ void resolveInputs(const std::string& directory, int n, std::vector<std::string>
 {
   if (inputFiles.empty())
   {
-    inputFiles = reportedInputs(directory + "/report.json");
+    inputFiles = mapReportInputs(directory + "/report.json");
     if (static_cast<int>(inputFiles.size()) != n)
     {
       throw std::runtime_error(directory + "/report.json lists " +

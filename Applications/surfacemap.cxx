@@ -51,6 +51,10 @@ const Command Commands[] = {
     "bijective map between surfaces through a common triangulation",
     &surfacemap::runMap,
     &surfacemap::MapHelp },
+  { "statistics",
+    "mean shape, modes of variation and spread of surfaces with one connectivity",
+    &surfacemap::runStatistics,
+    &surfacemap::StatisticsHelp },
   { "transfer",
     "carry point data and texture coordinates from one input of a map to another",
     &surfacemap::runTransfer,
@@ -64,7 +68,7 @@ void printUsage(std::ostream& os)
         "commands:\n";
   for (const Command& c : Commands)
   {
-    os << "  " << c.Name << std::string(10 - std::strlen(c.Name), ' ') << c.Summary << "\n";
+    os << "  " << c.Name << std::string(12 - std::strlen(c.Name), ' ') << c.Summary << "\n";
   }
   os << "\noptions:\n"
         "  -h, --help   show this help, or a command's help after the command\n"

@@ -8,16 +8,34 @@
  * own coordinates): the mean shape of, e.g., the organ surfaces of one
  * developmental stage.
  *
- * Each input i is first aligned onto input 0 (AlignMode): the similarity
- * x -> s_i R_i x + t_i (R_i a rotation, never a reflection; s_i = 1 unless
- * ALIGN_SIMILARITY) minimising the area-weighted sum of squared distances
- * sum_v A_v |s_i R_i x_iv + t_i - x_0v|^2 over all vertices v, with A_v a
- * third of the area of the triangles around v on input 0 (uniform weights
- * when input 0 has no area). This is the closed-form solution of Umeyama
- * (1991) via a 3x3 SVD. The output points are then the weighted mean
- * sum_i w_i (s_i R_i x_iv + t_i) with the input weights w_i normalised to
- * sum 1, in input 0's frame. Input 0 is the reference frame even if its
- * weight is 0.
+ * The mean does not depend on the order of the inputs: generalized
+ * Procrustes alignment (Gower 1975) aligns every input onto the current
+ * mean, recomputes the mean and repeats until it stops moving (AlignMode).
+ * Input i's alignment is the similarity x -> s_i R_i x + t_i (R_i a rotation,
+ * never a reflection; s_i = 1 unless ALIGN_SIMILARITY) minimising the
+ * area-weighted sum of squared distances sum_v A_v |s_i R_i x_iv + t_i - m_v|^2
+ * to the mean m, with A_v a third of the area of the triangles around v,
+ * averaged over the inputs with their weights (uniform when the inputs have
+ * no area): the closed form of Umeyama (1991) via a 3x3 SVD. The output
+ * points are the weighted mean m_v = sum_i w_i (s_i R_i x_iv + t_i) with the
+ * input weights w_i normalised to sum 1.
+ *
+ * The frame of the mean is the same whatever the input order: with
+ * ALIGN_SIMILARITY its size (area-weighted RMS distance to its centroid) is
+ * the weighted mean of the inputs' sizes; it is placed by the rigid motion
+ * that fits it best to the inputs as given (least sum_i w_i sum_v A_v
+ * |m_v - x_iv|^2), so it lies where the inputs lie (for inputs already in one
+ * frame, in that frame). That placement is ill-defined only when the inputs'
+ * poses cancel out (e.g. a surface and its copy turned by half a turn, equal
+ * weights). A single input of positive weight is the mean as given. Inputs of
+ * weight 0 are aligned onto the mean but do not move it. Permuting the inputs
+ * (with their weights) changes the mean only by rounding and the alignment's
+ * convergence tolerance (far below 1e-9 of the bounding-box diagonal).
+ *
+ * vtkProcrustesAlignmentFilter is not used: it weighs every point alike (not
+ * by area, so a finely meshed region would count more), has no input
+ * weights, keeps the first input's frame and stops after 5 rounds at an
+ * absolute tolerance, which leaves the result dependent on the input order.
  *
  * Inputs: port 0 is repeatable; input i is the (i+1)-th connection. Every
  * input must have input 0's number of points and exactly its cells (same
@@ -36,14 +54,16 @@
  *   input 0's values, even where other inputs differ and whatever input 0's
  *   weight: a mean of labels is no label. SetArrayTransferMode chooses per
  *   array (see vtkSurfaceArrayTransferAlgorithm);
- * - "Landmarks" is input 0's;
+ * - "Landmarks" is input 0's (with the categorical arrays, the only output
+ *   that depends on the input order);
  * - "SourceCellId", "SourceBarycentric" and "SpherePosition" (where a vertex
  *   lies on one input and on its sphere) and the active normals are dropped
  *   (recompute normals with vtkPolyDataNormals).
  * Cell data is not passed. Field data: "AlignmentRMS" (one value per input:
- * the area-weighted RMS distance between the aligned input and input 0, in
- * input 0's units; 0 for input 0), "AlignmentTransform" (one 12-component
- * tuple per input: the 3x4 matrix [s_i R_i | t_i], row by row),
+ * the area-weighted RMS distance sqrt(sum_v A_v |aligned x_iv - m_v|^2)
+ * between the aligned input and the mean, in the output's units),
+ * "AlignmentTransform" (one 12-component tuple per input: the 3x4 matrix
+ * [s_i R_i | t_i] taking input i into the output's frame, row by row),
  * "AverageWeight" (the normalised weights) and, with ALIGN_SIMILARITY,
  * "AlignmentScale" (s_i per input).
  *
@@ -52,12 +72,13 @@
  * set during the update (e.g. from a ProgressEvent observer) leaves the output
  * empty without an error.
  *
- * @warning Linear in N times the number of points; single-threaded (about a
- * millisecond per 10 000 vertices and input). Progress is reported once per
- * input, and AbortExecute is honoured there.
+ * @warning Linear in N times the number of points per round of the alignment;
+ * a few rounds for similar shapes, up to 200 (single-threaded, about a
+ * millisecond per 10 000 vertices, input and round). Progress is reported
+ * once per input and round, and AbortExecute is honoured there.
  *
- * @sa vtkSurfaceMapFilter vtkSurfaceSequenceInterpolator vtkProcrustesAlignmentFilter
- * vtkSurfaceArrayTransferAlgorithm
+ * @sa vtkSurfaceMapFilter vtkSurfaceSequenceInterpolator vtkSurfaceShapeStatistics
+ * vtkProcrustesAlignmentFilter vtkSurfaceArrayTransferAlgorithm
  */
 #ifndef vtkSurfaceAverage_h
 #define vtkSurfaceAverage_h
@@ -74,7 +95,7 @@ public:
   vtkTypeMacro(vtkSurfaceAverage, vtkSurfaceArrayTransferAlgorithm);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
-  /** How each input is aligned onto input 0 before averaging. */
+  /** How each input is aligned onto the mean. */
   enum AlignModes
   {
     ALIGN_NONE = 0,      ///< as given
@@ -85,8 +106,8 @@ public:
   ///@{
   /**
    * ALIGN_NONE, ALIGN_RIGID (default) or ALIGN_SIMILARITY: the least-squares
-   * (area-weighted) transformation of each input onto input 0 applied before
-   * averaging. Reflections are never used.
+   * (area-weighted) transformation of each input onto the mean, iterated
+   * with the mean (generalized Procrustes). Reflections are never used.
    */
   vtkSetClampMacro(AlignMode, int, ALIGN_NONE, ALIGN_SIMILARITY);
   vtkGetMacro(AlignMode, int);

@@ -5,6 +5,7 @@
 #include "vtkCellArray.h"
 #include "vtkDataArray.h"
 #include "vtkDataSetAttributes.h"
+#include "vtkDoubleArray.h"
 #include "vtkFieldData.h"
 #include "vtkIdList.h"
 #include "vtkNew.h"
@@ -392,5 +393,91 @@ void vtkSurfaceMapsCombination::CheckPresent(const std::vector<vtkPolyData*>& in
       throw std::invalid_argument(
         std::string(what) + " " + std::to_string(i) + " is not a vtkPolyData");
     }
+  }
+}
+
+surfacemaps::ShapePoints vtkSurfaceMapsCombination::Points(vtkPolyData* mesh)
+{
+  surfacemaps::ShapePoints points(mesh->GetNumberOfPoints());
+  for (vtkIdType v = 0; v < mesh->GetNumberOfPoints(); ++v)
+  {
+    mesh->GetPoint(v, points[v].data());
+  }
+  return points;
+}
+
+std::vector<std::array<int, 3>> vtkSurfaceMapsCombination::Triangles(vtkPolyData* mesh)
+{
+  std::vector<std::array<int, 3>> triangles;
+  vtkCellArray* polys = mesh->GetPolys();
+  if (!polys)
+  {
+    return triangles;
+  }
+  vtkNew<vtkIdList> ids;
+  for (vtkIdType c = 0; c < polys->GetNumberOfCells(); ++c)
+  {
+    polys->GetCellAtId(c, ids);
+    for (vtkIdType k = 1; k + 1 < ids->GetNumberOfIds(); ++k)
+    {
+      triangles.push_back({ static_cast<int>(ids->GetId(0)),
+        static_cast<int>(ids->GetId(k)),
+        static_cast<int>(ids->GetId(k + 1)) });
+    }
+  }
+  return triangles;
+}
+
+void vtkSurfaceMapsCombination::AddField(vtkPolyData* output,
+  const char* name,
+  int components,
+  const std::vector<double>& values)
+{
+  auto array = vtkSmartPointer<vtkDoubleArray>::New();
+  array->SetName(name);
+  array->SetNumberOfComponents(components);
+  array->SetNumberOfTuples(static_cast<vtkIdType>(values.size()) / components);
+  for (std::size_t k = 0; k < values.size(); ++k)
+  {
+    array->SetValue(static_cast<vtkIdType>(k), values[k]);
+  }
+  output->GetFieldData()->AddArray(array);
+}
+
+void vtkSurfaceMapsCombination::AddAlignmentFields(vtkPolyData* output,
+  const surfacemaps::ProcrustesResult& alignment,
+  bool withScale)
+{
+  std::vector<double> matrices, scales;
+  for (const Similarity& s : alignment.transforms)
+  {
+    for (int r = 0; r < 3; ++r)
+    {
+      for (int c = 0; c < 3; ++c)
+      {
+        matrices.push_back(s.Scale * s.Rotation(r, c));
+      }
+      matrices.push_back(s.Translation(r));
+    }
+    scales.push_back(s.Scale);
+  }
+  AddField(output, "AlignmentRMS", 1, alignment.rms);
+  AddField(output, "AlignmentTransform", 12, matrices);
+  if (withScale)
+  {
+    AddField(output, "AlignmentScale", 1, scales);
+  }
+}
+
+surfacemaps::AlignmentKind vtkSurfaceMapsCombination::AlignmentOf(int alignMode)
+{
+  switch (alignMode)
+  {
+    case 0:
+      return surfacemaps::AlignmentKind::None;
+    case 2:
+      return surfacemaps::AlignmentKind::Similarity;
+    default:
+      return surfacemaps::AlignmentKind::Rigid;
   }
 }

@@ -4,7 +4,9 @@
  *
  * Shared by vtkSurfaceAverage (weighted mean after alignment) and
  * vtkSurfaceSequenceInterpolator (linear or cubic Hermite blend of keyframes):
- * both compute sum_i c_i x_i over N meshes that share their cells.
+ * both compute sum_i c_i x_i over N meshes that share their cells. The
+ * connectivity check, the meshes as engine shapes and the alignment's field
+ * data also serve vtkSurfaceShapeStatistics.
  *
  * Point-data rules (the same for both filters):
  * - "SourceCellId", "SourceBarycentric", "SpherePosition" and the active
@@ -29,10 +31,13 @@
 #ifndef vtkSurfaceMapsCombination_h
 #define vtkSurfaceMapsCombination_h
 
+#include "statistics/Procrustes.h"
+
 #include <Eigen/Core>
 
 #include "vtkIOStream.h"
 
+#include <array>
 #include <map>
 #include <string>
 #include <vector>
@@ -66,12 +71,33 @@ public:
   };
 
   /// x -> Scale * Rotation * x + Translation.
-  struct Similarity
-  {
-    Eigen::Matrix3d Rotation = Eigen::Matrix3d::Identity();
-    double Scale = 1.0;
-    Eigen::Vector3d Translation = Eigen::Vector3d::Zero();
-  };
+  using Similarity = surfacemaps::Similarity;
+
+  /// The points of `mesh`, vertex by vertex.
+  static surfacemaps::ShapePoints Points(vtkPolyData* mesh);
+
+  /// The polygons of `mesh` as triangles (fans).
+  static std::vector<std::array<int, 3>> Triangles(vtkPolyData* mesh);
+
+  /// Adds the generalized Procrustes alignment as field data: "AlignmentRMS"
+  /// (one value per input), "AlignmentTransform" (one 12-component tuple per
+  /// input: the 3x4 matrix [s_i R_i | t_i], row by row) and, when
+  /// `withScale`, "AlignmentScale" (s_i).
+  static void AddAlignmentFields(vtkPolyData* output,
+    const surfacemaps::ProcrustesResult& alignment,
+    bool withScale);
+
+  /// Adds the double array `name` with `values` (tuples of `components`) to
+  /// the field data of `output`.
+  static void AddField(vtkPolyData* output,
+    const char* name,
+    int components,
+    const std::vector<double>& values);
+
+  /// The engine's alignment for ALIGN_NONE (0), ALIGN_RIGID (1) or
+  /// ALIGN_SIMILARITY (2), the modes of vtkSurfaceAverage and
+  /// vtkSurfaceShapeStatistics.
+  static surfacemaps::AlignmentKind AlignmentOf(int alignMode);
 
   /// "<kind> <index>", followed by " (<FileName>)" when the mesh carries one.
   static std::string Name(vtkPolyData* mesh, const std::string& kind, int index);

@@ -3,6 +3,7 @@
 #include "vtkSurfaceMapsConversion.h"
 
 #include "mesh/Primitives.h"
+#include "statistics/Procrustes.h"
 
 #include "vtkCallbackCommand.h"
 #include "vtkCellArray.h"
@@ -114,6 +115,66 @@ vtkSmartPointer<Array> pointArray(vtkPolyData* mesh,
   return array;
 }
 
+// The largest distance between `b` and `a` moved onto it by the best
+// similarity (rigid unless `withScale`); `scale` receives its scale.
+double distanceUpToMotion(vtkPolyData* a, vtkPolyData* b, bool withScale, double* scale = nullptr)
+{
+  const surfacemaps::ShapePoints x = vtkSurfaceMapsConversion::ToPolygonMesh(a).points;
+  const surfacemaps::ShapePoints y = vtkSurfaceMapsConversion::ToPolygonMesh(b).points;
+  const std::vector<double> w(x.size(), 1.0 / x.size());
+  const surfacemaps::Similarity T = surfacemaps::fitSimilarity(x, y, w, withScale);
+  if (scale)
+  {
+    *scale = T.Scale;
+  }
+  double largest = 0.0;
+  for (std::size_t v = 0; v < x.size(); ++v)
+  {
+    largest = std::max(largest, (T.apply(x[v]) - y[v]).norm());
+  }
+  return largest;
+}
+
+// Input i's "AlignmentTransform" from the output's field data.
+surfacemaps::Similarity alignmentOf(vtkPolyData* output, int i)
+{
+  double m[12];
+  output->GetFieldData()->GetArray("AlignmentTransform")->GetTuple(i, m);
+  surfacemaps::Similarity T;
+  for (int r = 0; r < 3; ++r)
+  {
+    for (int c = 0; c < 3; ++c)
+    {
+      T.Rotation(r, c) = m[4 * r + c];
+    }
+    T.Translation(r) = m[4 * r + 3];
+  }
+  return T;
+}
+
+// The largest distance between input i moved by its AlignmentTransform and the output.
+double alignedDistance(vtkPolyData* input, vtkPolyData* output, int i)
+{
+  const surfacemaps::Similarity T = alignmentOf(output, i);
+  double largest = 0.0;
+  for (vtkIdType v = 0; v < input->GetNumberOfPoints(); ++v)
+  {
+    Eigen::Vector3d x, y;
+    input->GetPoint(v, x.data());
+    output->GetPoint(v, y.data());
+    largest = std::max(largest, (T.apply(x) - y).norm());
+  }
+  return largest;
+}
+
+double diagonal(vtkPolyData* mesh)
+{
+  double bounds[6];
+  mesh->GetBounds(bounds);
+  return Eigen::Vector3d(bounds[1] - bounds[0], bounds[3] - bounds[2], bounds[5] - bounds[4])
+    .norm();
+}
+
 bool contains(const std::string& text, const std::string& part)
 {
   return text.find(part) != std::string::npos;
@@ -126,50 +187,62 @@ TEST(SurfaceAverage, RigidCopiesGiveTheMeshBack)
   vtkSmartPointer<vtkPolyData> mesh = shape();
   vtkNew<vtkSurfaceAverage> average;
   EXPECT_EQ(average->GetAlignMode(), vtkSurfaceAverage::ALIGN_RIGID);
-  average->AddInputData(mesh);
+  std::vector<vtkSmartPointer<vtkPolyData>> inputs{ mesh };
   const Eigen::Matrix3d R1 = rotation(2.0, Eigen::Vector3d(1, 2, 3));
   const Eigen::Vector3d t1(5.0, -3.0, 0.5);
-  average->AddInputData(moved(mesh, R1, t1));
-  average->AddInputData(
+  inputs.push_back(moved(mesh, R1, t1));
+  inputs.push_back(
     moved(mesh, rotation(-1.0, Eigen::Vector3d(0, 1, 0)), Eigen::Vector3d(1, 1, 1)));
   // A half turn: the determinant test must not mistake it for a reflection.
-  average->AddInputData(
-    moved(mesh, rotation(M_PI, Eigen::Vector3d(0, 0, 1)), Eigen::Vector3d::Zero()));
+  inputs.push_back(moved(mesh, rotation(M_PI, Eigen::Vector3d(0, 0, 1)), Eigen::Vector3d::Zero()));
+  for (vtkPolyData* input : inputs)
+  {
+    average->AddInputData(input);
+  }
   average->Update();
   vtkPolyData* output = average->GetOutput();
   ASSERT_EQ(output->GetNumberOfPoints(), mesh->GetNumberOfPoints());
-  EXPECT_LT(largestDistance(output, mesh), 1e-9);
   EXPECT_EQ(output->GetNumberOfPolys(), mesh->GetNumberOfPolys());
+  // The mesh again, up to a rigid motion (the frame is the mean's own).
+  EXPECT_LT(distanceUpToMotion(mesh, output, false), 1e-9);
 
   vtkDataArray* rms = output->GetFieldData()->GetArray("AlignmentRMS");
   ASSERT_NE(rms, nullptr);
   ASSERT_EQ(rms->GetNumberOfTuples(), 4);
-  for (vtkIdType i = 0; i < 4; ++i)
+  ASSERT_EQ(output->GetFieldData()->GetArray("AlignmentTransform")->GetNumberOfComponents(), 12);
+  for (int i = 0; i < 4; ++i)
   {
     EXPECT_LT(rms->GetTuple1(i), 1e-9);
+    // Each transform takes its input onto the mean.
+    EXPECT_LT(alignedDistance(inputs[i], output, i), 1e-9) << i;
   }
   EXPECT_EQ(output->GetFieldData()->GetArray("AlignmentScale"), nullptr);
-  // Input 1's transform undoes R1, t1.
-  vtkDataArray* transforms = output->GetFieldData()->GetArray("AlignmentTransform");
-  ASSERT_NE(transforms, nullptr);
-  ASSERT_EQ(transforms->GetNumberOfComponents(), 12);
-  double m[12];
-  transforms->GetTuple(1, m);
-  const Eigen::Matrix3d inverse = R1.transpose();
-  const Eigen::Vector3d back = -R1.transpose() * t1;
-  for (int r = 0; r < 3; ++r)
+  // Input 1's transform undoes R1, t1 relative to input 0's.
+  const surfacemaps::Similarity T0 = alignmentOf(output, 0), T1 = alignmentOf(output, 1);
+  EXPECT_LT((T1.Rotation * R1 - T0.Rotation).norm(), 1e-12);
+  EXPECT_LT((T1.Rotation * t1 + T1.Translation - T0.Translation).norm(), 1e-12);
+
+  // Placed where the inputs are: its area-weighted centroid is the mean of theirs.
+  const surfacemaps::PolygonMesh base = vtkSurfaceMapsConversion::ToPolygonMesh(mesh);
+  const std::vector<double> areas = surfacemaps::vertexAreaWeights(base.points, base.triangles());
+  Eigen::Vector3d centroids = Eigen::Vector3d::Zero(), centroid = Eigen::Vector3d::Zero();
+  for (vtkIdType v = 0; v < mesh->GetNumberOfPoints(); ++v)
   {
-    for (int c = 0; c < 3; ++c)
+    Eigen::Vector3d x;
+    for (vtkPolyData* input : inputs)
     {
-      EXPECT_NEAR(m[4 * r + c], inverse(r, c), 1e-12);
+      input->GetPoint(v, x.data());
+      centroids += areas[v] * x;
     }
-    EXPECT_NEAR(m[4 * r + 3], back(r), 1e-12);
+    output->GetPoint(v, x.data());
+    centroid += areas[v] * x;
   }
+  EXPECT_LT((centroids / 4.0 - centroid).norm(), 1e-9);
 
   // Without alignment the copies do not average to the mesh.
   average->SetAlignModeToNone();
   average->Update();
-  EXPECT_GT(largestDistance(average->GetOutput(), mesh), 0.1);
+  EXPECT_GT(distanceUpToMotion(mesh, average->GetOutput(), false), 0.1);
 }
 
 TEST(SurfaceAverage, SimilarityAlsoUndoesTheScale)
@@ -184,18 +257,72 @@ TEST(SurfaceAverage, SimilarityAlsoUndoesTheScale)
   average->SetAlignModeToSimilarity();
   EXPECT_EQ(average->GetAlignMode(), vtkSurfaceAverage::ALIGN_SIMILARITY);
   average->Update();
-  EXPECT_LT(largestDistance(average->GetOutput(), mesh), 1e-9);
-  vtkDataArray* scale = average->GetOutput()->GetFieldData()->GetArray("AlignmentScale");
-  ASSERT_NE(scale, nullptr);
-  EXPECT_NEAR(scale->GetTuple1(0), 1.0, 1e-12);
-  EXPECT_NEAR(scale->GetTuple1(1), 2.0, 1e-12);
-  EXPECT_NEAR(scale->GetTuple1(2), 1.0 / 3.0, 1e-12);
+  // The mesh at the mean size of the inputs, (1 + 0.5 + 3) / 3.
+  double scale = 0.0;
+  EXPECT_LT(distanceUpToMotion(mesh, average->GetOutput(), true, &scale), 1e-9);
+  EXPECT_NEAR(scale, 1.5, 1e-12);
+  vtkDataArray* scales = average->GetOutput()->GetFieldData()->GetArray("AlignmentScale");
+  ASSERT_NE(scales, nullptr);
+  EXPECT_NEAR(scales->GetTuple1(0), 1.5, 1e-12);
+  EXPECT_NEAR(scales->GetTuple1(1), 3.0, 1e-12);
+  EXPECT_NEAR(scales->GetTuple1(2), 0.5, 1e-12);
 
-  // Rigid alignment keeps the sizes: the mean is not the mesh.
+  // Rigid alignment keeps the sizes: the inputs do not fit the mean.
   average->SetAlignModeToRigid();
   average->Update();
-  EXPECT_GT(largestDistance(average->GetOutput(), mesh), 0.05);
   EXPECT_GT(average->GetOutput()->GetFieldData()->GetArray("AlignmentRMS")->GetTuple1(1), 0.01);
+}
+
+// Five different shapes in different poses, with weights: the mean must not
+// depend on their order (the alignment onto input 0 it replaces gave means
+// several % of the diagonal apart).
+TEST(SurfaceAverage, PermutingTheInputsKeepsTheMean)
+{
+  std::vector<vtkSmartPointer<vtkPolyData>> inputs;
+  const double weights[5] = { 1.0, 2.0, 0.5, 1.5, 1.0 };
+  for (int i = 0; i < 5; ++i)
+  {
+    vtkSmartPointer<vtkPolyData> s = shape(0.1 + 0.15 * i);
+    for (vtkIdType v = 0; v < s->GetNumberOfPoints(); ++v)
+    {
+      Eigen::Vector3d x;
+      s->GetPoint(v, x.data());
+      x.y() *= 1.0 + 0.1 * (i - 2) * x.x(); // a different taper on each
+      s->GetPoints()->SetPoint(v, x.data());
+    }
+    inputs.push_back(moved(s,
+      rotation(0.3 + 0.25 * i, Eigen::Vector3d(1.0, i - 2.0, 0.5 * i)),
+      Eigen::Vector3d(0.2 * i, -0.1 * i, 0.3),
+      1.0 + 0.1 * i));
+  }
+  const int order[5] = { 3, 0, 4, 1, 2 };
+  for (int mode : { vtkSurfaceAverage::ALIGN_RIGID, vtkSurfaceAverage::ALIGN_SIMILARITY })
+  {
+    vtkNew<vtkSurfaceAverage> forward, permuted;
+    forward->SetAlignMode(mode);
+    permuted->SetAlignMode(mode);
+    for (int k = 0; k < 5; ++k)
+    {
+      forward->AddInputData(inputs[k]);
+      forward->SetInputWeight(k, weights[k]);
+      permuted->AddInputData(inputs[order[k]]);
+      permuted->SetInputWeight(k, weights[order[k]]);
+    }
+    forward->Update();
+    permuted->Update();
+    vtkPolyData* a = forward->GetOutput();
+    vtkPolyData* b = permuted->GetOutput();
+    ASSERT_EQ(a->GetNumberOfPoints(), inputs[0]->GetNumberOfPoints());
+    EXPECT_LT(largestDistance(a, b), 1e-9 * diagonal(a)) << mode;
+    vtkDataArray* rmsA = a->GetFieldData()->GetArray("AlignmentRMS");
+    vtkDataArray* rmsB = b->GetFieldData()->GetArray("AlignmentRMS");
+    for (int k = 0; k < 5; ++k)
+    {
+      EXPECT_GT(rmsA->GetTuple1(order[k]), 1e-3); // the shapes differ
+      EXPECT_NEAR(rmsA->GetTuple1(order[k]), rmsB->GetTuple1(k), 1e-9 * diagonal(a));
+      EXPECT_LT(alignedDistance(inputs[order[k]], b, k), 0.5 * diagonal(a));
+    }
+  }
 }
 
 TEST(SurfaceAverage, WeightsAreNormalisedAndZeroIgnoresAnInput)
@@ -362,6 +489,8 @@ TEST(SurfaceAverage, PointArraysFollowTheRules)
   average->AddInputData(c);
   average->Update();
   vtkPointData* pd = average->GetOutput()->GetPointData();
+  // Both inputs' vectors turned into the mean's frame agree: input 0's turned.
+  const Eigen::Matrix3d toMean = alignmentOf(average->GetOutput(), 0).Rotation;
   ASSERT_NE(pd->GetArray("Thickness"), nullptr);
   ASSERT_NE(pd->GetArray("Color"), nullptr);
   EXPECT_EQ(pd->GetArray("Color")->GetDataType(), VTK_FLOAT);
@@ -369,10 +498,12 @@ TEST(SurfaceAverage, PointArraysFollowTheRules)
   {
     EXPECT_NEAR(pd->GetArray("Thickness")->GetTuple1(v), 2.0 * v, 1e-12);
     EXPECT_NEAR(pd->GetArray("Color")->GetComponent(v, 2), 1.0, 1e-7);
+    Eigen::Vector3d expected;
+    velocity->GetTuple(v, expected.data());
+    expected = toMean * expected;
     for (int k = 0; k < 3; ++k)
     {
-      EXPECT_NEAR(
-        pd->GetArray("Velocity")->GetComponent(v, k), velocity->GetComponent(v, k), 1e-12);
+      EXPECT_NEAR(pd->GetArray("Velocity")->GetComponent(v, k), expected(k), 1e-12);
     }
   }
   ASSERT_NE(pd->GetVectors(), nullptr);
@@ -491,7 +622,7 @@ TEST(SurfaceAverage, PipelineAndPrintSelf)
   average->SetAlignMode(9);
   EXPECT_EQ(average->GetAlignMode(), vtkSurfaceAverage::ALIGN_SIMILARITY);
   average->Update();
-  EXPECT_LT(largestDistance(average->GetOutput(), mesh), 1e-9);
+  EXPECT_LT(distanceUpToMotion(mesh, average->GetOutput(), false), 1e-9);
   std::ostringstream print;
   average->Print(print);
   EXPECT_TRUE(contains(print.str(), "AlignMode: 2")) << print.str();
