@@ -6,9 +6,11 @@
 //
 // Usage: TestSurfaceMapsPlugin PLUGIN_FILE DATA_DIR
 // Exit code 0 when every check passes; each failed check prints a line.
+#include "vtkAlgorithm.h"
 #include "vtkCellData.h"
 #include "vtkDataArray.h"
 #include "vtkFieldData.h"
+#include "vtkInformation.h"
 #include "vtkInitializationHelper.h"
 #include "vtkMultiBlockDataSet.h"
 #include "vtkPointData.h"
@@ -19,6 +21,7 @@
 #include "vtkSMIntRangeDomain.h"
 #include "vtkSMParaViewPipelineController.h"
 #include "vtkSMPluginManager.h"
+#include "vtkSMProperty.h"
 #include "vtkSMPropertyHelper.h"
 #include "vtkSMProxyManager.h"
 #include "vtkSMSession.h"
@@ -180,9 +183,12 @@ int main(int argc, char* argv[])
   const std::string plugin = argv[1];
   const std::string data = std::string(argv[2]) + "/";
 
-  // No user settings and no command line of ours for ParaView's options.
+  // No user settings.
   vtkInitializationHelper::SetLoadSettingsFilesDuringInitialization(false);
-  if (!vtkInitializationHelper::Initialize(1, argv, vtkProcessModule::PROCESS_CLIENT))
+  // ParaView parses its own options: give it the program name only (and the
+  // terminating null its logger insists on).
+  char* programOnly[2] = { argv[0], nullptr };
+  if (!vtkInitializationHelper::Initialize(1, programOnly, vtkProcessModule::PROCESS_CLIENT))
   {
     std::cerr << "cannot initialise ParaView's engine\n";
     return 1;
