@@ -8,12 +8,12 @@
 //
 // Usage: WriteSurfaceMapsState PLUGIN_FILE OUTPUT.pvsm
 //
-// The pipeline: three meshes (ellipsoid, blob, limbs) -> Surface Map (pairs
-// "sequence") -> Surface Average and Surface Sequence Interpolator; Surface
-// Map Evaluation of limbs against the ellipsoid (per-triangle stretch). Shown
-// side by side: the inputs in the back row, the evaluation, the average and
-// the interpolator at t = 0.5 (half-way from the ellipsoid to the blob) with
-// T's edges in the front row.
+// The pipeline: two meshes with corresponding landmarks (ellipsoid, blob) ->
+// Surface Map -> Surface Average and Surface Sequence Interpolator; Surface
+// Map Evaluation of the blob against the ellipsoid (per-triangle stretch).
+// Shown side by side: the inputs in the back row; the evaluation, the average
+// and the interpolator at t = 0.5 (half-way from the ellipsoid to the blob)
+// with T's edges in the front row.
 #include "vtkDataObject.h"
 #include "vtkInitializationHelper.h"
 #include "vtkNew.h"
@@ -27,6 +27,7 @@
 #include "vtkSMSession.h"
 #include "vtkSMSessionProxyManager.h"
 #include "vtkSMSourceProxy.h"
+#include "vtkSMViewProxy.h"
 #include "vtkSmartPointer.h"
 
 #include <iostream>
@@ -115,16 +116,20 @@ int main(int argc, char* argv[])
     viewProxy.TakeReference(manager->NewProxy("views", "RenderView"));
     controller->InitializeProxy(viewProxy);
     controller->RegisterViewProxy(viewProxy, "RenderView1");
+    // The GUI shows the views of the state's layouts only.
+    controller->AssignViewToLayout(vtkSMViewProxy::SafeDownCast(viewProxy));
     Scene scene{ manager, controller, vtkSMRenderViewProxy::SafeDownCast(viewProxy) };
     try
     {
-      const char* files[3] = { "Data/ellipsoid.obj", "Data/blob.off", "Data/limbs_coarse.vtk" };
-      const char* labels[3] = { "ellipsoid.obj", "blob.off", "limbs_coarse.vtk" };
-      vtkSmartPointer<vtkSMSourceProxy> readers[3];
-      for (int i = 0; i < 3; ++i)
+      const char* files[2] = { "Data/ellipsoid.obj", "Data/blob.off" };
+      const char* landmarks[2] = { "Data/ellipsoid.pinned", "Data/blob.vts" };
+      const char* labels[2] = { "ellipsoid.obj", "blob.off" };
+      vtkSmartPointer<vtkSMSourceProxy> readers[2];
+      for (int i = 0; i < 2; ++i)
       {
         readers[i] = scene.New("sources", "SurfaceMeshReader");
         vtkSMPropertyHelper(readers[i], "FileName").Set(files[i]);
+        vtkSMPropertyHelper(readers[i], "LandmarkFileName").Set(landmarks[i]);
         scene.Register(readers[i], labels[i]);
       }
       auto map = scene.New("filters", "SurfaceMap");
@@ -132,7 +137,6 @@ int main(int argc, char* argv[])
       {
         vtkSMPropertyHelper(map, "Input").Add(reader, 0);
       }
-      vtkSMPropertyHelper(map, "PairMode").Set(1); // sequence
       vtkSMPropertyHelper(map, "CoarseIterations").Set(20);
       vtkSMPropertyHelper(map, "FineIterations").Set(20);
       vtkSMPropertyHelper(map, "RefinementRounds").Set(1);
@@ -149,14 +153,14 @@ int main(int argc, char* argv[])
 
       auto evaluation = scene.New("filters", "SurfaceMapEvaluation");
       vtkSMPropertyHelper(evaluation, "Input").Set(map, 0);
-      vtkSMPropertyHelper(evaluation, "SourceIndex").Set(2);
+      vtkSMPropertyHelper(evaluation, "SourceIndex").Set(1);
       vtkSMPropertyHelper(evaluation, "TargetIndex").Set(0);
       scene.Register(evaluation, "SurfaceMapEvaluation");
 
       const double spacing = 3.5;
-      for (int i = 0; i < 3; ++i)
+      for (int i = 0; i < 2; ++i)
       {
-        scene.Show(readers[i], (i - 1) * spacing, spacing, nullptr, false);
+        scene.Show(readers[i], (i - 0.5) * spacing, spacing, nullptr, false);
       }
       scene.Show(evaluation, -spacing, 0.0, "MaxStretch", true);
       scene.Show(average, 0.0, 0.0, nullptr, true);
