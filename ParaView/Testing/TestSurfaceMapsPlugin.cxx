@@ -7,12 +7,14 @@
 // Usage: TestSurfaceMapsPlugin PLUGIN_FILE DATA_DIR
 // Exit code 0 when every check passes; each failed check prints a line.
 #include "vtkAlgorithm.h"
+#include "vtkCallbackCommand.h"
 #include "vtkCellData.h"
 #include "vtkDataArray.h"
 #include "vtkFieldData.h"
 #include "vtkInformation.h"
 #include "vtkInitializationHelper.h"
 #include "vtkMultiBlockDataSet.h"
+#include "vtkNew.h"
 #include "vtkPointData.h"
 #include "vtkPolyData.h"
 #include "vtkProcessModule.h"
@@ -343,6 +345,42 @@ int main(int argc, char* argv[])
     auto* source = outputOf<vtkPolyData>(ellipsoid);
     check(mapped && source && mapped->GetNumberOfPoints() == source->GetNumberOfPoints(),
       "in Mapped input mode block 1 has input 0's vertices");
+
+    // Progress and abort as the GUI sees them: ProgressEvents from the
+    // proxy's VTK object while the map runs, and AbortExecute set from one
+    // (what ParaView's abort does) stops the map with empty blocks and no
+    // error; the next update computes the map again.
+    auto* filter = vtkAlgorithm::SafeDownCast(map->GetClientSideObject());
+    vtkNew<vtkCallbackCommand> abortAt;
+    int progressEvents = 0;
+    abortAt->SetClientData(&progressEvents);
+    abortAt->SetCallback(
+      [](vtkObject* caller, unsigned long, void* count, void*)
+      {
+        if (++*static_cast<int*>(count) == 3)
+        {
+          static_cast<vtkAlgorithm*>(caller)->SetAbortExecute(1);
+        }
+      });
+    const unsigned long observer = filter->AddObserver(vtkCommand::ProgressEvent, abortAt);
+    vtkSMPropertyHelper(map, "OutputMode").Set(0);
+    vtkSMPropertyHelper(map, "FineIterations").Set(4); // a new map
+    map->UpdateVTKObjects();
+    map->UpdatePipeline();
+    blocks = outputOf<vtkMultiBlockDataSet>(map);
+    auto* aborted = blocks ? vtkPolyData::SafeDownCast(blocks->GetBlock(0)) : nullptr;
+    check(progressEvents >= 3, "the map reports progress while it runs");
+    check(aborted && aborted->GetNumberOfPoints() == 0, "an aborted map leaves empty blocks");
+    filter->RemoveObserver(observer);
+    filter->SetAbortExecute(0);
+    vtkSMPropertyHelper(map, "FineIterations").Set(3);
+    map->UpdateVTKObjects();
+    map->UpdatePipeline();
+    blocks = outputOf<vtkMultiBlockDataSet>(map);
+    auto* again = blocks ? vtkPolyData::SafeDownCast(blocks->GetBlock(0)) : nullptr;
+    check(again && again->GetNumberOfPoints() == commonPoints &&
+        fieldValue(again, "Bijective") == 1.0,
+      "after an abort the next update computes the map again");
 
     vtkProcessModule::GetProcessModule()->UnRegisterSession(session);
   }
