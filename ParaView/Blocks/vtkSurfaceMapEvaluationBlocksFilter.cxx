@@ -28,28 +28,6 @@ int vtkSurfaceMapEvaluationBlocksFilter::FillInputPortInformation(int port, vtkI
   return 1;
 }
 
-namespace
-{
-// Surface `index` of `list` as a one-entry vector; false (and an error on
-// `self`) when the list is shorter. `what` names the list in the message.
-bool pick(vtkAlgorithm* self,
-  vtkInformationVector* list,
-  int index,
-  const char* what,
-  vtkInformationVector* picked)
-{
-  if (index >= list->GetNumberOfInformationObjects())
-  {
-    vtkErrorWithObjectMacro(self,
-      << what << " index " << index << " but there are only "
-      << list->GetNumberOfInformationObjects() << " surfaces");
-    return false;
-  }
-  picked->Append(list->GetInformationObject(index));
-  return true;
-}
-} // namespace
-
 int vtkSurfaceMapEvaluationBlocksFilter::RequestData(vtkInformation* request,
   vtkInformationVector** inputVector,
   vtkInformationVector* outputVector)
@@ -64,14 +42,14 @@ int vtkSurfaceMapEvaluationBlocksFilter::RequestData(vtkInformation* request,
   }
   // vtkSurfaceMapEvaluation's ports: P, Q, and optionally their originals.
   vtkNew<vtkInformationVector> source, target, sourceOriginal, targetOriginal;
-  if (!pick(this, surfaces, this->SourceIndex, "source", source) ||
-    !pick(this, surfaces, this->TargetIndex, "target", target))
+  if (!vtkSurfaceMapsBlockList::Pick(this, surfaces, this->SourceIndex, "source", source) ||
+    !vtkSurfaceMapsBlockList::Pick(this, surfaces, this->TargetIndex, "target", target))
   {
     return 0;
   }
   if (originals->GetNumberOfInformationObjects() > 0 &&
-    (!pick(this, originals, this->SourceIndex, "source original", sourceOriginal) ||
-      !pick(this, originals, this->TargetIndex, "target original", targetOriginal)))
+    (!vtkSurfaceMapsBlockList::Pick(this, originals, this->SourceIndex, "source original", sourceOriginal) ||
+      !vtkSurfaceMapsBlockList::Pick(this, originals, this->TargetIndex, "target original", targetOriginal)))
   {
     return 0;
   }

@@ -148,3 +148,20 @@ std::vector<vtkSmartPointer<vtkPolyData>> vtkSurfaceMapsBlockList::NewSurfaces(
   }
   return surfaces;
 }
+
+bool vtkSurfaceMapsBlockList::Pick(vtkAlgorithm* self,
+  vtkInformationVector* list,
+  int index,
+  const char* what,
+  vtkInformationVector* picked)
+{
+  if (index >= list->GetNumberOfInformationObjects())
+  {
+    vtkErrorWithObjectMacro(self,
+      << what << " index " << index << " but there are only "
+      << list->GetNumberOfInformationObjects() << " surfaces");
+    return false;
+  }
+  picked->Append(list->GetInformationObject(index));
+  return true;
+}

@@ -55,6 +55,17 @@ public:
     const std::vector<std::string>& names,
     vtkMultiBlockDataSet* output);
 
+  /**
+   * Appends surface `index` of `list` to `picked` (as one information
+   * object); false, with an error on `self` naming `what` and the list's
+   * length, when the list is shorter.
+   */
+  static bool Pick(vtkAlgorithm* self,
+    vtkInformationVector* list,
+    int index,
+    const char* what,
+    vtkInformationVector* picked);
+
   /** `n` empty vtkPolyData and an information vector holding them, for a filter's outputs. */
   static std::vector<vtkSmartPointer<vtkPolyData>> NewSurfaces(int n, vtkInformationVector* vector);
 };

@@ -336,6 +336,32 @@ int main(int argc, char* argv[])
       check(false, "the interpolator's output at t = 0.5 has the common triangulation's points");
     }
 
+    // The transfer of blob's point arrays onto the ellipsoid's vertices,
+    // from a second map proxy in "Input embeddings" mode (same inputs and
+    // settings): the ellipsoid's vertices, each with where the exact map puts
+    // it on the blob ("SourceBarycentric").
+    auto embeddings = pipeline.New("filters", "SurfaceMap");
+    vtkSMPropertyHelper(embeddings, "Input").Add(ellipsoid, 0);
+    vtkSMPropertyHelper(embeddings, "Input").Add(blob, 0);
+    for (const char* name : { "PairMode", "LandmarkIterations", "CoarseIterations",
+           "FineIterations", "RefinementRounds" })
+    {
+      vtkSMPropertyHelper(embeddings, name).Set(vtkSMPropertyHelper(map, name).GetAsInt());
+    }
+    vtkSMPropertyHelper(embeddings, "OutputMode").Set(2);
+    pipeline.Apply(embeddings, "embeddings");
+    auto transfer = pipeline.New("filters", "SurfaceMapTransfer");
+    vtkSMPropertyHelper(transfer, "Embeddings").Set(embeddings, 0);
+    vtkSMPropertyHelper(transfer, "Common").Set(map, 0);
+    pipeline.Apply(transfer, "transfer");
+    transfer->UpdatePipeline();
+    auto* carried = outputOf<vtkPolyData>(transfer);
+    auto* ellipsoidMesh = outputOf<vtkPolyData>(ellipsoid);
+    check(carried && ellipsoidMesh &&
+        carried->GetNumberOfPoints() == ellipsoidMesh->GetNumberOfPoints() &&
+        carried->GetPointData()->GetArray("SourceBarycentric"),
+      "the transfer gives the ellipsoid's vertices their place on the blob");
+
     // Output mode "Mapped input": input 0's mesh on every input.
     vtkSMPropertyHelper(map, "OutputMode").Set(1);
     map->UpdateVTKObjects();
