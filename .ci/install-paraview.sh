@@ -10,7 +10,11 @@
 # it), and the script fails loudly if python3-vtk9 is gone afterwards.
 set -euo pipefail
 
-packages=(paraview paraview-dev)
+# libx11-dev, libglew-dev: ParaView's rendering modules name X11::X11 and
+# GLEW::GLEW, which the plugin's configuration must find (libvtk9-dev brings
+# them too; listed for a machine without it). libvtk9-dev: the wrapping
+# hierarchy files that paraview-dev lacks (ParaView/CMake/ParaViewWrapHierarchy.cmake).
+packages=(paraview paraview-dev libx11-dev libglew-dev libvtk9-dev)
 
 missing=()
 for p in "${packages[@]}"; do
