@@ -597,6 +597,13 @@ protected:
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
   void SetNumberOfInputConnections(int port, int n) override;
 
+  /**
+   * Called whenever the input connections change: one output port per input
+   * connection (at least one). A subclass that gathers every map output into
+   * one port (ParaView's composite map) overrides it to keep its ports.
+   */
+  virtual void UpdateNumberOfOutputPorts();
+
   int SizingMode = SIZING_ARRAY_OR_CURVATURE;
   int OutputMode = COMMON_TRIANGULATION;
   int MappedInput = 0;
@@ -605,9 +612,6 @@ protected:
 private:
   vtkSurfaceMapFilter(const vtkSurfaceMapFilter&) = delete;
   void operator=(const vtkSurfaceMapFilter&) = delete;
-
-  /// One output port per input connection (at least one).
-  void UpdateNumberOfOutputPorts();
 
   struct vtkInternals;
   std::unique_ptr<vtkInternals> Internals;

@@ -1,0 +1,421 @@
+// The SurfaceMaps plugin in ParaView's server manager, the way the GUI uses
+// it: ParaView's engine initialised in-process with a builtin session, the
+// plugin loaded by the plugin manager, proxies created from the plugin's XML,
+// properties set and pipelines updated. pvpython is not an option (its
+// package conflicts with Debian's python3-vtk9).
+//
+// Usage: TestSurfaceMapsPlugin PLUGIN_FILE DATA_DIR
+// Exit code 0 when every check passes; each failed check prints a line.
+#include "vtkAlgorithm.h"
+#include "vtkCallbackCommand.h"
+#include "vtkCellData.h"
+#include "vtkDataArray.h"
+#include "vtkFieldData.h"
+#include "vtkInformation.h"
+#include "vtkInitializationHelper.h"
+#include "vtkMultiBlockDataSet.h"
+#include "vtkNew.h"
+#include "vtkPointData.h"
+#include "vtkPolyData.h"
+#include "vtkProcessModule.h"
+#include "vtkSMDoubleRangeDomain.h"
+#include "vtkSMEnumerationDomain.h"
+#include "vtkSMIntRangeDomain.h"
+#include "vtkSMParaViewPipelineController.h"
+#include "vtkSMPluginManager.h"
+#include "vtkSMProperty.h"
+#include "vtkSMPropertyHelper.h"
+#include "vtkSMProxyManager.h"
+#include "vtkSMSession.h"
+#include "vtkSMSessionProxyManager.h"
+#include "vtkSMSourceProxy.h"
+#include "vtkSmartPointer.h"
+#include "vtkSurfaceMapFilter.h"
+#include "vtkTable.h"
+
+#include <cmath>
+#include <iostream>
+#include <string>
+
+namespace
+{
+int failures = 0;
+
+void check(bool ok, const std::string& what)
+{
+  if (!ok)
+  {
+    std::cerr << "FAILED: " << what << "\n";
+    ++failures;
+  }
+}
+
+struct Pipeline
+{
+  vtkSMSessionProxyManager* Manager;
+  vtkSMParaViewPipelineController* Controller;
+
+  // A new proxy of the plugin, initialised like the GUI's (domains, defaults).
+  vtkSmartPointer<vtkSMSourceProxy> New(const char* group, const char* name)
+  {
+    vtkSmartPointer<vtkSMSourceProxy> proxy;
+    proxy.TakeReference(vtkSMSourceProxy::SafeDownCast(this->Manager->NewProxy(group, name)));
+    if (proxy)
+    {
+      this->Controller->PreInitializeProxy(proxy);
+    }
+    return proxy;
+  }
+
+  // Pushes the properties, finishes initialisation and registers it.
+  void Apply(vtkSMSourceProxy* proxy, const char* label)
+  {
+    proxy->UpdateVTKObjects();
+    this->Controller->PostInitializeProxy(proxy);
+    this->Controller->RegisterPipelineProxy(proxy, label);
+  }
+};
+
+template<typename T>
+T* outputOf(vtkSMSourceProxy* proxy)
+{
+  auto* algorithm = vtkAlgorithm::SafeDownCast(proxy->GetClientSideObject());
+  return algorithm ? T::SafeDownCast(algorithm->GetOutputDataObject(0)) : nullptr;
+}
+
+double fieldValue(vtkDataObject* data, const char* name, int tuple = 0)
+{
+  vtkDataArray* array = data ? data->GetFieldData()->GetArray(name) : nullptr;
+  return array && tuple < array->GetNumberOfTuples() ? array->GetComponent(tuple, 0) : NAN;
+}
+
+// Every setting of the engine's table is a property of the map proxy with
+// the table's default and range (the XML is generated from the table; this
+// holds the generator to it) and reaches the filter through its command.
+void checkMapSettings(Pipeline& pipeline)
+{
+  auto map = pipeline.New("filters", "SurfaceMap");
+  check(map != nullptr, "the plugin defines filters/SurfaceMap");
+  if (!map)
+  {
+    return;
+  }
+  map->UpdateVTKObjects();
+  auto* filter = vtkSurfaceMapFilter::SafeDownCast(map->GetClientSideObject());
+  check(filter != nullptr, "SurfaceMap's VTK object is a vtkSurfaceMapFilter");
+  for (int i = 0; i < vtkSurfaceMapFilter::GetNumberOfSettings(); ++i)
+  {
+    const std::string name = vtkSurfaceMapFilter::GetSettingName(i);
+    vtkSMProperty* property = map->GetProperty(name.c_str());
+    check(property != nullptr, "SurfaceMap has the property " + name);
+    if (!property)
+    {
+      continue;
+    }
+    const double table = vtkSurfaceMapFilter::GetSettingDefault(i);
+    check(vtkSMPropertyHelper(property).GetAsDouble() == table,
+      name + ": property default " + std::to_string(vtkSMPropertyHelper(property).GetAsDouble()) +
+        " is the table's " + std::to_string(table));
+    check(filter && filter->GetSetting(i) == table, name + ": the filter holds the default");
+    int exists = 0;
+    switch (vtkSurfaceMapFilter::GetSettingType(i))
+    {
+      case vtkSurfaceMapFilter::SETTING_REAL:
+      {
+        auto* range = vtkSMDoubleRangeDomain::SafeDownCast(property->GetDomain("range"));
+        check(range && range->GetMinimum(0, exists) == vtkSurfaceMapFilter::GetSettingMinimum(i) &&
+            range->GetMaximum(0, exists) == vtkSurfaceMapFilter::GetSettingMaximum(i),
+          name + ": the property's range is the table's");
+        break;
+      }
+      case vtkSurfaceMapFilter::SETTING_COUNT:
+      {
+        auto* range = vtkSMIntRangeDomain::SafeDownCast(property->GetDomain("range"));
+        check(range && range->GetMinimum(0, exists) == vtkSurfaceMapFilter::GetSettingMinimum(i) &&
+            range->GetMaximum(0, exists) == vtkSurfaceMapFilter::GetSettingMaximum(i),
+          name + ": the property's range is the table's");
+        break;
+      }
+      case vtkSurfaceMapFilter::SETTING_CHOICE:
+      {
+        auto* choices = vtkSMEnumerationDomain::SafeDownCast(property->GetDomain("enum"));
+        check(choices &&
+            choices->GetNumberOfEntries() ==
+              static_cast<unsigned int>(vtkSurfaceMapFilter::GetSettingMaximum(i) + 1),
+          name + ": one enumeration entry per choice");
+        break;
+      }
+      default:
+        break;
+    }
+    check(property->GetDocumentation() != nullptr, name + " is documented");
+  }
+}
+
+vtkSmartPointer<vtkSMSourceProxy> read(
+  Pipeline& pipeline, const std::string& file, const std::string& landmarks)
+{
+  auto reader = pipeline.New("sources", "SurfaceMeshReader");
+  check(reader != nullptr, "the plugin defines sources/SurfaceMeshReader");
+  if (!reader)
+  {
+    return reader;
+  }
+  vtkSMPropertyHelper(reader, "FileName").Set(file.c_str());
+  if (!landmarks.empty())
+  {
+    vtkSMPropertyHelper(reader, "LandmarkFileName").Set(landmarks.c_str());
+  }
+  pipeline.Apply(reader, file.c_str());
+  reader->UpdatePipeline();
+  auto* mesh = outputOf<vtkPolyData>(reader);
+  check(mesh && mesh->GetNumberOfPoints() > 0 && mesh->GetNumberOfPolys() > 0,
+    "the reader reads " + file);
+  return reader;
+}
+} // namespace
+
+int main(int argc, char* argv[])
+{
+  if (argc != 3)
+  {
+    std::cerr << "usage: " << argv[0] << " PLUGIN_FILE DATA_DIR\n";
+    return 2;
+  }
+  const std::string plugin = argv[1];
+  const std::string data = std::string(argv[2]) + "/";
+
+  // No user settings.
+  vtkInitializationHelper::SetLoadSettingsFilesDuringInitialization(false);
+  // ParaView parses its own options: give it the program name only (and the
+  // terminating null its logger insists on).
+  char* programOnly[2] = { argv[0], nullptr };
+  if (!vtkInitializationHelper::Initialize(1, programOnly, vtkProcessModule::PROCESS_CLIENT))
+  {
+    std::cerr << "cannot initialise ParaView's engine\n";
+    return 1;
+  }
+  {
+    vtkNew<vtkSMSession> session; // builtin: client and server in this process
+    vtkProcessModule::GetProcessModule()->RegisterSession(session);
+    vtkNew<vtkSMParaViewPipelineController> controller;
+    controller->InitializeSession(session);
+    vtkSMPluginManager* plugins = vtkSMProxyManager::GetProxyManager()->GetPluginManager();
+    const bool loaded = plugins->LoadLocalPlugin(plugin.c_str());
+    check(loaded, "the plugin manager loads " + plugin);
+    if (!loaded)
+    {
+      vtkInitializationHelper::Finalize();
+      return 1;
+    }
+    Pipeline pipeline{ session->GetSessionProxyManager(), controller };
+
+    checkMapSettings(pipeline);
+
+    // The reader, every format.
+    for (const char* file : { "ellipsoid_coarse.stl", "blob.vtp", "limbs.ply", "limbs_coarse.vtk",
+           "spot.obj" })
+    {
+      read(pipeline, data + file, "");
+    }
+    auto ellipsoid = read(pipeline, data + "ellipsoid.obj", data + "ellipsoid.pinned");
+    auto blob = read(pipeline, data + "blob.off", data + "blob.vts");
+    if (!ellipsoid || !blob)
+    {
+      vtkInitializationHelper::Finalize();
+      return 1;
+    }
+    auto* landmarked = outputOf<vtkPolyData>(blob);
+    check(landmarked && landmarked->GetPointData()->GetArray("Landmarks"),
+      "the landmark file becomes the Landmarks point array");
+
+    // The validator: one row per surface, both valid.
+    auto validator = pipeline.New("filters", "SurfaceMeshValidator");
+    vtkSMPropertyHelper(validator, "Input").Add(ellipsoid, 0);
+    vtkSMPropertyHelper(validator, "Input").Add(blob, 0);
+    pipeline.Apply(validator, "validator");
+    validator->UpdatePipeline();
+    auto* table = outputOf<vtkTable>(validator);
+    check(table && table->GetNumberOfRows() == 2, "the validator has one row per surface");
+    check(table && table->GetValueByName(0, "Valid").ToInt() == 1 &&
+        table->GetValueByName(1, "Valid").ToInt() == 1,
+      "the validator accepts both surfaces");
+
+    // The sphere embedding of one surface.
+    auto embedding = pipeline.New("filters", "SphereEmbedding");
+    vtkSMPropertyHelper(embedding, "Input").Set(ellipsoid, 0);
+    pipeline.Apply(embedding, "embedding");
+    embedding->UpdatePipeline();
+    auto* embedded = outputOf<vtkPolyData>(embedding);
+    check(embedded && embedded->GetPointData()->GetArray("SpherePosition"),
+      "the embedding has SpherePosition");
+
+    // The map of two surfaces, a short schedule: one composite output, one
+    // certified block per input.
+    auto map = pipeline.New("filters", "SurfaceMap");
+    vtkSMPropertyHelper(map, "Input").Add(ellipsoid, 0);
+    vtkSMPropertyHelper(map, "Input").Add(blob, 0);
+    vtkSMPropertyHelper(map, "PairMode").Set(1); // sequence, for the interpolator
+    vtkSMPropertyHelper(map, "LandmarkIterations").Set(20);
+    vtkSMPropertyHelper(map, "CoarseIterations").Set(3);
+    vtkSMPropertyHelper(map, "FineIterations").Set(3);
+    vtkSMPropertyHelper(map, "RefinementRounds").Set(0);
+    pipeline.Apply(map, "map");
+    map->UpdatePipeline();
+    auto* blocks = outputOf<vtkMultiBlockDataSet>(map);
+    check(blocks && blocks->GetNumberOfBlocks() == 2, "the map has one block per input");
+    vtkIdType commonPoints = -1;
+    for (unsigned int b = 0; blocks && b < blocks->GetNumberOfBlocks(); ++b)
+    {
+      auto* lifted = vtkPolyData::SafeDownCast(blocks->GetBlock(b));
+      const std::string block = "map block " + std::to_string(b);
+      check(lifted && lifted->GetNumberOfPoints() > 0, block + " is a non-empty surface");
+      if (!lifted)
+      {
+        continue;
+      }
+      check(fieldValue(lifted, "Bijective") == 1.0, block + " is certified bijective");
+      check(lifted->GetPointData()->GetArray("SpherePosition") &&
+          lifted->GetPointData()->GetArray("SourceBarycentric") &&
+          lifted->GetCellData()->GetArray("Distortion"),
+        block + " has SpherePosition, SourceBarycentric and Distortion");
+      check(commonPoints < 0 || lifted->GetNumberOfPoints() == commonPoints,
+        block + " has T's points");
+      commonPoints = lifted->GetNumberOfPoints();
+    }
+    check(std::string(blocks && blocks->HasMetaData(1u)
+                ? blocks->GetMetaData(1u)->Get(vtkCompositeDataSet::NAME())
+                : "") == "blob.off",
+      "block 1 is named after its input's file");
+
+    // The average of the map's blocks.
+    auto average = pipeline.New("filters", "SurfaceAverage");
+    vtkSMPropertyHelper(average, "Input").Set(map, 0);
+    pipeline.Apply(average, "average");
+    average->UpdatePipeline();
+    auto* mean = outputOf<vtkPolyData>(average);
+    check(mean && mean->GetNumberOfPoints() == commonPoints,
+      "the average has the common triangulation's points");
+    vtkDataArray* weights = mean ? mean->GetFieldData()->GetArray("AverageWeight") : nullptr;
+    check(weights && weights->GetNumberOfTuples() == 2 && weights->GetComponent(0, 0) == 0.5,
+      "the average weighs both blocks equally");
+
+    // The evaluation of block 0 -> block 1.
+    auto evaluation = pipeline.New("filters", "SurfaceMapEvaluation");
+    vtkSMPropertyHelper(evaluation, "Input").Set(map, 0);
+    pipeline.Apply(evaluation, "evaluation");
+    evaluation->UpdatePipeline();
+    const double sd = fieldValue(outputOf<vtkPolyData>(evaluation), "SymmetricDirichlet");
+    check(std::isfinite(sd) && sd >= 1.0, "the evaluation's symmetric Dirichlet is finite, >= 1");
+
+    // The interpolator: time steps announced before its first update, and a
+    // surface between the keyframes.
+    auto sequence = pipeline.New("filters", "SurfaceSequenceInterpolator");
+    vtkSMPropertyHelper(sequence, "Input").Set(map, 0);
+    vtkSMPropertyHelper(sequence, "StepsPerInterval").Set(4);
+    pipeline.Apply(sequence, "sequence");
+    sequence->UpdatePipelineInformation();
+    check(vtkSMPropertyHelper(sequence, "TimestepValues").GetNumberOfElements() == 5,
+      "the interpolator reports 5 time steps for 2 keyframes and 4 steps per interval");
+    sequence->UpdatePipeline(0.5);
+    auto* between = outputOf<vtkPolyData>(sequence);
+    auto* first = blocks ? vtkPolyData::SafeDownCast(blocks->GetBlock(0)) : nullptr;
+    auto* last = blocks ? vtkPolyData::SafeDownCast(blocks->GetBlock(1)) : nullptr;
+    if (between && first && last && between->GetNumberOfPoints() == commonPoints)
+    {
+      double p[3], a[3], b[3];
+      between->GetPoint(0, p);
+      first->GetPoint(0, a);
+      last->GetPoint(0, b);
+      check(std::hypot(p[0] - a[0], p[1] - a[1], p[2] - a[2]) > 0 &&
+          std::hypot(p[0] - b[0], p[1] - b[1], p[2] - b[2]) > 0,
+        "the surface at t = 0.5 lies between the keyframes");
+    }
+    else
+    {
+      check(false, "the interpolator's output at t = 0.5 has the common triangulation's points");
+    }
+
+    // The transfer of blob's point arrays onto the ellipsoid's vertices,
+    // from a second map proxy in "Input embeddings" mode (same inputs and
+    // settings): the ellipsoid's vertices, each with where the exact map puts
+    // it on the blob ("SourceBarycentric").
+    auto embeddings = pipeline.New("filters", "SurfaceMap");
+    vtkSMPropertyHelper(embeddings, "Input").Add(ellipsoid, 0);
+    vtkSMPropertyHelper(embeddings, "Input").Add(blob, 0);
+    for (const char* name : { "PairMode", "LandmarkIterations", "CoarseIterations",
+           "FineIterations", "RefinementRounds" })
+    {
+      vtkSMPropertyHelper(embeddings, name).Set(vtkSMPropertyHelper(map, name).GetAsInt());
+    }
+    vtkSMPropertyHelper(embeddings, "OutputMode").Set(2);
+    pipeline.Apply(embeddings, "embeddings");
+    auto transfer = pipeline.New("filters", "SurfaceMapTransfer");
+    vtkSMPropertyHelper(transfer, "Embeddings").Set(embeddings, 0);
+    vtkSMPropertyHelper(transfer, "Common").Set(map, 0);
+    pipeline.Apply(transfer, "transfer");
+    transfer->UpdatePipeline();
+    auto* carried = outputOf<vtkPolyData>(transfer);
+    auto* ellipsoidMesh = outputOf<vtkPolyData>(ellipsoid);
+    check(carried && ellipsoidMesh &&
+        carried->GetNumberOfPoints() == ellipsoidMesh->GetNumberOfPoints() &&
+        carried->GetPointData()->GetArray("SourceBarycentric"),
+      "the transfer gives the ellipsoid's vertices their place on the blob");
+
+    // Output mode "Mapped input": input 0's mesh on every input.
+    vtkSMPropertyHelper(map, "OutputMode").Set(1);
+    map->UpdateVTKObjects();
+    map->UpdatePipeline();
+    blocks = outputOf<vtkMultiBlockDataSet>(map);
+    auto* mapped = blocks ? vtkPolyData::SafeDownCast(blocks->GetBlock(1)) : nullptr;
+    auto* source = outputOf<vtkPolyData>(ellipsoid);
+    check(mapped && source && mapped->GetNumberOfPoints() == source->GetNumberOfPoints(),
+      "in Mapped input mode block 1 has input 0's vertices");
+
+    // Progress and abort as the GUI sees them: ProgressEvents from the
+    // proxy's VTK object while the map runs, and AbortExecute set from one
+    // (what ParaView's abort does) stops the map with empty blocks and no
+    // error; the next update computes the map again.
+    auto* filter = vtkAlgorithm::SafeDownCast(map->GetClientSideObject());
+    vtkNew<vtkCallbackCommand> abortAt;
+    int progressEvents = 0;
+    abortAt->SetClientData(&progressEvents);
+    abortAt->SetCallback(
+      [](vtkObject* caller, unsigned long, void* count, void*)
+      {
+        if (++*static_cast<int*>(count) == 3)
+        {
+          static_cast<vtkAlgorithm*>(caller)->SetAbortExecute(1);
+        }
+      });
+    const unsigned long observer = filter->AddObserver(vtkCommand::ProgressEvent, abortAt);
+    vtkSMPropertyHelper(map, "OutputMode").Set(0);
+    vtkSMPropertyHelper(map, "FineIterations").Set(4); // a new map
+    map->UpdateVTKObjects();
+    map->UpdatePipeline();
+    blocks = outputOf<vtkMultiBlockDataSet>(map);
+    auto* aborted = blocks ? vtkPolyData::SafeDownCast(blocks->GetBlock(0)) : nullptr;
+    check(progressEvents >= 3, "the map reports progress while it runs");
+    check(aborted && aborted->GetNumberOfPoints() == 0, "an aborted map leaves empty blocks");
+    filter->RemoveObserver(observer);
+    filter->SetAbortExecute(0);
+    vtkSMPropertyHelper(map, "FineIterations").Set(3);
+    map->UpdateVTKObjects();
+    map->UpdatePipeline();
+    blocks = outputOf<vtkMultiBlockDataSet>(map);
+    auto* again = blocks ? vtkPolyData::SafeDownCast(blocks->GetBlock(0)) : nullptr;
+    check(again && again->GetNumberOfPoints() == commonPoints &&
+        fieldValue(again, "Bijective") == 1.0,
+      "after an abort the next update computes the map again");
+
+    vtkProcessModule::GetProcessModule()->UnRegisterSession(session);
+  }
+  vtkInitializationHelper::Finalize();
+  if (failures > 0)
+  {
+    std::cerr << failures << " check(s) failed\n";
+    return 1;
+  }
+  std::cout << "all checks passed\n";
+  return 0;
+}
