@@ -5,9 +5,11 @@
 
 #include "base/InputError.h"
 #include "io/LandmarkReader.h"
+#include "io/LegacyVtkCheck.h"
 #include "io/ObjReader.h"
 #include "io/OffReader.h"
 #include "io/PlyReader.h"
+#include "io/TextFile.h"
 
 #include "vtkCallbackCommand.h"
 #include "vtkCommand.h"
@@ -168,6 +170,7 @@ vtkSmartPointer<vtkPolyData> readWithVTK(vtkAlgorithm* reader, const std::string
 vtkSmartPointer<vtkPolyData> readMesh(const std::string& path)
 {
   // Check the file up front so every format gets the same clear message.
+  surfacemaps::requireRegularFile(path);
   {
     std::ifstream probe(path, std::ios::binary);
     if (!probe)
@@ -212,6 +215,9 @@ vtkSmartPointer<vtkPolyData> readMesh(const std::string& path)
   }
   if (ext == "vtk")
   {
+    // VTK's legacy reader trusts the file's counts and indices (it crashes
+    // on an index past 2^32): nothing reaches it unchecked.
+    surfacemaps::checkLegacyVtkPolyData(surfacemaps::readTextFile(path), path);
     auto reader = vtkSmartPointer<vtkPolyDataReader>::New();
     reader->SetFileName(path.c_str());
     if (!reader->IsFilePolyData())

@@ -298,3 +298,110 @@ def test_non_integer_landmark_ids_are_rejected(tmp_path):
     r = run("check", half)
     assert r.returncode == 2, (r.stdout, r.stderr)
     assert f"{half} has a landmark id that is not an integer (2.5 at vertex 11)" in r.stderr
+
+
+# Defect 4: VTK's legacy reader is never handed an index it would crash on.
+
+def legacy_with_index(tmp_path, name, index):
+    """limbs_coarse.vtk (legacy 4.2, ASCII) with the first POLYGONS cell's second index replaced."""
+    lines = open(data("limbs_coarse.vtk")).read().split("\n")
+    polygons = next(i for i, line in enumerate(lines) if line.startswith("POLYGONS"))
+    cell = lines[polygons + 1].split()
+    cell[2] = str(index)
+    lines[polygons + 1] = " ".join(cell)
+    path = tmp_path / name
+    path.write_text("\n".join(lines))
+    return path, polygons + 2
+
+
+@pytest.mark.parametrize("index", [2**32 + 5, -1, 642])
+def test_legacy_polygon_index_out_of_range_is_named(tmp_path, index):
+    path, line = legacy_with_index(tmp_path, "wide.vtk", index)
+    r = run("check", path)
+    assert r.returncode == 2, (r.stdout, r.stderr)
+    assert f"{path}:{line}: polygons cell 0 uses point index {index}, out of range for 642 points" in r.stderr
+
+
+def test_legacy_huge_point_count_is_not_allocated(tmp_path):
+    text = open(data("limbs_coarse.vtk")).read().replace("POINTS 642 double", "POINTS 4294967296000 double")
+    path = tmp_path / "huge.vtk"
+    path.write_text(text)
+    r = run("check", path)
+    assert r.returncode == 2, (r.stdout, r.stderr)
+    assert f"{path}:5: declares a point count of 4294967296000, more than the file's" in r.stderr
+
+
+# Weak spots: a directory or a device given as a mesh or landmark file.
+
+def test_directory_as_mesh_is_named_as_such(tmp_path):
+    r = run("check", tmp_path)
+    assert r.returncode == 2, (r.stdout, r.stderr)
+    assert f"{tmp_path}: is a directory, not a file" in r.stderr
+
+
+@pytest.mark.parametrize("name", ["zero.obj", "zero.vtp", "zero.vtk"])
+def test_device_as_mesh_is_refused_at_once(tmp_path, name):
+    link = tmp_path / name
+    os.symlink("/dev/zero", link)
+    r = run("check", link, timeout=20)
+    assert r.returncode == 2, (r.stdout, r.stderr)
+    assert f"{link}: is not a regular file" in r.stderr
+
+
+def test_device_as_landmark_file_is_refused_at_once(tmp_path):
+    link = tmp_path / "zero.pinned"
+    os.symlink("/dev/zero", link)
+    r = run("check", data("ellipsoid.obj"), "--landmarks", link, timeout=20)
+    assert r.returncode == 2, (r.stdout, r.stderr)
+    assert f"{link}: is not a regular file" in r.stderr
+
+
+# Defect 8: every refinement loop is bounded.
+
+def icosphere_42(path):
+    """An icosahedron subdivided once onto the unit sphere: 42 vertices, 80 triangles (OBJ)."""
+    t = (1 + 5 ** 0.5) / 2
+    points = [(-1, t, 0), (1, t, 0), (-1, -t, 0), (1, -t, 0), (0, -1, t), (0, 1, t), (0, -1, -t), (0, 1, -t),
+              (t, 0, -1), (t, 0, 1), (-t, 0, -1), (-t, 0, 1)]
+    faces = [(0, 11, 5), (0, 5, 1), (0, 1, 7), (0, 7, 10), (0, 10, 11), (1, 5, 9), (5, 11, 4), (11, 10, 2),
+             (10, 7, 6), (7, 1, 8), (3, 9, 4), (3, 4, 2), (3, 2, 6), (3, 6, 8), (3, 8, 9), (4, 9, 5),
+             (2, 4, 11), (6, 2, 10), (8, 6, 7), (9, 8, 1)]
+    middle = {}
+
+    def midpoint(a, b):
+        key = (min(a, b), max(a, b))
+        if key not in middle:
+            middle[key] = len(points)
+            points.append(tuple((p + q) / 2 for p, q in zip(points[a], points[b])))
+        return middle[key]
+
+    fine = []
+    for a, b, c in faces:
+        ab, bc, ca = midpoint(a, b), midpoint(b, c), midpoint(c, a)
+        fine += [(a, ab, ca), (b, bc, ab), (c, ca, bc), (ab, bc, ca)]
+    with open(path, "w") as f:
+        for p in points:
+            n = sum(x * x for x in p) ** 0.5
+            f.write("v %r %r %r\n" % tuple(x / n for x in p))
+        for face in fine:
+            f.write("f %d %d %d\n" % tuple(v + 1 for v in face))
+    return path
+
+
+def test_small_max_error_ends_at_the_vertex_budget(tmp_path):
+    sphere = icosphere_42(tmp_path / "ico42.obj")
+    assert "vertices 42, faces 80" in run("check", sphere).stdout
+    out = tmp_path / "map"
+    r = run("map", sphere, "--max-error", "1e-6", "--max-vertices", "400", "--output-dir", out, *SHORT,
+            timeout=120)
+    assert r.returncode == 3, (r.stdout, r.stderr)
+    assert "reached its vertex budget" in r.stderr and "budget 400 (MaxVertices, --max-vertices)" in r.stderr
+    assert not (out / "common_0.vtp").exists()
+
+
+def test_error_bound_rounds_are_bounded(tmp_path):
+    sphere = icosphere_42(tmp_path / "ico42.obj")
+    r = run("map", sphere, "--max-error", "1e-6", "--bound-refinement-rounds", "1",
+            "--bound-refinement-iterations", "1", "--output-dir", tmp_path / "map", *SHORT, timeout=120)
+    assert r.returncode == 3, (r.stdout, r.stderr)
+    assert "could not be met after 1 refinement rounds" in r.stderr

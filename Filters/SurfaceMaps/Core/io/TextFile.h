@@ -7,7 +7,12 @@
 namespace surfacemaps
 {
 
-/// Reads a whole file into memory. Throws InputError naming the file when it
+/// Throws InputError naming `path` when it exists but is not a regular file
+/// (a directory, a device such as /dev/zero, a FIFO): reading one would say
+/// "empty" or never end. Symbolic links are followed.
+void requireRegularFile(const std::string& path);
+
+/// Reads a whole regular file into memory. Throws InputError naming the file when it
 /// cannot be opened or read.
 std::string readTextFile(const std::string& path);
 
