@@ -2,6 +2,7 @@
 #include "ArrayTransferFlags.h"
 #include "CommandSupport.h"
 #include "Commands.h"
+#include "MapDirectory.h"
 
 #include "vtkSurfaceMapTransfer.h"
 
@@ -281,7 +282,8 @@ int runTransfer(const std::vector<std::string>& args)
   vtkNew<vtkSurfaceMapTransfer> transfer;
   const TransferArguments arguments = parseArguments(args, transfer);
   const std::vector<std::string> files = mapFiles(arguments);
-  if (!findMapFiles(arguments.directory, files) || !canWrite(arguments.output))
+  if (!findMapFiles(arguments.directory, files) || !canWrite(arguments.output) ||
+    !succeeds([&] { verifyMapFiles(arguments.directory, files); }))
   {
     return ExitBadInput;
   }

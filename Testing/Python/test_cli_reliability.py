@@ -405,3 +405,126 @@ def test_error_bound_rounds_are_bounded(tmp_path):
             "--bound-refinement-iterations", "1", "--output-dir", tmp_path / "map", *SHORT, timeout=120)
     assert r.returncode == 3, (r.stdout, r.stderr)
     assert "could not be met after 1 refinement rounds" in r.stderr
+
+
+# Defect 6: a map directory is one consistent set of files, or refused.
+
+@pytest.fixture(scope="module")
+def two_maps(tmp_path_factory):
+    """Two maps of the same inputs (different runs: different map ids and embeddings)."""
+    maps = []
+    for k in range(2):
+        out = tmp_path_factory.mktemp(f"map{k}")
+        r = run("map", data("ellipsoid.obj"), data("blob.off"), "--output-dir", out, "--overwrite",
+                "--fine-iterations", str(3 + k), *SHORT[:4])
+        assert r.returncode == 0, r.stderr
+        maps.append(out)
+    return maps
+
+
+def copy_map(source, target):
+    import shutil
+    shutil.copytree(source, target)
+    return target
+
+
+def test_report_names_every_file_with_size_checksum_and_map_id(two_maps):
+    import hashlib
+    import json
+    report = json.loads((two_maps[0] / "report.json").read_text())
+    names = {f"{kind}_{i}.vtp" for kind in ("common", "mapped", "embedding") for i in (0, 1)}
+    assert {record["name"] for record in report["files"]} == names
+    for record in report["files"]:
+        content = (two_maps[0] / record["name"]).read_bytes()
+        assert record["bytes"] == len(content)
+        assert record["md5"] == hashlib.md5(content).hexdigest()
+        fields = read_vtp(two_maps[0] / record["name"]).GetFieldData()
+        assert fields.GetAbstractArray("MapId").GetValue(0) == report["map_id"]
+        assert fields.GetAbstractArray("MapFile").GetValue(0) == record["name"]
+    other = json.loads((two_maps[1] / "report.json").read_text())
+    assert len(report["map_id"]) == 32 and other["map_id"] != report["map_id"]
+
+
+def transfer_and_evaluate(directory, tmp_path):
+    out = tmp_path / "out.vtp"
+    return (run("transfer", directory, "--from", "0", "--to", "1", "-o", out),
+            run("evaluate", directory, "--output-dir", tmp_path / "evaluation"))
+
+
+def test_a_stale_file_from_another_map_is_refused(two_maps, tmp_path):
+    import shutil
+    mixed = copy_map(two_maps[0], tmp_path / "mixed")
+    for name in ("embedding_1.vtp", "common_1.vtp"):
+        shutil.copy(two_maps[1] / name, mixed / name)
+    shutil.copy(two_maps[1] / "mapped_1.vtp", mixed / "mapped_1.vtp")
+    for r in transfer_and_evaluate(mixed, tmp_path):
+        assert r.returncode == 2, (r.stdout, r.stderr)
+        assert "belongs to another map" in r.stderr and "a stale or copied file" in r.stderr
+    assert not (tmp_path / "out.vtp").exists()
+
+
+def test_swapped_embeddings_are_refused(two_maps, tmp_path):
+    swapped = copy_map(two_maps[0], tmp_path / "swapped")
+    (swapped / "embedding_0.vtp").rename(swapped / "tmp.vtp")
+    (swapped / "embedding_1.vtp").rename(swapped / "embedding_0.vtp")
+    (swapped / "tmp.vtp").rename(swapped / "embedding_1.vtp")
+    r = run("transfer", swapped, "--from", "0", "--to", "1", "-o", tmp_path / "out.vtp")
+    assert r.returncode == 2, (r.stdout, r.stderr)
+    assert "is embedding_0.vtp of this map, not embedding_1.vtp: swapped or renamed" in r.stderr
+
+
+def test_a_rotated_embedding_is_refused(two_maps, tmp_path):
+    from vtkmodules.vtkIOXML import vtkXMLPolyDataWriter
+    rotated = copy_map(two_maps[0], tmp_path / "rotated")
+    mesh = read_vtp(rotated / "embedding_1.vtp")
+    sphere = mesh.GetPointData().GetArray("SpherePosition")
+    for v in range(sphere.GetNumberOfTuples()):
+        x, y, z = sphere.GetTuple3(v)
+        sphere.SetTuple3(v, -y, x, z)  # 90 degrees about z: still a bijective embedding
+    writer = vtkXMLPolyDataWriter()
+    writer.SetInputData(mesh)
+    writer.SetFileName(str(rotated / "embedding_1.vtp"))
+    assert writer.Write() == 1
+    r = run("transfer", rotated, "--from", "0", "--to", "1", "-o", tmp_path / "out.vtp")
+    assert r.returncode == 2, (r.stdout, r.stderr)
+    assert f"{rotated / 'embedding_1.vtp'} was changed after the map was written" in r.stderr
+
+
+def test_missing_report_or_file_is_refused(two_maps, tmp_path):
+    incomplete = copy_map(two_maps[0], tmp_path / "incomplete")
+    (incomplete / "report.json").unlink()
+    for r in transfer_and_evaluate(incomplete, tmp_path):
+        assert r.returncode == 2, (r.stdout, r.stderr)
+        assert "report.json is missing: the directory holds no complete map" in r.stderr
+
+
+def test_map_refuses_an_earlier_map_without_overwrite(two_maps, tmp_path):
+    import json
+    target = copy_map(two_maps[0], tmp_path / "again")
+    before = (target / "report.json").read_text()
+    r = run("map", data("ellipsoid.obj"), data("blob.off"), "--output-dir", target, *SHORT)
+    assert r.returncode == 2, (r.stdout, r.stderr)
+    assert "holds an earlier map" in r.stderr and "--overwrite" in r.stderr
+    assert (target / "report.json").read_text() == before
+    # With --overwrite the earlier map is replaced as a whole: a third input's files go too.
+    (target / "common_2.vtp").write_bytes((target / "common_1.vtp").read_bytes())
+    r = run("map", data("ellipsoid.obj"), data("blob.off"), "--output-dir", target, "--overwrite", *SHORT)
+    assert r.returncode == 0, r.stderr
+    assert not (target / "common_2.vtp").exists()
+    report = json.loads((target / "report.json").read_text())
+    assert report["map_id"] != json.loads(before)["map_id"]
+    r, e = transfer_and_evaluate(target, tmp_path)
+    assert r.returncode == 0 and e.returncode == 0, (r.stderr, e.stderr)
+
+
+def test_python_transfer_refuses_what_the_command_line_refuses(two_maps, tmp_path):
+    import shutil
+    import surfacemaps
+    mixed = copy_map(two_maps[0], tmp_path / "mixed")
+    shutil.copy(two_maps[1] / "embedding_1.vtp", mixed / "embedding_1.vtp")
+    with pytest.raises(surfacemaps.InputError, match="embedding_1.vtp belongs to another map"):
+        surfacemaps.transfer(mixed, 0, 1)
+    (mixed / "report.json").unlink()
+    with pytest.raises(surfacemaps.InputError, match="report.json is missing"):
+        surfacemaps.transfer(mixed, 0, 1)
+    assert surfacemaps.transfer(two_maps[0], 0, 1).GetNumberOfPoints() > 0

@@ -355,6 +355,7 @@ def transfer(map_dir, source, target, arrays=None, categorical=None, continuous=
     missing = sorted({os.path.basename(f) for f in files if not os.path.isfile(f)})
     if missing:
         raise InputError(f"{map_dir} has no {', '.join(missing)} (written by 'surfacemap map')")
+    _verify_map_files(str(map_dir), [os.path.basename(f) for f in files])
     t = vtkSurfaceMapTransfer()
     _set_array_transfer_modes(t, categorical, continuous)
     errors = _collect_errors(t)
@@ -369,6 +370,47 @@ def transfer(map_dir, source, target, arrays=None, categorical=None, continuous=
     result = t.GetOutput().NewInstance()
     result.ShallowCopy(t.GetOutput())
     return result
+
+
+def _verify_map_files(map_dir, names):
+    """Raises InputError naming the first of the files `names` of a map directory that its
+    report.json does not vouch for: missing, from another map, another file of this map
+    (swapped, renamed) or changed (size or MD5 differ), as `surfacemap transfer` does."""
+    import hashlib
+    import json
+    import os
+    report_path = os.path.join(map_dir, "report.json")
+    try:
+        with open(report_path) as f:
+            report = json.load(f)
+    except FileNotFoundError:
+        raise InputError(f"{report_path} is missing: the directory holds no complete map "
+                         "(was 'surfacemap map' interrupted?)") from None
+    except ValueError:
+        raise InputError(f"{report_path} is not valid JSON") from None
+    if not isinstance(report.get("map_id"), str) or not isinstance(report.get("files"), list):
+        raise InputError(f"{report_path} has no map id and file checksums (\"map_id\", \"files\"): "
+                         "written by an older surfacemap; run 'surfacemap map' again")
+    records = {r.get("name"): r for r in report["files"] if isinstance(r, dict)}
+    for name in names:
+        path = os.path.join(map_dir, name)
+        record = records.get(name)
+        if record is None:
+            raise InputError(f"{path} is not a file of the map {report_path} describes")
+        with open(path, "rb") as f:
+            content = f.read()
+        if record.get("bytes") == len(content) and record.get("md5") == hashlib.md5(content).hexdigest():
+            continue
+        fields = read_mesh(path).GetFieldData()
+        stamp = {key: (fields.GetAbstractArray(key).GetValue(0) if fields.GetAbstractArray(key) else "")
+                 for key in ("MapId", "MapFile")}
+        if stamp["MapId"] != report["map_id"]:
+            raise InputError(f"{path} belongs to another map (map id {stamp['MapId'] or 'none'}, "
+                             f"{report_path} has {report['map_id']}): a stale or copied file")
+        if stamp["MapFile"] != name:
+            raise InputError(f"{path} is {stamp['MapFile']} of this map, not {name}: swapped or renamed")
+        raise InputError(f"{path} was changed after the map was written (its size or checksum differs "
+                         f"from {report_path})")
 
 
 _ALIGN_MODES = {"none": vtkSurfaceAverage.ALIGN_NONE, "rigid": vtkSurfaceAverage.ALIGN_RIGID,
