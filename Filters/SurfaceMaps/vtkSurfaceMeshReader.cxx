@@ -10,6 +10,7 @@
 #include "io/OffReader.h"
 #include "io/PlyReader.h"
 #include "io/TextFile.h"
+#include "io/XmlPolyDataCheck.h"
 
 #include "vtkCallbackCommand.h"
 #include "vtkCommand.h"
@@ -167,6 +168,35 @@ vtkSmartPointer<vtkPolyData> readWithVTK(vtkAlgorithm* reader, const std::string
   return output;
 }
 
+// A binary STL (every STL that does not start with "solid") is an 80-byte
+// header, a little-endian triangle count and 50 bytes per triangle: a file
+// of another size is truncated or corrupt, which VTK's reader would turn into
+// a mesh with holes (or read past).
+void checkBinaryStlSize(const std::string& bytes, const std::string& path)
+{
+  if (bytes.compare(0, 5, "solid") == 0)
+  {
+    return;
+  }
+  if (bytes.size() < 84)
+  {
+    throw surfacemaps::InputError(path + ": a binary STL file of " + std::to_string(bytes.size()) +
+      " bytes, shorter than its 84-byte header; it is truncated");
+  }
+  unsigned long long triangles = 0;
+  for (int k = 3; k >= 0; --k)
+  {
+    triangles = (triangles << 8) | static_cast<unsigned char>(bytes[80 + k]);
+  }
+  if (84 + 50 * triangles != bytes.size())
+  {
+    throw surfacemaps::InputError(path + ": the binary STL header declares " +
+      std::to_string(triangles) + " triangles (" + std::to_string(84 + 50 * triangles) +
+      " bytes), but the file has " + std::to_string(bytes.size()) +
+      " bytes; it is truncated or corrupt");
+  }
+}
+
 vtkSmartPointer<vtkPolyData> readMesh(const std::string& path)
 {
   // Check the file up front so every format gets the same clear message.
@@ -198,6 +228,7 @@ vtkSmartPointer<vtkPolyData> readMesh(const std::string& path)
   }
   if (ext == "stl")
   {
+    checkBinaryStlSize(surfacemaps::readTextFile(path), path);
     auto reader = vtkSmartPointer<vtkSTLReader>::New();
     reader->SetFileName(path.c_str());
     reader->MergingOn(); // STL repeats every vertex per triangle
@@ -210,6 +241,8 @@ vtkSmartPointer<vtkPolyData> readMesh(const std::string& path)
     {
       throw surfacemaps::InputError(path + ": not a VTK XML PolyData (.vtp) file");
     }
+    // VTK's XML reader allocates by the piece's counts before reading data.
+    surfacemaps::checkXmlPolyDataCounts(surfacemaps::readTextFile(path), path);
     reader->SetFileName(path.c_str());
     return readWithVTK(reader, path);
   }

@@ -528,3 +528,26 @@ def test_python_transfer_refuses_what_the_command_line_refuses(two_maps, tmp_pat
     with pytest.raises(surfacemaps.InputError, match="report.json is missing"):
         surfacemaps.transfer(mixed, 0, 1)
     assert surfacemaps.transfer(two_maps[0], 0, 1).GetNumberOfPoints() > 0
+
+
+# Weak spot: a truncated binary STL is named truncated, not "not closed".
+
+def test_truncated_binary_stl_is_named_truncated(tmp_path):
+    from vtkmodules.vtkIOGeometry import vtkSTLReader, vtkSTLWriter
+    reader = vtkSTLReader()
+    reader.SetFileName(data("ellipsoid_coarse.stl"))
+    writer = vtkSTLWriter()
+    writer.SetInputConnection(reader.GetOutputPort())
+    writer.SetFileTypeToBinary()
+    whole = tmp_path / "whole.stl"
+    writer.SetFileName(str(whole))
+    assert writer.Write() == 1
+    assert run("check", whole).returncode == 0
+    content = whole.read_bytes()
+    cut = tmp_path / "cut.stl"
+    cut.write_bytes(content[:-30])
+    r = run("check", cut)
+    assert r.returncode == 2, (r.stdout, r.stderr)
+    triangles = (len(content) - 84) // 50
+    assert (f"{cut}: the binary STL header declares {triangles} triangles ({len(content)} bytes), "
+            f"but the file has {len(content) - 30} bytes; it is truncated or corrupt") in r.stderr

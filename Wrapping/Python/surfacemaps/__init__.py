@@ -46,8 +46,12 @@ Submodules: ``surfacemaps.plots`` (distortion curves), ``surfacemaps.render``
 (offscreen pictures).
 """
 
+import math
+import os
+
 import vtkmodules.vtkCommonCore  # noqa: F401  (VTK's base classes must be loaded first)
 import vtkmodules.vtkCommonDataModel  # noqa: F401
+from vtkmodules.vtkCommonDataModel import vtkPolyData
 import vtkmodules.vtkCommonExecutionModel  # noqa: F401
 
 from .SurfaceMapsFilters import *  # noqa: F401,F403
@@ -280,8 +284,12 @@ def map_surfaces(meshes, landmarks=None, target_error=None, pairs=None, keep_lan
     j by the exact map (its connectivity), computed from the same map.
 
     Raises InputError when a mesh or its landmarks cannot be used, MapError
-    when no certified map is found, TypeError for an unknown setting.
+    when no certified map is found, TypeError for an unknown setting or for
+    `meshes` that is one file name or mesh instead of a list, ValueError for a
+    setting outside its range (or not finite), as the command line does.
     """
+    if isinstance(meshes, (str, bytes, os.PathLike, vtkPolyData)):
+        raise TypeError(f"meshes is a list of meshes or file names, e.g. [{meshes!r}], not one")
     meshes = list(meshes)
     if not meshes:
         raise InputError("no meshes to map")
@@ -293,17 +301,24 @@ def map_surfaces(meshes, landmarks=None, target_error=None, pairs=None, keep_lan
         raise ValueError(f"pairs is one of {sorted(_PAIR_MODES)}, not {pairs!r}")
     f = vtkSurfaceMapFilter()
     errors = _collect_errors(f)
-    if target_error is not None:
-        f.SetTargetError(target_error)
     if pairs is not None:
         f.SetPairMode(_PAIR_MODES[pairs])
     if keep_landmarks is not None:
         f.SetKeepLandmarks(bool(keep_landmarks))
     _set_array_transfer_modes(f, categorical, continuous)
-    known = {row["name"] for row in settings_table()} | {"SizingMode", "NumberOfThreads"}
+    table = {row["name"]: row for row in settings_table()}
+    known = set(table) | {"SizingMode", "NumberOfThreads"}
+    if target_error is not None:
+        settings = dict(settings, TargetError=target_error)
     for name, value in settings.items():
         if name not in known:
             raise TypeError(f"vtkSurfaceMapFilter has no setting {name!r}")
+        row = table.get(name)
+        if row and row["type"] in ("real", "count"):
+            number = float(value)
+            if not math.isfinite(number) or not row["minimum"] <= number <= row["maximum"]:
+                raise ValueError(f"{name} must be a finite number in [{row['minimum']:g}, "
+                                 f"{row['maximum']:g}], not {value!r}")
         getattr(f, "Set" + name)(value)
     for k, mesh in enumerate(meshes):
         f.AddInputData(_with_landmarks(mesh, None if landmarks is None else landmarks[k]))
