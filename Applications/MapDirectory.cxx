@@ -75,12 +75,6 @@ std::string stampOf(const std::string& path, const char* name)
   return array && array->GetNumberOfValues() == 1 ? array->GetValue(0) : std::string();
 }
 
-bool isMapFileName(const std::string& name)
-{
-  static const std::regex pattern("(common|mapped|embedding)_[0-9]+\\.vtp");
-  return std::regex_match(name, pattern);
-}
-
 Json::Value readReport(const std::string& directory)
 {
   const std::string path = directory + "/report.json";
@@ -150,6 +144,12 @@ std::string MapWriter::reportJson() const
     json += (k ? ",\n    " : "\n    ") + this->Records[k];
   }
   return json + "\n  ]";
+}
+
+bool isMapFileName(const std::string& name)
+{
+  static const std::regex pattern("(common|mapped|embedding)_[0-9]+\\.vtp");
+  return std::regex_match(name, pattern);
 }
 
 bool holdsMap(const std::string& directory)

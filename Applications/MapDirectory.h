@@ -42,6 +42,10 @@ private:
   std::vector<std::string> Records;
 };
 
+/// True for a name like a map file's: common_<i>.vtp, mapped_<i>.vtp,
+/// embedding_<i>.vtp.
+bool isMapFileName(const std::string& name);
+
 /// True if `directory` holds report.json or a file named like a map's
 /// (common_<i>.vtp, mapped_<i>.vtp, embedding_<i>.vtp).
 bool holdsMap(const std::string& directory);

@@ -35,6 +35,7 @@
 #include <cerrno>
 #include <cstring>
 #include <fstream>
+#include <new>
 #include <string>
 #include <vector>
 
@@ -337,7 +338,17 @@ int vtkSurfaceMeshReader::RequestData(vtkInformation*,
         throw surfacemaps::InputError("no file name given");
       }
       const std::string path = this->FileName;
-      vtkSmartPointer<vtkPolyData> mesh = readMesh(path);
+      vtkSmartPointer<vtkPolyData> mesh;
+      try
+      {
+        mesh = readMesh(path);
+      }
+      catch (const std::bad_alloc&)
+      {
+        // Counts are checked against the file size before allocating, so
+        // this is a file larger than memory, named rather than "bad_alloc".
+        throw surfacemaps::InputError(path + ": not enough memory to read it");
+      }
       if (this->LandmarkFileName && *this->LandmarkFileName)
       {
         addLandmarks(mesh, this->LandmarkFileName, path);

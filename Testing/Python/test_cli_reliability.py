@@ -551,3 +551,43 @@ def test_truncated_binary_stl_is_named_truncated(tmp_path):
     triangles = (len(content) - 84) // 50
     assert (f"{cut}: the binary STL header declares {triangles} triangles ({len(content)} bytes), "
             f"but the file has {len(content) - 30} bytes; it is truncated or corrupt") in r.stderr
+
+
+# Weak spots: transfer -o into the map's own files; --landmarks before the meshes; the pillow;
+# embed --reference without landmarks.
+
+def test_transfer_output_cannot_overwrite_the_map(two_maps, tmp_path):
+    mine = copy_map(two_maps[0], tmp_path / "mine")
+    before = (mine / "common_1.vtp").read_bytes()
+    for name in ("common_1.vtp", "report.json"):
+        r = run("transfer", mine, "--from", "0", "--to", "1", "-o", mine / name)
+        assert r.returncode == 2, (r.stdout, r.stderr)
+        assert f"would overwrite a file of the map in {mine}" in r.stderr
+    assert (mine / "common_1.vtp").read_bytes() == before
+
+
+@pytest.mark.parametrize("command", ["check", "map"])
+def test_landmarks_before_the_meshes_are_explained(tmp_path, command):
+    args = [command, "--landmarks", data("ellipsoid.pinned"), data("blob.vts")]
+    if command == "map":
+        args += ["--output-dir", tmp_path / "map"]
+    r = run(*args)
+    assert r.returncode == 2, (r.stdout, r.stderr)
+    assert "the meshes come before --landmarks" in r.stderr
+
+
+def test_pillow_is_refused_by_check(tmp_path):
+    pillow = tmp_path / "pillow.obj"
+    pillow.write_text("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\nf 1 3 2\n")
+    r = run("check", pillow)
+    assert r.returncode == 2, (r.stdout, r.stderr)
+    assert "has only 2 triangles; a closed surface needs at least 4 (a tetrahedron)" in r.stderr
+
+
+def test_embed_reference_needs_landmarks(tmp_path):
+    reference = tmp_path / "reference.vtp"
+    assert run("embed", data("ellipsoid.obj"), "--landmarks", data("ellipsoid.pinned"), "-o", reference).returncode == 0
+    r = run("embed", data("ellipsoid.obj"), "--reference", reference, "-o", tmp_path / "out.vtp")
+    assert r.returncode == 2, (r.stdout, r.stderr)
+    assert "--reference turns the embedding" in r.stderr and "give --landmarks" in r.stderr
+    assert not (tmp_path / "out.vtp").exists()
