@@ -592,7 +592,7 @@ std::vector<Seed> makeSeeds(const std::string& data, const std::string& scratch)
     {
       writer->SetCompressorTypeToNone();
     }
-    seeds.push_back({ mode.Name, writtenByVTK(writer, scratchFile + ".vtp"), "", "" });
+    seeds.push_back({ mode.Name, writtenByVTK(writer.GetPointer(), scratchFile + ".vtp"), "", "" });
   }
   for (bool binary : { false, true })
   {
@@ -601,7 +601,7 @@ std::vector<Seed> makeSeeds(const std::string& data, const std::string& scratch)
     writer->SetFileName((scratchFile + ".vtk").c_str());
     writer->SetFileType(binary ? VTK_BINARY : VTK_ASCII);
     seeds.push_back({ binary ? "derived_binary.vtk" : "derived_ascii51.vtk",
-      writtenByVTK(writer, scratchFile + ".vtk"), "", "" });
+      writtenByVTK(writer.GetPointer(), scratchFile + ".vtk"), "", "" });
   }
   std::remove((scratchFile + ".vtp").c_str());
   std::remove((scratchFile + ".vtk").c_str());
