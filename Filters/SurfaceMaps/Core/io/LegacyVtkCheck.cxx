@@ -158,10 +158,15 @@ private:
     }
   }
 
-  // A data type of `section`; strings and bits are refused.
-  std::string dataType(const std::string& section)
+  // A data type of `section`; bits are refused, and strings unless
+  // `strings` (FIELD arrays only: VTK writes string arrays there).
+  std::string dataType(const std::string& section, bool strings = false)
   {
     const std::string type = lower(this->word("a data type"));
+    if (strings && (type == "string" || type == "utf8_string"))
+    {
+      return type;
+    }
     if (binarySize(type) == 0)
     {
       this->fail(section + " has data type '" + type +
@@ -238,6 +243,50 @@ private:
                  std::to_string(values) + " values"
                      : "expected a number, got '" + std::string(t) + "'"));
       }
+    }
+  }
+
+  // Skips `values` strings: ASCII one per line; BINARY each behind a
+  // big-endian length whose first byte's top two bits give its width
+  // (11: 1 byte, 10: 2, 01: 4, 00: 8), as vtkDataWriter writes them.
+  void skipStrings(unsigned long long values, const std::string& section)
+  {
+    if (values > this->Bytes.size() - this->Position)
+    {
+      this->fail(section + " declares " + std::to_string(values) +
+        " strings, more than the rest of the file can hold");
+    }
+    this->skipRestOfLine();
+    for (unsigned long long k = 0; k < values; ++k)
+    {
+      if (this->Position >= this->Bytes.size())
+      {
+        this->fail(section + ": the file ends after " + std::to_string(k) + " of " +
+          std::to_string(values) + " strings");
+      }
+      if (!this->Binary)
+      {
+        this->skipRestOfLine();
+        continue;
+      }
+      const unsigned char first = static_cast<unsigned char>(this->Bytes[this->Position]);
+      const std::size_t width = std::size_t(1) << (3 - (first >> 6));
+      if (width > this->Bytes.size() - this->Position)
+      {
+        this->fail(section + ": string " + std::to_string(k) + " has a truncated length");
+      }
+      std::uint64_t length = first & (width == 8 ? 0xFF : 0x3F);
+      for (std::size_t b = 1; b < width; ++b)
+      {
+        length = (length << 8) | static_cast<unsigned char>(this->Bytes[this->Position + b]);
+      }
+      this->Position += width;
+      if (length > this->Bytes.size() - this->Position)
+      {
+        this->fail(section + ": string " + std::to_string(k) + " declares " +
+          std::to_string(length) + " bytes, more than the rest of the file holds");
+      }
+      this->Position += static_cast<std::size_t>(length);
     }
   }
 
@@ -414,16 +463,23 @@ private:
       const long long components = this->count("a component count");
       const long long tuples = this->count("a tuple count");
       const std::string section = "FIELD array " + name;
-      const std::string type = this->dataType(section);
+      const std::string type = this->dataType(section, true);
       if (tuples != 0 && static_cast<unsigned long long>(components) >
           std::numeric_limits<unsigned long long>::max() / static_cast<unsigned long long>(tuples))
       {
         this->fail(section + " declares " + std::to_string(components) + " x " +
           std::to_string(tuples) + " values");
       }
-      this->skipValues(static_cast<unsigned long long>(components) *
-          static_cast<unsigned long long>(tuples),
-        type, section);
+      const unsigned long long values =
+        static_cast<unsigned long long>(components) * static_cast<unsigned long long>(tuples);
+      if (binarySize(type) == 0)
+      {
+        this->skipStrings(values, section);
+      }
+      else
+      {
+        this->skipValues(values, type, section);
+      }
       this->skipMetadataIfPresent();
     }
   }
