@@ -5,8 +5,8 @@
 #include "vtkFieldData.h"
 #include "vtkNew.h"
 #include "vtkPolyData.h"
-#include "vtkStringArray.h"
-#include "vtkXMLPolyDataReader.h"
+#include "vtkSurfaceMeshReader.h"
+#include "vtkUnsignedCharArray.h"
 
 #include "vtk_jsoncpp.h"
 #include <vtksys/MD5.h>
@@ -51,28 +51,35 @@ std::string md5Hex(const std::string& bytes)
   return std::string(hex, 32);
 }
 
-void addString(vtkFieldData* fields, const char* name, const std::string& value)
+// Stamps are the text's bytes in an unsigned char array, not a string array:
+// vtkSurfaceMeshReader hands no String array to VTK's XML reader (see
+// io/XmlPolyDataCheck.h), so only numeric arrays come back from a file.
+void addStamp(vtkFieldData* fields, const char* name, const std::string& value)
 {
-  vtkNew<vtkStringArray> array;
+  vtkNew<vtkUnsignedCharArray> array;
   array->SetName(name);
-  array->InsertNextValue(value);
+  for (const char c : value)
+  {
+    array->InsertNextValue(static_cast<unsigned char>(c));
+  }
   fields->AddArray(array);
 }
 
-// The field-data string `name` of a map file, empty if unreadable or absent.
+// The stamp `name` of a map file, empty if unreadable or absent.
 std::string stampOf(const std::string& path, const char* name)
 {
-  vtkNew<vtkXMLPolyDataReader> reader;
-  if (!reader->CanReadFile(path.c_str()))
-  {
-    return {};
-  }
-  reader->SetFileName(path.c_str());
+  vtkNew<vtkSurfaceMeshReader> reader;
   ErrorCapture quiet(reader);
+  reader->SetFileName(path.c_str());
   reader->Update();
-  auto* array =
-    vtkStringArray::SafeDownCast(reader->GetOutput()->GetFieldData()->GetAbstractArray(name));
-  return array && array->GetNumberOfValues() == 1 ? array->GetValue(0) : std::string();
+  auto* array = vtkUnsignedCharArray::SafeDownCast(
+    reader->GetOutput()->GetFieldData()->GetAbstractArray(name));
+  std::string text;
+  for (vtkIdType k = 0; array && k < array->GetNumberOfValues(); ++k)
+  {
+    text += static_cast<char>(array->GetValue(k));
+  }
+  return text;
 }
 
 Json::Value readReport(const std::string& directory)
@@ -124,8 +131,8 @@ void MapWriter::write(vtkPolyData* data, const std::string& name)
   stamped->ShallowCopy(data);
   vtkNew<vtkFieldData> fields;
   fields->ShallowCopy(data->GetFieldData());
-  addString(fields, MapIdName, this->Id);
-  addString(fields, MapFileName, name);
+  addStamp(fields, MapIdName, this->Id);
+  addStamp(fields, MapFileName, name);
   stamped->SetFieldData(fields);
   const std::string path = this->Directory + "/" + name;
   writePolyDataAtomically(stamped, path);

@@ -3,7 +3,8 @@
 //
 // report.json is written last and holds the map's id and, per file of the
 // map, its size and MD5 checksum; each file also carries the map id and its
-// own name in its field data (MapId, MapFile). Readers of a map directory
+// own name in its field data (MapId, MapFile: the text's bytes in unsigned
+// char arrays). Readers of a map directory
 // (`evaluate`, `transfer`) verify every file they use against report.json,
 // so a missing, stale (from another map), swapped or modified file is
 // refused by name, and a directory whose writing was interrupted (no

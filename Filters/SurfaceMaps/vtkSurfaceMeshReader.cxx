@@ -242,9 +242,12 @@ vtkSmartPointer<vtkPolyData> readMesh(const std::string& path)
     {
       throw surfacemaps::InputError(path + ": not a VTK XML PolyData (.vtp) file");
     }
-    // VTK's XML reader allocates by the piece's counts before reading data.
-    surfacemaps::checkXmlPolyDataCounts(surfacemaps::readTextFile(path), path);
-    reader->SetFileName(path.c_str());
+    // VTK's XML reader allocates by the counts and follows the offsets it
+    // finds: it reads only checked bytes, without String arrays.
+    const std::string bytes = surfacemaps::readTextFile(path);
+    surfacemaps::checkXmlPolyDataCounts(bytes, path);
+    reader->ReadFromInputStringOn();
+    reader->SetInputString(surfacemaps::withoutStringArrays(bytes));
     return readWithVTK(reader, path);
   }
   if (ext == "vtk")

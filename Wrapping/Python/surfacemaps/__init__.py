@@ -387,6 +387,18 @@ def transfer(map_dir, source, target, arrays=None, categorical=None, continuous=
     return result
 
 
+def map_file_stamp(path, name):
+    """The stamp `name` ("MapId" or "MapFile") that `surfacemap map` put into the field data of
+    one of its files (the text's bytes in an unsigned char array); "" when absent or unreadable."""
+    try:
+        array = read_mesh(path).GetFieldData().GetAbstractArray(name)
+    except InputError:
+        return ""
+    if array is None:
+        return ""
+    return bytes(int(array.GetValue(k)) for k in range(array.GetNumberOfValues())).decode("utf-8", "replace")
+
+
 def _verify_map_files(map_dir, names):
     """Raises InputError naming the first of the files `names` of a map directory that its
     report.json does not vouch for: missing, from another map, another file of this map
@@ -416,9 +428,7 @@ def _verify_map_files(map_dir, names):
             content = f.read()
         if record.get("bytes") == len(content) and record.get("md5") == hashlib.md5(content).hexdigest():
             continue
-        fields = read_mesh(path).GetFieldData()
-        stamp = {key: (fields.GetAbstractArray(key).GetValue(0) if fields.GetAbstractArray(key) else "")
-                 for key in ("MapId", "MapFile")}
+        stamp = {key: map_file_stamp(path, key) for key in ("MapId", "MapFile")}
         if stamp["MapId"] != report["map_id"]:
             raise InputError(f"{path} belongs to another map (map id {stamp['MapId'] or 'none'}, "
                              f"{report_path} has {report['map_id']}): a stale or copied file")

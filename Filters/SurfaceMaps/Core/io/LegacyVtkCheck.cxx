@@ -297,8 +297,25 @@ private:
     {
       this->fail("not a legacy VTK file (no '# vtk DataFile Version' line)");
     }
-    const std::size_t digits = first.find_first_of("0123456789");
-    this->Version = digits == std::string::npos ? 0 : first[digits] - '0';
+    // "X.Y" exactly: VTK's reader falls back to the pre-5 cell layout on a
+    // version it cannot parse, and the layouts differ.
+    std::string version = first.substr(std::strlen("# vtk DataFile Version"));
+    version.erase(0, version.find_first_not_of(" \t"));
+    version.erase(version.find_last_not_of(" \t\r\n") + 1);
+    const std::size_t dot = version.find('.');
+    long long major, minor;
+    if (dot == std::string::npos || !parseInt(std::string_view(version).substr(0, dot), major) ||
+      !parseInt(std::string_view(version).substr(dot + 1), minor) || major < 0 || minor < 0 ||
+      version.find_first_not_of("0123456789.") != std::string::npos)
+    {
+      this->fail("unreadable file version '" + version + "'");
+    }
+    // VTK 9.1 writes and knows versions up to 5.1 and reads them as ints.
+    if (major > 5 || minor > 99)
+    {
+      this->fail("file version " + version + " is not one VTK 9.1 knows (up to 5.1)");
+    }
+    this->Version = static_cast<int>(major);
     this->skipRestOfLine(); // title
     const std::string format = lower(this->token());
     if (format != "ascii" && format != "binary")

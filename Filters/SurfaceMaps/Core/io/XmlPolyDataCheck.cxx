@@ -43,6 +43,135 @@ std::uint64_t readUnsigned(const std::string& bytes, std::size_t at, std::size_t
   return value;
 }
 
+// Decodes base64 `text` (whitespace skipped, stops at '=' or a non-base64
+// character).
+std::string decodeBase64(std::string_view text)
+{
+  std::string out;
+  unsigned buffer = 0;
+  int bits = 0;
+  for (const char c : text)
+  {
+    int value;
+    if (c >= 'A' && c <= 'Z')
+      value = c - 'A';
+    else if (c >= 'a' && c <= 'z')
+      value = c - 'a' + 26;
+    else if (c >= '0' && c <= '9')
+      value = c - '0' + 52;
+    else if (c == '+')
+      value = 62;
+    else if (c == '/')
+      value = 63;
+    else if (c == ' ' || c == '\n' || c == '\r' || c == '\t')
+      continue;
+    else
+      break;
+    buffer = (buffer << 6) | static_cast<unsigned>(value);
+    bits += 6;
+    if (bits >= 8)
+    {
+      bits -= 8;
+      out += static_cast<char>((buffer >> bits) & 0xFF);
+    }
+  }
+  return out;
+}
+
+// The layout VTK writes data blocks in: header word size, byte order and
+// whether the blocks are compressed.
+struct BlockLayout
+{
+  std::size_t headerSize = 4;
+  bool big = false;
+  bool compressed = false;
+};
+
+// Bytes a block whose header starts at `at` in `data` spans (header and
+// payload), or 0 when its header does not fit or declares an uncompressed
+// size beyond `maxUncompressed`; `header` receives the header's size.
+std::uint64_t blockSpan(const std::string& data,
+  std::size_t at,
+  const BlockLayout& layout,
+  double maxUncompressed,
+  std::uint64_t& header)
+{
+  const std::size_t h = layout.headerSize;
+  header = (layout.compressed ? 3 : 1) * h;
+  if (at > data.size() || header > data.size() - at)
+  {
+    return 0;
+  }
+  if (!layout.compressed)
+  {
+    const std::uint64_t n = readUnsigned(data, at, h, layout.big);
+    return static_cast<double>(n) > maxUncompressed ? 0 : header + n;
+  }
+  const std::uint64_t count = readUnsigned(data, at, h, layout.big);
+  const std::uint64_t blockSize = readUnsigned(data, at + h, h, layout.big);
+  const std::uint64_t lastSize = readUnsigned(data, at + 2 * h, h, layout.big);
+  if (count > (data.size() - at - header) / h || lastSize > blockSize ||
+    static_cast<double>(count) * static_cast<double>(blockSize) > maxUncompressed)
+  {
+    return 0;
+  }
+  header += count * h;
+  std::uint64_t span = header;
+  for (std::uint64_t b = 0; b < count && span <= data.size(); ++b)
+  {
+    span += readUnsigned(data, at + 3 * h + b * h, h, layout.big);
+  }
+  return span;
+}
+
+// Inline binary data (base64): the bytes of its block as VTK reads them.
+// Uncompressed blocks are encoded with their header in one piece; compressed
+// ones have the header encoded on its own, then the blocks.
+std::string inlineBlock(std::string_view content, const BlockLayout& layout)
+{
+  std::string text;
+  for (const char c : content)
+  {
+    if (c != ' ' && c != '\n' && c != '\r' && c != '\t')
+    {
+      text += c;
+    }
+  }
+  if (!layout.compressed)
+  {
+    return decodeBase64(text);
+  }
+  const std::size_t h = layout.headerSize;
+  const std::string first = decodeBase64(text.substr(0, 4 * ((h + 2) / 3)));
+  if (first.size() < h)
+  {
+    return first;
+  }
+  const std::uint64_t count = readUnsigned(first, 0, h, layout.big);
+  if (count > text.size())
+  {
+    return first; // blockSpan finds the header too short
+  }
+  const std::size_t headerChars = 4 * (((3 + count) * h + 2) / 3);
+  return decodeBase64(text.substr(0, std::min(headerChars, text.size()))) +
+    (headerChars < text.size() ? decodeBase64(text.substr(headerChars)) : std::string());
+}
+
+const std::string_view NumericTypes[] = { "Int8", "UInt8", "Int16", "UInt16", "Int32", "UInt32",
+  "Int64", "UInt64", "Float32", "Float64" };
+
+BlockLayout layoutOf(std::string_view xml)
+{
+  bool found;
+  const std::string_view file = xml.substr(0, xml.find('>'));
+  BlockLayout layout;
+  layout.headerSize = attribute(file, "header_type", found) == "UInt64" ? 8 : 4;
+  layout.big = attribute(file, "byte_order", found) == "BigEndian";
+  attribute(file, "compressor", found);
+  layout.compressed = found;
+  return layout;
+}
+
 // Raw appended data: every array's block (its header and the bytes the
 // header announces) lies inside the data section and blocks do not overlap.
 // VTK's reader follows offsets and block headers without checking them and
@@ -68,52 +197,22 @@ void checkAppendedBlocks(const std::string& bytes,
     return; // base64 or a broken section: VTK decodes and reports it itself
   }
   const std::size_t begin = underscore + 1;
-  const std::size_t length = end - begin;
-  const std::string_view file = xml.substr(0, xml.find('>'));
-  const std::size_t headerSize = attribute(file, "header_type", found) == "UInt64" ? 8 : 4;
-  const bool big = attribute(file, "byte_order", found) == "BigEndian";
-  attribute(file, "compressor", found);
-  const bool compressed = found;
+  const std::string data = bytes.substr(begin, end - begin);
+  const BlockLayout layout = layoutOf(xml);
   std::vector<std::pair<std::uint64_t, std::uint64_t>> blocks; // [offset, end)
   for (const auto& [element, offset] : offsets)
   {
-    auto fail = [&](const std::string& what)
+    std::uint64_t header;
+    const std::uint64_t span =
+      blockSpan(data, static_cast<std::size_t>(std::min<std::uint64_t>(offset, data.size() + 1)),
+        layout, MaxUncompressedPerXmlByte * static_cast<double>(bytes.size()), header);
+    if (span == 0 || span > data.size() - offset)
     {
       throw InputError(name + ": the appended data of " + std::string(element) + " at offset " +
-        std::to_string(offset) + " " + what);
-    };
-    const std::uint64_t headerEnd = offset + (compressed ? 3 : 1) * headerSize;
-    if (headerEnd > length)
-    {
-      fail("lies beyond the appended data (" + std::to_string(length) + " bytes)");
+        std::to_string(offset) + " lies beyond the " + std::to_string(data.size()) +
+        " bytes of appended data or declares more than it holds (a truncated or corrupt file)");
     }
-    std::uint64_t blockEnd = headerEnd;
-    if (!compressed)
-    {
-      blockEnd += readUnsigned(bytes, begin + offset, headerSize, big);
-    }
-    else
-    {
-      const std::uint64_t count = readUnsigned(bytes, begin + offset, headerSize, big);
-      if (count > (length - headerEnd) / headerSize)
-      {
-        fail("declares " + std::to_string(count) + " compressed blocks, more than it can hold");
-      }
-      blockEnd += count * headerSize;
-      for (std::uint64_t b = 0; b < count; ++b)
-      {
-        blockEnd += readUnsigned(bytes, begin + headerEnd + b * headerSize, headerSize, big);
-        if (blockEnd > length)
-        {
-          break;
-        }
-      }
-    }
-    if (blockEnd > length)
-    {
-      fail("declares more bytes than the appended data holds (a truncated or corrupt file)");
-    }
-    blocks.emplace_back(offset, blockEnd);
+    blocks.emplace_back(offset, offset + span);
   }
   std::sort(blocks.begin(), blocks.end());
   for (std::size_t k = 1; k < blocks.size(); ++k)
@@ -129,6 +228,43 @@ void checkAppendedBlocks(const std::string& bytes,
 
 } // namespace
 
+std::string withoutStringArrays(const std::string& bytes)
+{
+  const std::size_t xmlEnd = std::min(bytes.size(), bytes.find("<AppendedData"));
+  std::string result;
+  result.reserve(bytes.size());
+  std::size_t copied = 0;
+  for (std::size_t at = bytes.find('<'); at < xmlEnd; at = bytes.find('<', at + 1))
+  {
+    const std::size_t close = bytes.find('>', at);
+    if (close == std::string::npos || close >= xmlEnd)
+    {
+      break;
+    }
+    const std::string_view tag = std::string_view(bytes).substr(at, close - at);
+    const std::string_view element = tag.substr(0, tag.find(' '));
+    bool found;
+    if ((element != "<Array" && element != "<DataArray") ||
+      attribute(tag, "type", found) != "String")
+    {
+      continue;
+    }
+    // The element with its content: up to its end tag unless it closes itself.
+    std::size_t end = close + 1;
+    if (tag.back() != '/')
+    {
+      const std::string endTag = "</" + std::string(element.substr(1)) + ">";
+      const std::size_t endAt = bytes.find(endTag, close);
+      end = endAt == std::string::npos || endAt >= xmlEnd ? xmlEnd : endAt + endTag.size();
+    }
+    result.append(bytes, copied, at - copied);
+    copied = end;
+    at = end - 1;
+  }
+  result.append(bytes, copied, std::string::npos);
+  return result;
+}
+
 void checkXmlPolyDataCounts(const std::string& bytes, const std::string& name)
 {
   // Only the XML part: appended raw data may contain anything.
@@ -138,7 +274,12 @@ void checkXmlPolyDataCounts(const std::string& bytes, const std::string& name)
   std::vector<std::pair<std::string_view, std::uint64_t>> appendedOffsets;
   for (std::size_t at = xml.find('<'); at != std::string_view::npos; at = xml.find('<', at + 1))
   {
-    const std::string_view tag = xml.substr(at, xml.find('>', at) - at);
+    const std::size_t close = xml.find('>', at);
+    if (close == std::string_view::npos)
+    {
+      break; // an unterminated tag: VTK's XML parser reports it
+    }
+    const std::string_view tag = xml.substr(at, close - at);
     const std::string_view element = tag.substr(0, tag.find(' '));
     const bool piece = element == "<Piece";
     const bool array = element == "<DataArray" || element == "<Array";
@@ -147,6 +288,15 @@ void checkXmlPolyDataCounts(const std::string& bytes, const std::string& name)
       continue;
     }
     bool found;
+    const std::string_view type = attribute(tag, "type", found);
+    if (array && type != "String" &&
+      std::find(std::begin(NumericTypes), std::end(NumericTypes), type) == std::end(NumericTypes))
+    {
+      // VTK's reader crashes on a type it does not know.
+      throw InputError(name + ": " + std::string(element.substr(1)) + " " +
+        std::string(attribute(tag, "Name", found)) + " has type \"" + std::string(type) +
+        "\", not a numeric VTK XML data type");
+    }
     if (array && attribute(tag, "format", found) == "appended")
     {
       const std::string_view offset = attribute(tag, "offset", found);
@@ -158,6 +308,21 @@ void checkXmlPolyDataCounts(const std::string& bytes, const std::string& name)
           "\", not an offset into the appended data");
       }
       appendedOffsets.emplace_back(attribute(tag, "Name", found), static_cast<std::uint64_t>(value));
+    }
+    if (array && attribute(tag, "format", found) == "binary")
+    {
+      const std::size_t contentBegin = at + tag.size() + 1;
+      const std::string block = inlineBlock(
+        xml.substr(contentBegin, xml.find('<', contentBegin) - contentBegin), layoutOf(xml));
+      std::uint64_t header;
+      const std::uint64_t span = blockSpan(
+        block, 0, layoutOf(xml), MaxUncompressedPerXmlByte * static_cast<double>(bytes.size()), header);
+      if (span == 0 || span > block.size())
+      {
+        throw InputError(name + ": the binary data of " + std::string(element.substr(1)) + " " +
+          std::string(attribute(tag, "Name", found)) +
+          " declares more than it holds (a truncated or corrupt file)");
+      }
     }
     const char* const pieceCounts[] = { "NumberOfPoints", "NumberOfVerts", "NumberOfLines",
       "NumberOfStrips", "NumberOfPolys" };

@@ -14,7 +14,7 @@
 //
 // usage: SurfaceMapsReaderFuzz DATA_DIR SCRATCH_DIR [--mutants N] [--seed S]
 //                              [--seconds T] [--emit DIR --every K]
-//   --mutants N   mutants per seed file (default 130: 17 seeds, 2 227 inputs)
+//   --mutants N   mutants per seed file (default 250: 17 seeds, 4 267 inputs)
 //   --seconds T   bound on the time of one input (default 20)
 //   --verbose 1   name every input before reading it (to find a crash)
 //   --only EXT    only the seeds whose name ends with EXT (e.g. .vtp); the
@@ -628,7 +628,7 @@ int main(int argc, char* argv[])
   }
   const std::string data = argv[1];
   const std::string scratch = argv[2];
-  long mutantsPerSeed = 130;
+  long mutantsPerSeed = 250;
   std::uint64_t seedValue = 20;
   unsigned seconds = 20;
   std::string emitDir;
