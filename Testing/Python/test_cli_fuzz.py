@@ -23,8 +23,8 @@ TIME_BOUND = 60
 def mutants(tmp_path_factory):
     scratch = tmp_path_factory.mktemp("scratch")
     sample = tmp_path_factory.mktemp("sample")
-    # Every 16th of the same fixed-seed mutants the in-process test reads.
-    subprocess.run([FUZZ, DATA, str(scratch), "--emit", str(sample), "--every", "16"],
+    # Every 40th of the same fixed-seed mutants the in-process test reads.
+    subprocess.run([FUZZ, DATA, str(scratch), "--emit", str(sample), "--every", "40"],
                    check=True, capture_output=True, text=True, timeout=1800)
     files = sorted(os.listdir(sample))
     return sample, files
@@ -33,7 +33,7 @@ def mutants(tmp_path_factory):
 def test_sample_is_large_and_covers_every_format(mutants):
     sample, files = mutants
     meshes = [f for f in files if "_lm" not in f]
-    assert len(meshes) >= 120
+    assert len(meshes) >= 90
     extensions = {os.path.splitext(f)[1] for f in files}
     assert extensions >= {".obj", ".off", ".ply", ".stl", ".vtp", ".vtk", ".pinned", ".vts"}
 

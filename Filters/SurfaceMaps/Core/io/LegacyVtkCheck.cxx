@@ -221,14 +221,25 @@ private:
     return static_cast<long long>(raw);
   }
 
-  // Skips `values` values of `type` (ASCII: each must be a number).
-  void skipValues(unsigned long long values, const std::string& type, const std::string& section)
+  // Where `values` values of `type` start: refused unless the file can hold
+  // them, before and (BINARY: data starts on the next line) after the rest
+  // of the keyword's line.
+  void beginData(unsigned long long values, const std::string& type, const std::string& section)
   {
     this->requireRoom(values, type, section);
     if (this->Binary)
     {
       this->skipRestOfLine();
       this->requireRoom(values, type, section);
+    }
+  }
+
+  // Skips `values` values of `type` (ASCII: each must be a number).
+  void skipValues(unsigned long long values, const std::string& type, const std::string& section)
+  {
+    this->beginData(values, type, section);
+    if (this->Binary)
+    {
       this->Position += static_cast<std::size_t>(values) * binarySize(type);
       return;
     }
@@ -378,12 +389,7 @@ private:
     const long long second = this->count("a size");
     if (this->Version < 5)
     {
-      this->requireRoom(static_cast<unsigned long long>(second), "int", kind);
-      if (this->Binary)
-      {
-        this->skipRestOfLine();
-        this->requireRoom(static_cast<unsigned long long>(second), "int", kind);
-      }
+      this->beginData(static_cast<unsigned long long>(second), "int", kind);
       long long used = 0;
       for (long long c = 0; c < first; ++c)
       {
@@ -416,12 +422,7 @@ private:
     // Version 5: `first` offsets (cells + 1, or 0) and `second` point ids.
     this->expect("offsets");
     const std::string offsetType = this->dataType(kind + " OFFSETS");
-    this->requireRoom(static_cast<unsigned long long>(first), offsetType, kind + " OFFSETS");
-    if (this->Binary)
-    {
-      this->skipRestOfLine();
-      this->requireRoom(static_cast<unsigned long long>(first), offsetType, kind + " OFFSETS");
-    }
+    this->beginData(static_cast<unsigned long long>(first), offsetType, kind + " OFFSETS");
     long long previous = 0;
     for (long long k = 0; k < first; ++k)
     {
@@ -441,12 +442,7 @@ private:
     }
     this->expect("connectivity");
     const std::string idType = this->dataType(kind + " CONNECTIVITY");
-    this->requireRoom(static_cast<unsigned long long>(second), idType, kind + " CONNECTIVITY");
-    if (this->Binary)
-    {
-      this->skipRestOfLine();
-      this->requireRoom(static_cast<unsigned long long>(second), idType, kind + " CONNECTIVITY");
-    }
+    this->beginData(static_cast<unsigned long long>(second), idType, kind + " CONNECTIVITY");
     for (long long k = 0; k < second; ++k)
     {
       this->requirePoint(this->integer(idType, kind + " CONNECTIVITY"), kind, -1, k);
