@@ -21,8 +21,10 @@ std::string readTextFile(const std::string& path);
 class TextScanner
 {
 public:
+  /// A UTF-8 byte order mark at the start is skipped: it would glue itself to
+  /// the first keyword (an OBJ's first "v" would go unread).
   explicit TextScanner(std::string_view text)
-    : Text(text)
+    : Text(text.substr(text.rfind("\xEF\xBB\xBF", 0) == 0 ? 3 : 0))
   {
   }
 
