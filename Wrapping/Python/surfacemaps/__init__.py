@@ -358,8 +358,10 @@ def transfer(map_dir, source, target, arrays=None, categorical=None, continuous=
     "SourceBarycentric", or the names in `arrays`), "SourceCellId",
     "SourceBarycentric" (where on the source) and "TCoords" (the source's
     per-corner or point texture coordinates evaluated there). Raises
-    InputError for missing files, unknown array names or files that do not
-    fit together, ValueError for an array given both ways.
+    InputError for missing files, files the map's report.json does not vouch
+    for (from another map, swapped, changed: as ``surfacemap transfer``),
+    unknown array names or files that do not fit together, ValueError for an
+    array given both ways.
     """
     import os
     for name, index in (("source", source), ("target", target)):
