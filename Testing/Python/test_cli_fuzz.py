@@ -11,7 +11,7 @@ import subprocess
 
 import pytest
 
-from cli import DATA, run
+from cli import CLI, DATA
 
 FUZZ = os.environ["SURFACEMAPS_FUZZ"]
 # Seconds per `surfacemap check`; a valid seed takes well under one second,
@@ -52,10 +52,13 @@ def test_every_mutant_is_valid_or_rejected_by_name(mutants):
         else:
             args = ["check", path]
         try:
-            r = run(*args, timeout=TIME_BOUND)
+            # Bytes: messages quote the mutated file's content, which need not be UTF-8.
+            r = subprocess.run([CLI, *args], capture_output=True, timeout=TIME_BOUND)
         except subprocess.TimeoutExpired:
             broken.append(f"{name}: no answer within {TIME_BOUND} s")
             continue
+        r.stdout = r.stdout.decode("utf-8", "replace")
+        r.stderr = r.stderr.decode("utf-8", "replace")
         if "Sanitizer" in r.stderr or "runtime error" in r.stderr:
             broken.append(f"{name}: sanitizer report\n{r.stderr[-2000:]}")
         elif r.returncode == 0:
