@@ -104,11 +104,6 @@ int runEmbed(const std::vector<std::string>& args)
 
   vtkNew<vtkSphereEmbeddingFilter> embedding;
   embedding->SetInputData(input);
-  if (!reference.empty() && !hasLandmarks(input))
-  {
-    throw UsageError{ "--reference turns the embedding so that its landmarks come closest to "
-                      "the reference's: give --landmarks (or a mesh with a Landmarks array)" };
-  }
   if (!reference.empty())
   {
     vtkSmartPointer<vtkPolyData> referenceMesh = readMesh(reference);
@@ -120,6 +115,11 @@ int runEmbed(const std::vector<std::string>& args)
     {
       printError(reference + " has no SpherePosition array (write it with surfacemap embed)");
       return ExitBadInput;
+    }
+    if (!hasLandmarks(input))
+    {
+      throw UsageError{ "--reference turns the embedding so that its landmarks come closest to "
+                        "the reference's: give --landmarks (or a mesh with a Landmarks array)" };
     }
     embedding->SetReferenceData(referenceMesh);
   }

@@ -251,7 +251,7 @@ private:
       {
         this->fail(section + ": " +
           (t.empty() ? "the file ends after " + std::to_string(k) + " of " +
-                 std::to_string(values) + " values"
+                 std::to_string(values) + " values; it is truncated"
                      : "expected a number, got '" + std::string(t) + "'"));
       }
     }
