@@ -97,5 +97,6 @@ TEST(LegacyVtkCheck, RefusesWhatVtkWouldMisread)
   expectLegacyError("# vtk DataFile\nt\nASCII\nDATASET POLYDATA\n", "not a legacy VTK file");
   expectLegacyError(Header + Points + Polygons + "POINT_DATA 4\nSCALARS names string 1\n",
     "has data type 'string'");
-  expectLegacyError(Header + Points + "POLYGONS 4 16\n3 0 1 2\n3 0 x 1\n", "expected an integer, got 'x'");
+  expectLegacyError(Header + Points + "POLYGONS 4 16\n3 0 1 2\n3 0 x 1\n3 0 2 3\n3 1 3 2\n",
+    "polygons: expected an integer, got 'x'");
 }
