@@ -38,7 +38,7 @@ cmake --build build-sanitize -j "$(nproc)" --target \
 built=$(date +%s)
 
 suppressions="$PWD/CMake/Sanitizers"
-export ASAN_OPTIONS="detect_leaks=1:abort_on_error=0:strict_string_checks=1:detect_stack_use_after_return=0:check_initialization_order=1"
+export ASAN_OPTIONS="detect_leaks=1:check_initialization_order=1"
 export LSAN_OPTIONS="suppressions=$suppressions/lsan.supp:print_suppressions=0"
 export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1:suppressions=$suppressions/ubsan.supp"
 ctest --test-dir build-sanitize --output-on-failure -j "$(nproc)" -L sanitize
