@@ -744,6 +744,6 @@ int main(int argc, char* argv[])
   std::cout << tally.Inputs << " inputs from " << seeds.size() << " seeds in " << elapsed
             << " s: " << tally.Valid << " valid, " << tally.ReaderErrors
             << " rejected by the reader, " << tally.InvalidMeshes
-            << " read but invalid; " << tally.Failures << " broken contracts\n";
+            << " read but invalid; " << tally.Failures << " broken contracts" << std::endl;
   return tally.Failures == 0 ? 0 : 1;
 }
