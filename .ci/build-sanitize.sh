@@ -21,7 +21,7 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 start=$(date +%s)
-package_init=$(find "$PWD/build" -path '*/surfacemaps/__init__.py' -print -quit 2>/dev/null || true)
+package_init=$(find "$PWD/build/lib" -path '*/surfacemaps/__init__.py' -print -quit 2>/dev/null || true)
 if [ -z "$package_init" ]; then
   echo "build-sanitize: run .ci/build.sh first (the command-line tests use build/'s Python package)" >&2
   exit 1
