@@ -3,6 +3,8 @@
 import json
 import os
 
+import pytest
+
 from cli import SHORT, data, read_vtp, run
 
 
@@ -48,6 +50,9 @@ def test_map_writes_common_and_mapped_meshes_and_a_report(tmp_path):
     assert run("check", out / "common_1.vtp").returncode == 0
 
 
+@pytest.mark.skipif(os.environ.get("SURFACEMAPS_SANITIZED") == "1",
+                    reason="every input vertex is a sample under the bound: past the 300 s limit with "
+                           "AddressSanitizer on 2 cores; runs in the normal build")
 def test_max_error_bounds_every_input_vertex(tmp_path):
     out = tmp_path / "bounded"
     r = run("map", data("ellipsoid.obj"), data("blob.off"), "--landmarks", data("ellipsoid.pinned"),
