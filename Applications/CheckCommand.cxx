@@ -81,7 +81,9 @@ int runCheck(const std::vector<std::string>& args)
   }
   if (meshes.empty())
   {
-    throw UsageError{ "no mesh given" };
+    throw UsageError{ landmarks.empty()
+        ? "no mesh given"
+        : "no mesh given (the meshes come before --landmarks: check A B --landmarks FA FB)" };
   }
   if (inLandmarks && landmarks.size() != meshes.size())
   {

@@ -16,6 +16,25 @@
 namespace surfacemap
 {
 
+namespace
+{
+
+// True if `mesh` has a Landmarks array with at least one landmark (id >= 0).
+bool hasLandmarks(vtkPolyData* mesh)
+{
+  vtkDataArray* ids = mesh->GetPointData()->GetArray("Landmarks");
+  for (vtkIdType v = 0; ids && v < ids->GetNumberOfTuples(); ++v)
+  {
+    if (ids->GetComponent(v, 0) >= 0)
+    {
+      return true;
+    }
+  }
+  return false;
+}
+
+} // namespace
+
 const char* const EmbedHelp =
   "usage: surfacemap embed MESH -o OUT.vtp [--on-sphere] [--landmarks FILE]\n"
   "                        [--reference EMBEDDED.vtp]\n"
@@ -96,6 +115,11 @@ int runEmbed(const std::vector<std::string>& args)
     {
       printError(reference + " has no SpherePosition array (write it with surfacemap embed)");
       return ExitBadInput;
+    }
+    if (!hasLandmarks(input))
+    {
+      throw UsageError{ "--reference turns the embedding so that its landmarks come closest to "
+                        "the reference's: give --landmarks (or a mesh with a Landmarks array)" };
     }
     embedding->SetReferenceData(referenceMesh);
   }

@@ -3,6 +3,7 @@
 #include "CommandSupport.h"
 #include "Commands.h"
 #include "EvaluationOutputs.h"
+#include "MapDirectory.h"
 
 #include "vtkPointData.h"
 #include "vtkPolyData.h"
@@ -252,8 +253,15 @@ int evaluateMapDirectory(const std::string& directory,
   {
     outputDir = directory;
   }
+  std::vector<std::string> mapFiles;
+  for (int i = 0; i < n; ++i)
+  {
+    mapFiles.push_back(mapFileName("common", i));
+    mapFiles.push_back(mapFileName("mapped", i));
+  }
   std::string created;
-  if (n == 0 || !succeeds([&] { resolveInputs(directory, n, inputFiles); }) ||
+  if (n == 0 || !succeeds([&] { verifyMapFiles(directory, mapFiles); }) ||
+    !succeeds([&] { resolveInputs(directory, n, inputFiles); }) ||
     !prepareOutputDirectory(outputDir, "summary.json", created))
   {
     return ExitBadInput;

@@ -2,6 +2,7 @@
 #include "ArrayTransferFlags.h"
 #include "CommandSupport.h"
 #include "Commands.h"
+#include "MapDirectory.h"
 #include "SettingFlags.h"
 
 #include "vtkSurfaceMapEvaluation.h"
@@ -39,7 +40,7 @@ const char* const MapHelpIntro =
   "a coarse and a fine phase of edge splits, collapses, flips and Newton\n"
   "steps, and refinement where the exact map is distorted. The result is\n"
   "certified bijective with exact predicates. One mesh alone gives a\n"
-  "bijective remeshing. Writes, atomically:\n"
+  "bijective remeshing. Writes, each file atomically and report.json last:\n"
   "  DIR/common_<i>.vtp  T lifted onto input i (same triangles for every i),\n"
   "                      with SpherePosition, SourceCellId, SourceBarycentric,\n"
   "                      Landmarks and the input's point arrays (integer\n"
@@ -57,10 +58,15 @@ const char* const MapHelpIntro =
   "                      mapped_i): symmetric Dirichlet, area below distortion\n"
   "                      1.5 and 2, max distortion, Hausdorff distance per input\n"
   "                      (% of the bounding-box diagonal; input 0's with the\n"
-  "                      first pair only), min and mean minimum angles\n"
+  "                      first pair only), min and mean minimum angles; the\n"
+  "                      map's id and every file's size and MD5 checksum,\n"
+  "                      which 'evaluate' and 'transfer' verify\n"
   "\n"
   "  --output-dir DIR     where to write (created if missing; checked for\n"
   "                       writing before computing)\n"
+  "  --overwrite          replace an earlier map in DIR (its report.json is\n"
+  "                       removed first, then its files); without it a DIR\n"
+  "                       holding a map is refused before computing\n"
   "  --landmarks FA FB ...\n"
   "                       one landmark file per mesh, in the same order (give\n"
   "                       the meshes first); same id = corresponding points\n";
@@ -151,6 +157,7 @@ struct MapArguments
   std::string outputDir;
   /// --preset's name, "" without one.
   std::string preset;
+  bool overwrite = false;
 };
 
 MapArguments parseArguments(const std::vector<std::string>& args, vtkSurfaceMapFilter* map)
@@ -173,6 +180,10 @@ MapArguments parseArguments(const std::vector<std::string>& args, vtkSurfaceMapF
     {
       parsed.outputDir = optionValue(args, i);
     }
+    else if (a == "--overwrite")
+    {
+      parsed.overwrite = true;
+    }
     else if (parseSettingFlag(map, args, i) || parseArrayTransferFlag(map, args, i))
     {
     }
@@ -187,7 +198,9 @@ MapArguments parseArguments(const std::vector<std::string>& args, vtkSurfaceMapF
   }
   if (parsed.meshes.empty())
   {
-    throw UsageError{ "no meshes given" };
+    throw UsageError{ parsed.landmarks.empty()
+        ? "no meshes given"
+        : "no meshes given (the meshes come before --landmarks: map A B --landmarks FA FB)" };
   }
   if (parsed.outputDir.empty())
   {
@@ -392,7 +405,7 @@ std::string reportErrorBound(vtkSurfaceMapFilter* map, int n)
 // or nothing with a null `what`.
 std::string writeOutputs(vtkSurfaceMapFilter* map,
   ErrorCapture& errors,
-  const std::string& outputDir,
+  MapWriter& files,
   const char* prefix,
   const char* what,
   const char* key,
@@ -408,7 +421,7 @@ std::string writeOutputs(vtkSurfaceMapFilter* map,
   const int n = static_cast<int>(inputs.size());
   for (int i = 0; i < n; ++i)
   {
-    writePolyDataAtomically(map->GetOutput(i), outputDir + "/" + mapFileName(prefix, i));
+    files.write(map->GetOutput(i), mapFileName(prefix, i));
   }
   if (!what)
   {
@@ -454,6 +467,12 @@ int runMap(const std::vector<std::string>& args)
   {
     return ExitBadInput;
   }
+  if (!arguments.overwrite && holdsMap(arguments.outputDir))
+  {
+    throw UsageError{ arguments.outputDir +
+      " holds an earlier map (report.json or common_/mapped_/embedding_ files); give "
+      "--overwrite to replace it" };
+  }
   const auto start = std::chrono::steady_clock::now();
   ErrorCapture errors(map);
   const int computed = computeMap(map, inputs, errors);
@@ -470,14 +489,19 @@ int runMap(const std::vector<std::string>& args)
   try
   {
     const std::string& dir = arguments.outputDir;
+    // No reader takes a directory without report.json for a map, and the
+    // new report lists only the new files: an interruption from here on
+    // leaves no map rather than a mix of two.
+    removeMap(dir);
+    MapWriter files(dir);
     report += writeOutputs(
-      map, errors, dir, "common", "approximating map", "approximating_map", inputs, true);
+      map, errors, files, "common", "approximating map", "approximating_map", inputs, true);
     map->SetOutputModeToMappedFirstInput();
     report +=
-      ",\n" + writeOutputs(map, errors, dir, "mapped", "exact map", "exact_map", inputs, false);
+      ",\n" + writeOutputs(map, errors, files, "mapped", "exact map", "exact_map", inputs, false);
     map->SetOutputModeToInputEmbeddings();
-    writeOutputs(map, errors, dir, "embedding", nullptr, nullptr, inputs, false);
-    writeFileAtomically(dir + "/report.json", report + "\n}\n");
+    writeOutputs(map, errors, files, "embedding", nullptr, nullptr, inputs, false);
+    writeFileAtomically(dir + "/report.json", report + ",\n" + files.reportJson() + "\n}\n");
   }
   catch (const std::runtime_error& e)
   {

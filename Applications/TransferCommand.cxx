@@ -2,6 +2,7 @@
 #include "ArrayTransferFlags.h"
 #include "CommandSupport.h"
 #include "Commands.h"
+#include "MapDirectory.h"
 
 #include "vtkSurfaceMapTransfer.h"
 
@@ -274,14 +275,29 @@ void reportTransfer(const TransferArguments& arguments, vtkSurfaceMapTransfer* t
   std::printf("  written to %s\n", arguments.output.c_str());
 }
 
+// Throws UsageError if `output` is report.json or a map file of `directory`.
+void refuseMapFileAsOutput(const std::string& output, const std::string& directory)
+{
+  std::error_code error;
+  const auto file = std::filesystem::weakly_canonical(output, error);
+  const auto folder = std::filesystem::weakly_canonical(directory, error);
+  const std::string name = file.filename().string();
+  if (!error && file.parent_path() == folder && (name == "report.json" || isMapFileName(name)))
+  {
+    throw UsageError{ "-o " + output + " would overwrite a file of the map in " + directory };
+  }
+}
+
 } // namespace
 
 int runTransfer(const std::vector<std::string>& args)
 {
   vtkNew<vtkSurfaceMapTransfer> transfer;
   const TransferArguments arguments = parseArguments(args, transfer);
+  refuseMapFileAsOutput(arguments.output, arguments.directory);
   const std::vector<std::string> files = mapFiles(arguments);
-  if (!findMapFiles(arguments.directory, files) || !canWrite(arguments.output))
+  if (!findMapFiles(arguments.directory, files) || !canWrite(arguments.output) ||
+    !succeeds([&] { verifyMapFiles(arguments.directory, files); }))
   {
     return ExitBadInput;
   }

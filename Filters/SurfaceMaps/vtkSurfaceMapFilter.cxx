@@ -259,7 +259,7 @@ vtkSurfaceMapSettingDefinition(TargetError, double) vtkSurfaceMapSettingDefiniti
                                   vtkSurfaceMapSettingDefinition(BoundRefinementIterations, int)
                                     vtkSurfaceMapSettingDefinition(BoundMargin, double)
                                       vtkSurfaceMapSettingDefinition(BoundIterations, int)
-                                        vtkSurfaceMapSettingDefinition(ApproximationSamples, int)
+                                        vtkSurfaceMapSettingDefinition(MaxVertices, int) vtkSurfaceMapSettingDefinition(ApproximationSamples, int)
                                           vtkSurfaceMapSettingDefinition(MinEdgeLength, double)
                                             vtkSurfaceMapSettingDefinition(MaxEdgeLength, double)
                                               vtkSurfaceMapSettingDefinition(DecrementTolerance,

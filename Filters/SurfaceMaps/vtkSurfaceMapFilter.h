@@ -412,6 +412,15 @@ public:
 
   ///@{
   /**
+   * Vertex budget of T: a map whose T would grow beyond it ends without a
+   * certified result (NotCertifiedError), naming the phase. 0 (default): 20
+   * times the largest input's vertex count, at least 20 000.
+   */
+  vtkSurfaceMapSettingMacro(MaxVertices, int);
+  ///@}
+
+  ///@{
+  /**
    * Input vertices per input the approximation term uses at most.
    */
   vtkSurfaceMapSettingMacro(ApproximationSamples, int);

@@ -5,9 +5,12 @@
 
 #include "base/InputError.h"
 #include "io/LandmarkReader.h"
+#include "io/LegacyVtkCheck.h"
 #include "io/ObjReader.h"
 #include "io/OffReader.h"
 #include "io/PlyReader.h"
+#include "io/TextFile.h"
+#include "io/XmlPolyDataCheck.h"
 
 #include "vtkCallbackCommand.h"
 #include "vtkCommand.h"
@@ -32,6 +35,7 @@
 #include <cerrno>
 #include <cstring>
 #include <fstream>
+#include <new>
 #include <string>
 #include <vector>
 
@@ -165,9 +169,39 @@ vtkSmartPointer<vtkPolyData> readWithVTK(vtkAlgorithm* reader, const std::string
   return output;
 }
 
+// A binary STL (every STL that does not start with "solid") is an 80-byte
+// header, a little-endian triangle count and 50 bytes per triangle: a file
+// of another size is truncated or corrupt, which VTK's reader would turn into
+// a mesh with holes (or read past).
+void checkBinaryStlSize(const std::string& bytes, const std::string& path)
+{
+  if (bytes.compare(0, 5, "solid") == 0)
+  {
+    return;
+  }
+  if (bytes.size() < 84)
+  {
+    throw surfacemaps::InputError(path + ": a binary STL file of " + std::to_string(bytes.size()) +
+      " bytes, shorter than its 84-byte header; it is truncated");
+  }
+  unsigned long long triangles = 0;
+  for (int k = 3; k >= 0; --k)
+  {
+    triangles = (triangles << 8) | static_cast<unsigned char>(bytes[80 + k]);
+  }
+  if (84 + 50 * triangles != bytes.size())
+  {
+    throw surfacemaps::InputError(path + ": the binary STL header declares " +
+      std::to_string(triangles) + " triangles (" + std::to_string(84 + 50 * triangles) +
+      " bytes), but the file has " + std::to_string(bytes.size()) +
+      " bytes; it is truncated or corrupt");
+  }
+}
+
 vtkSmartPointer<vtkPolyData> readMesh(const std::string& path)
 {
   // Check the file up front so every format gets the same clear message.
+  surfacemaps::requireRegularFile(path);
   {
     std::ifstream probe(path, std::ios::binary);
     if (!probe)
@@ -195,6 +229,7 @@ vtkSmartPointer<vtkPolyData> readMesh(const std::string& path)
   }
   if (ext == "stl")
   {
+    checkBinaryStlSize(surfacemaps::readTextFile(path), path);
     auto reader = vtkSmartPointer<vtkSTLReader>::New();
     reader->SetFileName(path.c_str());
     reader->MergingOn(); // STL repeats every vertex per triangle
@@ -207,11 +242,19 @@ vtkSmartPointer<vtkPolyData> readMesh(const std::string& path)
     {
       throw surfacemaps::InputError(path + ": not a VTK XML PolyData (.vtp) file");
     }
-    reader->SetFileName(path.c_str());
+    // VTK's XML reader allocates by the counts and follows the offsets it
+    // finds: it reads only checked bytes, without String arrays.
+    const std::string bytes = surfacemaps::readTextFile(path);
+    surfacemaps::checkXmlPolyDataCounts(bytes, path);
+    reader->ReadFromInputStringOn();
+    reader->SetInputString(surfacemaps::withoutStringArrays(bytes));
     return readWithVTK(reader, path);
   }
   if (ext == "vtk")
   {
+    // VTK's legacy reader trusts the file's counts and indices (it crashes
+    // on an index past 2^32): nothing reaches it unchecked.
+    surfacemaps::checkLegacyVtkPolyData(surfacemaps::readTextFile(path), path);
     auto reader = vtkSmartPointer<vtkPolyDataReader>::New();
     reader->SetFileName(path.c_str());
     if (!reader->IsFilePolyData())
@@ -298,7 +341,17 @@ int vtkSurfaceMeshReader::RequestData(vtkInformation*,
         throw surfacemaps::InputError("no file name given");
       }
       const std::string path = this->FileName;
-      vtkSmartPointer<vtkPolyData> mesh = readMesh(path);
+      vtkSmartPointer<vtkPolyData> mesh;
+      try
+      {
+        mesh = readMesh(path);
+      }
+      catch (const std::bad_alloc&)
+      {
+        // Counts are checked against the file size before allocating, so
+        // this is a file larger than memory, named rather than "bad_alloc".
+        throw surfacemaps::InputError(path + ": not enough memory to read it");
+      }
       if (this->LandmarkFileName && *this->LandmarkFileName)
       {
         addLandmarks(mesh, this->LandmarkFileName, path);

@@ -37,7 +37,7 @@ def run_pair(pair, shared, surfacemap, work, extra, swap=False):
     first, second = ("b", "a") if swap else ("a", "b")
     command = ["/usr/bin/time", "-f", "%e %M", "-o", timing, surfacemap, "map", path(first), path(second),
                "--landmarks", path("landmarks_" + first), path("landmarks_" + second),
-               "--output-dir", os.path.join(out, "map")] + extra
+               "--output-dir", os.path.join(out, "map"), "--overwrite"] + extra
     with open(os.path.join(out, "map.txt"), "w") as log:
         status = subprocess.call(command, stdout=log, stderr=subprocess.STDOUT)
     seconds = peak = None

@@ -68,7 +68,7 @@ map_case() {
   echo "then \`surfacemap evaluate DIR\`."
   echo
   local status=0
-  "${timing[@]}" "$bin/surfacemap" map "$a" "$b" --landmarks "$la" "$lb" --output-dir "$work/map" \
+  "${timing[@]}" "$bin/surfacemap" map "$a" "$b" --landmarks "$la" "$lb" --output-dir "$work/map" --overwrite \
     > "$work/map.txt" 2>&1 || status=$?
   if [ "$status" -ne 0 ]; then
     echo "**surfacemap map failed (exit $status):**"

@@ -29,3 +29,21 @@ def read_vtp(path):
     reader.SetFileName(str(path))
     reader.Update()
     return reader.GetOutput()
+
+
+def refresh_report(map_dir, *names):
+    """Records the current size and MD5 of the files `names` in map_dir/report.json, as if
+    `surfacemap map` had written them: a consistent map directory whose content a test changed."""
+    import hashlib
+    import json
+    path = os.path.join(str(map_dir), "report.json")
+    with open(path) as f:
+        report = json.load(f)
+    for record in report["files"]:
+        if record["name"] in names:
+            with open(os.path.join(str(map_dir), record["name"]), "rb") as f:
+                content = f.read()
+            record["bytes"] = len(content)
+            record["md5"] = hashlib.md5(content).hexdigest()
+    with open(path, "w") as f:
+        json.dump(report, f, indent=2)

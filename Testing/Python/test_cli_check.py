@@ -39,7 +39,7 @@ BAD = [
     ("bad/truncated.obj", None, "bad/truncated.obj:164: face has 1 vertex"),
     ("bad/truncated.off", None, "declares 162 vertices, but the file ends after 81; it looks truncated"),
     ("bad/truncated.ply", None, "the file looks truncated"),
-    ("bad/truncated.vtk", None, "bad/truncated.vtk: Error reading ascii data"),
+    ("bad/truncated.vtk", None, "bad/truncated.vtk:90: POINTS: the file ends after 254 of 486 values; it is truncated"),
     ("bad/empty.obj", None, "bad/empty.obj: the file is empty"),
     ("bad/garbage.ply", None, "bad/garbage.ply: not a PLY file"),
     ("bad/duplicate_vertex.obj", None, "has 1 duplicate vertex (first: vertices 0 and 6"),

@@ -3,6 +3,7 @@
 import json
 import os
 
+
 from cli import SHORT, data, read_vtp, run
 
 

@@ -298,3 +298,297 @@ def test_non_integer_landmark_ids_are_rejected(tmp_path):
     r = run("check", half)
     assert r.returncode == 2, (r.stdout, r.stderr)
     assert f"{half} has a landmark id that is not an integer (2.5 at vertex 11)" in r.stderr
+
+
+# Defect 4: VTK's legacy reader is never handed an index it would crash on.
+
+def legacy_with_index(tmp_path, name, index):
+    """limbs_coarse.vtk (legacy 4.2, ASCII) with the first POLYGONS cell's second index replaced."""
+    lines = open(data("limbs_coarse.vtk")).read().split("\n")
+    polygons = next(i for i, line in enumerate(lines) if line.startswith("POLYGONS"))
+    cell = lines[polygons + 1].split()
+    cell[2] = str(index)
+    lines[polygons + 1] = " ".join(cell)
+    path = tmp_path / name
+    path.write_text("\n".join(lines))
+    return path, polygons + 2
+
+
+@pytest.mark.parametrize("index", [2**32 + 5, -1, 642])
+def test_legacy_polygon_index_out_of_range_is_named(tmp_path, index):
+    path, line = legacy_with_index(tmp_path, "wide.vtk", index)
+    r = run("check", path)
+    assert r.returncode == 2, (r.stdout, r.stderr)
+    assert f"{path}:{line}: polygons cell 0 uses point index {index}, out of range for 642 points" in r.stderr
+
+
+def test_legacy_huge_point_count_is_not_allocated(tmp_path):
+    text = open(data("limbs_coarse.vtk")).read().replace("POINTS 642 double", "POINTS 4294967296000 double")
+    path = tmp_path / "huge.vtk"
+    path.write_text(text)
+    r = run("check", path)
+    assert r.returncode == 2, (r.stdout, r.stderr)
+    assert f"{path}:5: declares a point count of 4294967296000, more than the file's" in r.stderr
+
+
+# Weak spots: a directory or a device given as a mesh or landmark file.
+
+def test_directory_as_mesh_is_named_as_such(tmp_path):
+    r = run("check", tmp_path)
+    assert r.returncode == 2, (r.stdout, r.stderr)
+    assert f"{tmp_path}: is a directory, not a file" in r.stderr
+
+
+@pytest.mark.parametrize("name", ["zero.obj", "zero.vtp", "zero.vtk"])
+def test_device_as_mesh_is_refused_at_once(tmp_path, name):
+    link = tmp_path / name
+    os.symlink("/dev/zero", link)
+    r = run("check", link, timeout=20)
+    assert r.returncode == 2, (r.stdout, r.stderr)
+    assert f"{link}: is not a regular file" in r.stderr
+
+
+def test_device_as_landmark_file_is_refused_at_once(tmp_path):
+    link = tmp_path / "zero.pinned"
+    os.symlink("/dev/zero", link)
+    r = run("check", data("ellipsoid.obj"), "--landmarks", link, timeout=20)
+    assert r.returncode == 2, (r.stdout, r.stderr)
+    assert f"{link}: is not a regular file" in r.stderr
+
+
+# Defect 8: every refinement loop is bounded.
+
+def icosphere_42(path):
+    """An icosahedron subdivided once onto the unit sphere: 42 vertices, 80 triangles (OBJ)."""
+    t = (1 + 5 ** 0.5) / 2
+    points = [(-1, t, 0), (1, t, 0), (-1, -t, 0), (1, -t, 0), (0, -1, t), (0, 1, t), (0, -1, -t), (0, 1, -t),
+              (t, 0, -1), (t, 0, 1), (-t, 0, -1), (-t, 0, 1)]
+    faces = [(0, 11, 5), (0, 5, 1), (0, 1, 7), (0, 7, 10), (0, 10, 11), (1, 5, 9), (5, 11, 4), (11, 10, 2),
+             (10, 7, 6), (7, 1, 8), (3, 9, 4), (3, 4, 2), (3, 2, 6), (3, 6, 8), (3, 8, 9), (4, 9, 5),
+             (2, 4, 11), (6, 2, 10), (8, 6, 7), (9, 8, 1)]
+    middle = {}
+
+    def midpoint(a, b):
+        key = (min(a, b), max(a, b))
+        if key not in middle:
+            middle[key] = len(points)
+            points.append(tuple((p + q) / 2 for p, q in zip(points[a], points[b])))
+        return middle[key]
+
+    fine = []
+    for a, b, c in faces:
+        ab, bc, ca = midpoint(a, b), midpoint(b, c), midpoint(c, a)
+        fine += [(a, ab, ca), (b, bc, ab), (c, ca, bc), (ab, bc, ca)]
+    with open(path, "w") as f:
+        for p in points:
+            n = sum(x * x for x in p) ** 0.5
+            f.write("v %r %r %r\n" % tuple(x / n for x in p))
+        for face in fine:
+            f.write("f %d %d %d\n" % tuple(v + 1 for v in face))
+    return path
+
+
+def test_small_max_error_ends_at_the_vertex_budget(tmp_path):
+    sphere = icosphere_42(tmp_path / "ico42.obj")
+    assert "vertices 42, faces 80" in run("check", sphere).stdout
+    out = tmp_path / "map"
+    r = run("map", sphere, "--max-error", "1e-6", "--max-vertices", "400", "--output-dir", out, *SHORT,
+            timeout=120)
+    assert r.returncode == 3, (r.stdout, r.stderr)
+    assert "reached its vertex budget" in r.stderr and "budget 400 (MaxVertices, --max-vertices)" in r.stderr
+    assert not (out / "common_0.vtp").exists()
+
+
+def test_error_bound_rounds_are_bounded(tmp_path):
+    sphere = icosphere_42(tmp_path / "ico42.obj")
+    r = run("map", sphere, "--max-error", "1e-6", "--bound-refinement-rounds", "1",
+            "--bound-refinement-iterations", "1", "--output-dir", tmp_path / "map", *SHORT, timeout=120)
+    assert r.returncode == 3, (r.stdout, r.stderr)
+    assert "could not be met after 1 refinement rounds" in r.stderr
+
+
+# Defect 6: a map directory is one consistent set of files, or refused.
+
+@pytest.fixture(scope="module")
+def two_maps(tmp_path_factory):
+    """Two maps of the same inputs (different runs: different map ids and embeddings)."""
+    maps = []
+    for k in range(2):
+        out = tmp_path_factory.mktemp(f"map{k}")
+        r = run("map", data("ellipsoid.obj"), data("blob.off"), "--output-dir", out, "--overwrite",
+                "--fine-iterations", str(3 + k), *SHORT[:4])
+        assert r.returncode == 0, r.stderr
+        maps.append(out)
+    return maps
+
+
+def copy_map(source, target):
+    import shutil
+    shutil.copytree(source, target)
+    return target
+
+
+def test_report_names_every_file_with_size_checksum_and_map_id(two_maps):
+    import hashlib
+    import json
+    import surfacemaps
+    report = json.loads((two_maps[0] / "report.json").read_text())
+    names = {f"{kind}_{i}.vtp" for kind in ("common", "mapped", "embedding") for i in (0, 1)}
+    assert {record["name"] for record in report["files"]} == names
+    for record in report["files"]:
+        content = (two_maps[0] / record["name"]).read_bytes()
+        assert record["bytes"] == len(content)
+        assert record["md5"] == hashlib.md5(content).hexdigest()
+        path = two_maps[0] / record["name"]
+        assert surfacemaps.map_file_stamp(path, "MapId") == report["map_id"]
+        assert surfacemaps.map_file_stamp(path, "MapFile") == record["name"]
+    other = json.loads((two_maps[1] / "report.json").read_text())
+    assert len(report["map_id"]) == 32 and other["map_id"] != report["map_id"]
+
+
+def transfer_and_evaluate(directory, tmp_path):
+    out = tmp_path / "out.vtp"
+    return (run("transfer", directory, "--from", "0", "--to", "1", "-o", out),
+            run("evaluate", directory, "--output-dir", tmp_path / "evaluation"))
+
+
+def test_a_stale_file_from_another_map_is_refused(two_maps, tmp_path):
+    import shutil
+    mixed = copy_map(two_maps[0], tmp_path / "mixed")
+    for name in ("embedding_1.vtp", "common_1.vtp"):
+        shutil.copy(two_maps[1] / name, mixed / name)
+    shutil.copy(two_maps[1] / "mapped_1.vtp", mixed / "mapped_1.vtp")
+    for r in transfer_and_evaluate(mixed, tmp_path):
+        assert r.returncode == 2, (r.stdout, r.stderr)
+        assert "belongs to another map" in r.stderr and "a stale or copied file" in r.stderr
+    assert not (tmp_path / "out.vtp").exists()
+
+
+def test_swapped_embeddings_are_refused(two_maps, tmp_path):
+    swapped = copy_map(two_maps[0], tmp_path / "swapped")
+    (swapped / "embedding_0.vtp").rename(swapped / "tmp.vtp")
+    (swapped / "embedding_1.vtp").rename(swapped / "embedding_0.vtp")
+    (swapped / "tmp.vtp").rename(swapped / "embedding_1.vtp")
+    r = run("transfer", swapped, "--from", "0", "--to", "1", "-o", tmp_path / "out.vtp")
+    assert r.returncode == 2, (r.stdout, r.stderr)
+    assert "is embedding_0.vtp of this map, not embedding_1.vtp: swapped or renamed" in r.stderr
+
+
+def test_a_rotated_embedding_is_refused(two_maps, tmp_path):
+    from vtkmodules.vtkIOXML import vtkXMLPolyDataWriter
+    rotated = copy_map(two_maps[0], tmp_path / "rotated")
+    mesh = read_vtp(rotated / "embedding_1.vtp")
+    sphere = mesh.GetPointData().GetArray("SpherePosition")
+    for v in range(sphere.GetNumberOfTuples()):
+        x, y, z = sphere.GetTuple3(v)
+        sphere.SetTuple3(v, -y, x, z)  # 90 degrees about z: still a bijective embedding
+    writer = vtkXMLPolyDataWriter()
+    writer.SetInputData(mesh)
+    writer.SetFileName(str(rotated / "embedding_1.vtp"))
+    assert writer.Write() == 1
+    r = run("transfer", rotated, "--from", "0", "--to", "1", "-o", tmp_path / "out.vtp")
+    assert r.returncode == 2, (r.stdout, r.stderr)
+    assert f"{rotated / 'embedding_1.vtp'} was changed after the map was written" in r.stderr
+
+
+def test_missing_report_or_file_is_refused(two_maps, tmp_path):
+    incomplete = copy_map(two_maps[0], tmp_path / "incomplete")
+    (incomplete / "report.json").unlink()
+    for r in transfer_and_evaluate(incomplete, tmp_path):
+        assert r.returncode == 2, (r.stdout, r.stderr)
+        assert "report.json is missing: the directory holds no complete map" in r.stderr
+
+
+def test_map_refuses_an_earlier_map_without_overwrite(two_maps, tmp_path):
+    import json
+    target = copy_map(two_maps[0], tmp_path / "again")
+    before = (target / "report.json").read_text()
+    r = run("map", data("ellipsoid.obj"), data("blob.off"), "--output-dir", target, *SHORT)
+    assert r.returncode == 2, (r.stdout, r.stderr)
+    assert "holds an earlier map" in r.stderr and "--overwrite" in r.stderr
+    assert (target / "report.json").read_text() == before
+    # With --overwrite the earlier map is replaced as a whole: a third input's files go too.
+    (target / "common_2.vtp").write_bytes((target / "common_1.vtp").read_bytes())
+    r = run("map", data("ellipsoid.obj"), data("blob.off"), "--output-dir", target, "--overwrite", *SHORT)
+    assert r.returncode == 0, r.stderr
+    assert not (target / "common_2.vtp").exists()
+    report = json.loads((target / "report.json").read_text())
+    assert report["map_id"] != json.loads(before)["map_id"]
+    r, e = transfer_and_evaluate(target, tmp_path)
+    assert r.returncode == 0 and e.returncode == 0, (r.stderr, e.stderr)
+
+
+def test_python_transfer_refuses_what_the_command_line_refuses(two_maps, tmp_path):
+    import shutil
+    import surfacemaps
+    mixed = copy_map(two_maps[0], tmp_path / "mixed")
+    shutil.copy(two_maps[1] / "embedding_1.vtp", mixed / "embedding_1.vtp")
+    with pytest.raises(surfacemaps.InputError, match="embedding_1.vtp belongs to another map"):
+        surfacemaps.transfer(mixed, 0, 1)
+    (mixed / "report.json").unlink()
+    with pytest.raises(surfacemaps.InputError, match="report.json is missing"):
+        surfacemaps.transfer(mixed, 0, 1)
+    assert surfacemaps.transfer(two_maps[0], 0, 1).GetNumberOfPoints() > 0
+
+
+# Weak spot: a truncated binary STL is named truncated, not "not closed".
+
+def test_truncated_binary_stl_is_named_truncated(tmp_path):
+    from vtkmodules.vtkIOGeometry import vtkSTLReader, vtkSTLWriter
+    reader = vtkSTLReader()
+    reader.SetFileName(data("ellipsoid_coarse.stl"))
+    writer = vtkSTLWriter()
+    writer.SetInputConnection(reader.GetOutputPort())
+    writer.SetFileTypeToBinary()
+    whole = tmp_path / "whole.stl"
+    writer.SetFileName(str(whole))
+    assert writer.Write() == 1
+    assert run("check", whole).returncode == 0
+    content = whole.read_bytes()
+    cut = tmp_path / "cut.stl"
+    cut.write_bytes(content[:-30])
+    r = run("check", cut)
+    assert r.returncode == 2, (r.stdout, r.stderr)
+    triangles = (len(content) - 84) // 50
+    assert (f"{cut}: the binary STL header declares {triangles} triangles ({len(content)} bytes), "
+            f"but the file has {len(content) - 30} bytes; it is truncated or corrupt") in r.stderr
+
+
+# Weak spots: transfer -o into the map's own files; --landmarks before the meshes; the pillow;
+# embed --reference without landmarks.
+
+def test_transfer_output_cannot_overwrite_the_map(two_maps, tmp_path):
+    mine = copy_map(two_maps[0], tmp_path / "mine")
+    before = (mine / "common_1.vtp").read_bytes()
+    for name in ("common_1.vtp", "report.json"):
+        r = run("transfer", mine, "--from", "0", "--to", "1", "-o", mine / name)
+        assert r.returncode == 2, (r.stdout, r.stderr)
+        assert f"would overwrite a file of the map in {mine}" in r.stderr
+    assert (mine / "common_1.vtp").read_bytes() == before
+
+
+@pytest.mark.parametrize("command", ["check", "map"])
+def test_landmarks_before_the_meshes_are_explained(tmp_path, command):
+    args = [command, "--landmarks", data("ellipsoid.pinned"), data("blob.vts")]
+    if command == "map":
+        args += ["--output-dir", tmp_path / "map"]
+    r = run(*args)
+    assert r.returncode == 2, (r.stdout, r.stderr)
+    assert "the meshes come before --landmarks" in r.stderr
+
+
+def test_pillow_is_refused_by_check(tmp_path):
+    pillow = tmp_path / "pillow.obj"
+    pillow.write_text("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\nf 1 3 2\n")
+    r = run("check", pillow)
+    assert r.returncode == 2, (r.stdout, r.stderr)
+    assert "has only 2 triangles; a closed surface needs at least 4 (a tetrahedron)" in r.stderr
+
+
+def test_embed_reference_needs_landmarks(tmp_path):
+    reference = tmp_path / "reference.vtp"
+    assert run("embed", data("ellipsoid.obj"), "--landmarks", data("ellipsoid.pinned"), "-o", reference).returncode == 0
+    r = run("embed", data("ellipsoid.obj"), "--reference", reference, "-o", tmp_path / "out.vtp")
+    assert r.returncode == 2, (r.stdout, r.stderr)
+    assert "--reference turns the embedding" in r.stderr and "give --landmarks" in r.stderr
+    assert not (tmp_path / "out.vtp").exists()

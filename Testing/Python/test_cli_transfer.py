@@ -5,7 +5,7 @@ import shutil
 
 import pytest
 
-from cli import SHORT, data, read_vtp, run
+from cli import SHORT, data, read_vtp, refresh_report, run
 
 
 def write_vtp(mesh, path):
@@ -237,6 +237,7 @@ def test_files_that_do_not_fit_are_bad_input(map_dir, tmp_path):
     copy = tmp_path / "copy"
     shutil.copytree(map_dir, copy)
     shutil.copy(copy / "embedding_1.vtp", copy / "common_1.vtp")
+    refresh_report(copy, "common_1.vtp")  # consistent as a directory, not as a map
     r = run("transfer", copy, "--from", "1", "--to", "0", "-o", tmp_path / "out.vtp")
     assert r.returncode == 2
     assert "common_1.vtp" in r.stderr and "do not hold the same common triangulation" in r.stderr

@@ -51,8 +51,12 @@ Submodules: ``surfacemaps.plots`` (distortion curves), ``surfacemaps.render``
 (offscreen pictures).
 """
 
+import math
+import os
+
 import vtkmodules.vtkCommonCore  # noqa: F401  (VTK's base classes must be loaded first)
 import vtkmodules.vtkCommonDataModel  # noqa: F401
+from vtkmodules.vtkCommonDataModel import vtkPolyData
 import vtkmodules.vtkCommonExecutionModel  # noqa: F401
 
 from .SurfaceMapsFilters import *  # noqa: F401,F403
@@ -296,8 +300,12 @@ def map_surfaces(meshes, landmarks=None, target_error=None, pairs=None, keep_lan
     j by the exact map (its connectivity), computed from the same map.
 
     Raises InputError when a mesh or its landmarks cannot be used, MapError
-    when no certified map is found, TypeError for an unknown setting.
+    when no certified map is found, TypeError for an unknown setting or for
+    `meshes` that is one file name or mesh instead of a list, ValueError for a
+    setting outside its range (or not finite), as the command line does.
     """
+    if isinstance(meshes, (str, bytes, os.PathLike, vtkPolyData)):
+        raise TypeError(f"meshes is a list of meshes or file names, e.g. [{meshes!r}], not one")
     meshes = list(meshes)
     if not meshes:
         raise InputError("no meshes to map")
@@ -314,17 +322,24 @@ def map_surfaces(meshes, landmarks=None, target_error=None, pairs=None, keep_lan
         if preset not in names:
             raise ValueError(f"preset is one of {names}, not {preset!r}")
         f.ApplyPreset(names.index(preset))
-    if target_error is not None:
-        f.SetTargetError(target_error)
     if pairs is not None:
         f.SetPairMode(_PAIR_MODES[pairs])
     if keep_landmarks is not None:
         f.SetKeepLandmarks(bool(keep_landmarks))
     _set_array_transfer_modes(f, categorical, continuous)
-    known = {row["name"] for row in settings_table()} | {"SizingMode", "NumberOfThreads"}
+    table = {row["name"]: row for row in settings_table()}
+    known = set(table) | {"SizingMode", "NumberOfThreads"}
+    if target_error is not None:
+        settings = dict(settings, TargetError=target_error)
     for name, value in settings.items():
         if name not in known:
             raise TypeError(f"vtkSurfaceMapFilter has no setting {name!r}")
+        row = table.get(name)
+        if row and row["type"] in ("real", "count"):
+            number = float(value)
+            if not math.isfinite(number) or not row["minimum"] <= number <= row["maximum"]:
+                raise ValueError(f"{name} must be a finite number in [{row['minimum']:g}, "
+                                 f"{row['maximum']:g}], not {value!r}")
         getattr(f, "Set" + name)(value)
     for k, mesh in enumerate(meshes):
         f.AddInputData(_with_landmarks(mesh, None if landmarks is None else landmarks[k]))
@@ -364,8 +379,10 @@ def transfer(map_dir, source, target, arrays=None, categorical=None, continuous=
     "SourceBarycentric", or the names in `arrays`), "SourceCellId",
     "SourceBarycentric" (where on the source) and "TCoords" (the source's
     per-corner or point texture coordinates evaluated there). Raises
-    InputError for missing files, unknown array names or files that do not
-    fit together, ValueError for an array given both ways.
+    InputError for missing files, files the map's report.json does not vouch
+    for (from another map, swapped, changed: as ``surfacemap transfer``),
+    unknown array names or files that do not fit together, ValueError for an
+    array given both ways.
     """
     import os
     for name, index in (("source", source), ("target", target)):
@@ -376,6 +393,7 @@ def transfer(map_dir, source, target, arrays=None, categorical=None, continuous=
     missing = sorted({os.path.basename(f) for f in files if not os.path.isfile(f)})
     if missing:
         raise InputError(f"{map_dir} has no {', '.join(missing)} (written by 'surfacemap map')")
+    _verify_map_files(str(map_dir), [os.path.basename(f) for f in files])
     t = vtkSurfaceMapTransfer()
     _set_array_transfer_modes(t, categorical, continuous)
     errors = _collect_errors(t)
@@ -390,6 +408,57 @@ def transfer(map_dir, source, target, arrays=None, categorical=None, continuous=
     result = t.GetOutput().NewInstance()
     result.ShallowCopy(t.GetOutput())
     return result
+
+
+def map_file_stamp(path, name):
+    """The stamp `name` ("MapId" or "MapFile") that `surfacemap map` put into the field data of
+    one of its files (the text's bytes in an unsigned char array); "" when absent or unreadable."""
+    try:
+        array = read_mesh(path).GetFieldData().GetAbstractArray(name)
+    except InputError:
+        return ""
+    if array is None:
+        return ""
+    return bytes(int(array.GetValue(k)) for k in range(array.GetNumberOfValues())).decode("utf-8", "replace")
+
+
+def _verify_map_files(map_dir, names):
+    """Raises InputError naming the first of the files `names` of a map directory that its
+    report.json does not vouch for: missing, from another map, another file of this map
+    (swapped, renamed) or changed (size or MD5 differ), as `surfacemap transfer` does."""
+    import hashlib
+    import json
+    import os
+    report_path = os.path.join(map_dir, "report.json")
+    try:
+        with open(report_path) as f:
+            report = json.load(f)
+    except FileNotFoundError:
+        raise InputError(f"{report_path} is missing: the directory holds no complete map "
+                         "(was 'surfacemap map' interrupted?)") from None
+    except ValueError:
+        raise InputError(f"{report_path} is not valid JSON") from None
+    if not isinstance(report.get("map_id"), str) or not isinstance(report.get("files"), list):
+        raise InputError(f"{report_path} has no map id and file checksums (\"map_id\", \"files\"): "
+                         "written by an older surfacemap; run 'surfacemap map' again")
+    records = {r.get("name"): r for r in report["files"] if isinstance(r, dict)}
+    for name in names:
+        path = os.path.join(map_dir, name)
+        record = records.get(name)
+        if record is None:
+            raise InputError(f"{path} is not a file of the map {report_path} describes")
+        with open(path, "rb") as f:
+            content = f.read()
+        if record.get("bytes") == len(content) and record.get("md5") == hashlib.md5(content).hexdigest():
+            continue
+        stamp = {key: map_file_stamp(path, key) for key in ("MapId", "MapFile")}
+        if stamp["MapId"] != report["map_id"]:
+            raise InputError(f"{path} belongs to another map (map id {stamp['MapId'] or 'none'}, "
+                             f"{report_path} has {report['map_id']}): a stale or copied file")
+        if stamp["MapFile"] != name:
+            raise InputError(f"{path} is {stamp['MapFile']} of this map, not {name}: swapped or renamed")
+        raise InputError(f"{path} was changed after the map was written (its size or checksum differs "
+                         f"from {report_path})")
 
 
 _ALIGN_MODES = {"none": vtkSurfaceAverage.ALIGN_NONE, "rigid": vtkSurfaceAverage.ALIGN_RIGID,

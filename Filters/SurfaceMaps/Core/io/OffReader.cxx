@@ -3,6 +3,7 @@
 #include "base/InputError.h"
 #include "io/TextFile.h"
 
+#include <algorithm>
 #include <vector>
 
 namespace surfacemaps
@@ -19,13 +20,18 @@ public:
   OffParser(const std::string& text, const std::string& name)
     : Name(name)
     , Scanner(text)
+    , TextSize(text.size())
   {
   }
 
   PolygonMesh parse()
   {
     this->readCounts(this->readHeader());
-    this->Mesh.points.reserve(static_cast<std::size_t>(this->NumberOfVertices));
+    // A count is only a promise: reserve no more than the text can hold
+    // (a vertex takes at least 6 bytes, "0 0 0\n"), so a huge count in a
+    // small file is reported as truncation instead of allocated.
+    this->Mesh.points.reserve(static_cast<std::size_t>(
+      std::min<long long>(this->NumberOfVertices, static_cast<long long>(this->TextSize / 6))));
     for (long long v = 0; v < this->NumberOfVertices; ++v)
     {
       this->readVertex(v);
@@ -50,6 +56,7 @@ private:
 
   const std::string& Name;
   TextScanner Scanner;
+  std::size_t TextSize;
   PolygonMesh Mesh;
   long long NumberOfVertices = 0;
   long long NumberOfFaces = 0;

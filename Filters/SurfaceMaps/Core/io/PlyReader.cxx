@@ -380,6 +380,10 @@ void MeshBuilder::readElement(const Element& e)
   const bool isFace = e.name == "face";
   const std::array<int, 3> xyz =
     isVertex ? this->coordinateProperties(e) : std::array<int, 3>{ -1, -1, -1 };
+  if (e.properties.empty())
+  {
+    return; // nothing to read however many instances it declares
+  }
   std::vector<double> values(e.properties.size());
   for (long long i = 0; i < e.count; ++i)
   {
@@ -472,11 +476,15 @@ void MeshBuilder::addFace(long long i)
 {
   for (double v : this->List)
   {
-    if (v < 0 || v >= static_cast<double>(this->Mesh.points.size()) ||
+    // In range first: only then is the conversion to an integer defined.
+    if (!(v >= 0 && v < static_cast<double>(this->Mesh.points.size())) ||
       v != static_cast<long long>(v))
     {
+      std::ostringstream index;
+      index.precision(17);
+      index << v;
       throw InputError(this->Name + ": face " + std::to_string(i) + " refers to vertex " +
-        std::to_string(static_cast<long long>(v)) + ", but the file has " +
+        index.str() + ", but the file has " +
         std::to_string(this->Mesh.points.size()) + " vertices");
     }
     this->Mesh.faceVertices.push_back(static_cast<int>(v));

@@ -5,14 +5,29 @@
 #include <cerrno>
 #include <charconv>
 #include <cstring>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 
 namespace surfacemaps
 {
 
+void requireRegularFile(const std::string& path)
+{
+  std::error_code error;
+  const std::filesystem::file_status status = std::filesystem::status(path, error);
+  if (error || !std::filesystem::exists(status) || std::filesystem::is_regular_file(status))
+  {
+    return; // missing or unreadable files are reported by the open that follows
+  }
+  throw InputError(path + (std::filesystem::is_directory(status)
+                              ? ": is a directory, not a file"
+                              : ": is not a regular file (a device, FIFO or socket)"));
+}
+
 std::string readTextFile(const std::string& path)
 {
+  requireRegularFile(path);
   std::ifstream in(path, std::ios::binary);
   if (!in)
   {

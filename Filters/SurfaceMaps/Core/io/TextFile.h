@@ -7,7 +7,12 @@
 namespace surfacemaps
 {
 
-/// Reads a whole file into memory. Throws InputError naming the file when it
+/// Throws InputError naming `path` when it exists but is not a regular file
+/// (a directory, a device such as /dev/zero, a FIFO): reading one would say
+/// "empty" or never end. Symbolic links are followed.
+void requireRegularFile(const std::string& path);
+
+/// Reads a whole regular file into memory. Throws InputError naming the file when it
 /// cannot be opened or read.
 std::string readTextFile(const std::string& path);
 
@@ -16,8 +21,10 @@ std::string readTextFile(const std::string& path);
 class TextScanner
 {
 public:
+  /// A UTF-8 byte order mark at the start is skipped: it would glue itself to
+  /// the first keyword (an OBJ's first "v" would go unread).
   explicit TextScanner(std::string_view text)
-    : Text(text)
+    : Text(text.substr(text.rfind("\xEF\xBB\xBF", 0) == 0 ? 3 : 0))
   {
   }
 

@@ -65,6 +65,13 @@ struct SurfaceMapOptions
   double boundMargin = 0.9;
   int boundIterations = 20;
 
+  // Resource bound: the common triangulation's vertex count at most, checked
+  // after every remeshing (0: 20 times the largest input's vertex count, at
+  // least 20 000). Reaching it ends the map without a certified result, so
+  // that a bound or target error finer than the budget allows cannot run for
+  // ever.
+  int maxVertices = 0;
+
   // Energy and solver details.
   int approximationSamples = 50000;
   double minEdgeLength = 1e-3;

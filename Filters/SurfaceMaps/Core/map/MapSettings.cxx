@@ -274,6 +274,13 @@ void boundSettings(std::vector<MapSetting>& table)
 /// Energy and solver details.
 void detailSettings(std::vector<MapSetting>& table)
 {
+  table.push_back(count("MaxVertices",
+    "max-vertices",
+    &Options::maxVertices,
+    0,
+    1e9,
+    "Vertex budget of T: a map whose T would grow beyond it ends without a certified result, "
+    "naming the phase (0: 20 times the largest input's vertex count, at least 20 000)."));
   table.push_back(count("ApproximationSamples",
     "approximation-samples",
     &Options::approximationSamples,

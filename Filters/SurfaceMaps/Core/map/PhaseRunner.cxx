@@ -34,6 +34,14 @@ PhaseRunner::PhaseRunner(CommonTriangulation& T,
   , Targets(std::move(targets))
   , PlannedIterations(std::max(1, plannedIterations))
 {
+  std::size_t largest = 0;
+  for (const PreparedInput& s : surfaces)
+  {
+    largest = std::max(largest, s.points.size());
+  }
+  this->VertexBudget = options.maxVertices > 0
+    ? static_cast<std::size_t>(options.maxVertices)
+    : std::max<std::size_t>(20000, 20 * largest);
 }
 
 double PhaseRunner::landmarkError() const
@@ -74,6 +82,14 @@ MapPhaseReport PhaseRunner::run(const MapPhase& phase)
   for (int it = 0; it < phase.iterations; ++it)
   {
     const RemeshingResult edits = this->remeshing(phase.untilLandmarks && reached, report);
+    if (this->T.mesh().n_vertices() > this->VertexBudget)
+    {
+      throw std::runtime_error("the common triangulation reached its vertex budget in the " +
+        std::string(name) + " phase (iteration " + std::to_string(it + 1) + "): " +
+        std::to_string(this->T.mesh().n_vertices()) + " vertices, budget " +
+        std::to_string(this->VertexBudget) +
+        " (MaxVertices, --max-vertices); the target error or error bound asks for a finer T");
+    }
     const NewtonStepResult step = this->newtonIteration(phase, solver, objective, report);
     report.iterations = it + 1;
     report.energy = step.energyAfter;

@@ -60,6 +60,8 @@ private:
   std::vector<std::map<int, Eigen::Vector3d>> Targets;
   int PlannedIterations;
   int Done = 0;
+  /// T's vertex count at most (SurfaceMapOptions::maxVertices).
+  std::size_t VertexBudget = 0;
 };
 
 } // namespace surfacemaps

@@ -563,6 +563,14 @@ void checkTopology(const PolygonMesh& mesh, MeshValidationResult& result)
       result.defects.push_back("has genus " + std::to_string(stats.genus) +
         "; a genus-0 (sphere-like) surface is required");
     }
+    // Two triangles glued back to back (a pillow) are closed and genus 0
+    // but enclose nothing: every triangle's chords on the sphere would be
+    // one flat triangle, which no embedding can make positively oriented.
+    else if (mesh.numberOfFaces() < 4)
+    {
+      result.defects.push_back("has only " + std::to_string(mesh.numberOfFaces()) +
+        " triangles; a closed surface needs at least 4 (a tetrahedron)");
+    }
   }
 }
 

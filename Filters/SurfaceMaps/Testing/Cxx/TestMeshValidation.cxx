@@ -87,6 +87,17 @@ TEST(MeshValidation, Empty)
   EXPECT_TRUE(onlyDefect(validateMesh(points), "contains no triangles"));
 }
 
+TEST(MeshValidation, PillowOfTwoTrianglesIsNoSurface)
+{
+  PolygonMesh pillow;
+  pillow.points = { { 0, 0, 0 }, { 1, 0, 0 }, { 0, 1, 0 } };
+  pillow.addFace({ 0, 1, 2 });
+  pillow.addFace({ 0, 2, 1 });
+  const MeshValidationResult r = validateMesh(pillow);
+  EXPECT_TRUE(onlyDefect(r, "has only 2 triangles; a closed surface needs at least 4"));
+  EXPECT_EQ(r.statistics.genus, 0);
+}
+
 TEST(MeshValidation, Torus)
 {
   const MeshValidationResult r = validateMesh(makeTorus(12, 6));

@@ -57,6 +57,14 @@ TEST(ObjReader, NonFiniteCoordinatesAreReadNotRejected)
   EXPECT_TRUE(std::isnan(mesh.points[0].x()));
 }
 
+TEST(ObjReader, ByteOrderMarkIsSkipped)
+{
+  const PolygonMesh mesh = parseObj("\xEF\xBB\xBFv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n", "bom.obj");
+  EXPECT_EQ(mesh.points.size(), 3u);
+  EXPECT_EQ(mesh.numberOfFaces(), 1u);
+  expectObjError("\xEF\xBB\xBFv 0 0 0\nv 1 0 0\nf 1 2 9\n", "mesh.obj:3:");
+}
+
 TEST(ObjReader, LinesAreCountedAsNonPolygonCells)
 {
   const PolygonMesh mesh = parseObj("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\nl 1 2\n", "m");

@@ -148,7 +148,7 @@ TEST(SurfaceMeshReader, ErrorsLeaveAnEmptyOutputAndNameTheFile)
          Case{ bad + "truncated.obj", "", "looks truncated" },
          Case{ bad + "truncated.off", "", "declares 162 vertices, but the file ends after 81" },
          Case{ bad + "truncated.ply", "", "the file looks truncated" },
-         Case{ bad + "truncated.vtk", "", "Error reading ascii data" },
+         Case{ bad + "truncated.vtk", "", "truncated.vtk:90: POINTS: the file ends after 254 of 486 values; it is truncated" },
          Case{ bad + "garbage.ply", "", "not a PLY file" },
          Case{ Data + "/missing.obj", "", "cannot open '" + Data + "/missing.obj'" },
          Case{ Data + "/generate_data.py", "", "unknown mesh format 'py'" },

@@ -98,3 +98,16 @@ def test_write_mesh_into_a_full_disk_raises_and_leaves_nothing(tmp_path):
     assert r.returncode == 0, r.stderr
     assert f"OSError cannot write {out}" in r.stdout
     assert os.listdir(tmp_path) == []
+
+
+def test_map_surfaces_takes_a_list_of_meshes():
+    with pytest.raises(TypeError, match="meshes is a list of meshes or file names"):
+        surfacemaps.map_surfaces(data("ellipsoid.obj"))
+
+
+@pytest.mark.parametrize("setting,value", [("MapWeight", float("nan")), ("MeshWeight", -1.0),
+                                           ("CoarseIterations", -3), ("target_error", float("inf"))])
+def test_map_settings_outside_their_range_are_refused(setting, value):
+    kwargs = {setting: value}
+    with pytest.raises(ValueError, match="must be a finite number in"):
+        surfacemaps.map_surfaces([data("ellipsoid.obj")], **kwargs)

@@ -1,0 +1,246 @@
+#include "MapDirectory.h"
+
+#include "CommandSupport.h"
+
+#include "vtkFieldData.h"
+#include "vtkNew.h"
+#include "vtkPolyData.h"
+#include "vtkSurfaceMeshReader.h"
+#include "vtkUnsignedCharArray.h"
+
+#include "vtk_jsoncpp.h"
+#include <vtksys/MD5.h>
+
+#include <filesystem>
+#include <fstream>
+#include <random>
+#include <regex>
+#include <sstream>
+#include <stdexcept>
+
+namespace surfacemap
+{
+
+namespace
+{
+
+const char* const MapIdName = "MapId";
+const char* const MapFileName = "MapFile";
+
+std::string readBytes(const std::string& path)
+{
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream bytes;
+  bytes << in.rdbuf();
+  if (!in)
+  {
+    throw std::runtime_error("cannot read '" + path + "'");
+  }
+  return bytes.str();
+}
+
+std::string md5Hex(const std::string& bytes)
+{
+  vtksysMD5* md5 = vtksysMD5_New();
+  vtksysMD5_Initialize(md5);
+  vtksysMD5_Append(md5, reinterpret_cast<const unsigned char*>(bytes.data()),
+    static_cast<int>(bytes.size()));
+  char hex[33] = {};
+  vtksysMD5_FinalizeHex(md5, hex);
+  vtksysMD5_Delete(md5);
+  return std::string(hex, 32);
+}
+
+// Stamps are the text's bytes in an unsigned char array, not a string array:
+// vtkSurfaceMeshReader hands no String array to VTK's XML reader (see
+// io/XmlPolyDataCheck.h), so only numeric arrays come back from a file.
+void addStamp(vtkFieldData* fields, const char* name, const std::string& value)
+{
+  vtkNew<vtkUnsignedCharArray> array;
+  array->SetName(name);
+  for (const char c : value)
+  {
+    array->InsertNextValue(static_cast<unsigned char>(c));
+  }
+  fields->AddArray(array);
+}
+
+// The stamp `name` of a map file, empty if unreadable or absent.
+std::string stampOf(const std::string& path, const char* name)
+{
+  vtkNew<vtkSurfaceMeshReader> reader;
+  ErrorCapture quiet(reader);
+  reader->SetFileName(path.c_str());
+  reader->Update();
+  auto* array = vtkUnsignedCharArray::SafeDownCast(
+    reader->GetOutput()->GetFieldData()->GetAbstractArray(name));
+  std::string text;
+  for (vtkIdType k = 0; array && k < array->GetNumberOfValues(); ++k)
+  {
+    text += static_cast<char>(array->GetValue(k));
+  }
+  return text;
+}
+
+Json::Value readReport(const std::string& directory)
+{
+  const std::string path = directory + "/report.json";
+  std::ifstream in(path);
+  if (!in)
+  {
+    throw std::runtime_error(path +
+      " is missing: the directory holds no complete map (was 'surfacemap map' interrupted?)");
+  }
+  Json::CharReaderBuilder builder;
+  Json::Value root;
+  std::string problems;
+  if (!Json::parseFromStream(builder, in, &root, &problems))
+  {
+    throw std::runtime_error(path + " is not valid JSON");
+  }
+  if (!root["map_id"].isString() || !root["files"].isArray())
+  {
+    throw std::runtime_error(path +
+      " has no map id and file checksums (\"map_id\", \"files\"): written by an older "
+      "surfacemap; run 'surfacemap map' again");
+  }
+  return root;
+}
+
+} // namespace
+
+MapWriter::MapWriter(std::string directory)
+  : Directory(std::move(directory))
+{
+  std::random_device device;
+  std::ostringstream id;
+  id << std::hex;
+  for (int k = 0; k < 4; ++k)
+  {
+    id.width(8);
+    id.fill('0');
+    id << device();
+  }
+  this->Id = id.str();
+}
+
+void MapWriter::write(vtkPolyData* data, const std::string& name)
+{
+  // The outputs belong to the filter: stamp a copy with fields of its own.
+  vtkNew<vtkPolyData> stamped;
+  stamped->ShallowCopy(data);
+  vtkNew<vtkFieldData> fields;
+  fields->ShallowCopy(data->GetFieldData());
+  addStamp(fields, MapIdName, this->Id);
+  addStamp(fields, MapFileName, name);
+  stamped->SetFieldData(fields);
+  const std::string path = this->Directory + "/" + name;
+  writePolyDataAtomically(stamped, path);
+  // As on disk: what readers will compare against.
+  const std::string bytes = readBytes(path);
+  this->Records.push_back("{ \"name\": " + jsonString(name) +
+    ", \"bytes\": " + std::to_string(bytes.size()) + ", \"md5\": " + jsonString(md5Hex(bytes)) +
+    " }");
+}
+
+std::string MapWriter::reportJson() const
+{
+  std::string json = "  \"map_id\": " + jsonString(this->Id) + ",\n  \"files\": [";
+  for (std::size_t k = 0; k < this->Records.size(); ++k)
+  {
+    json += (k ? ",\n    " : "\n    ") + this->Records[k];
+  }
+  return json + "\n  ]";
+}
+
+bool isMapFileName(const std::string& name)
+{
+  static const std::regex pattern("(common|mapped|embedding)_[0-9]+\\.vtp");
+  return std::regex_match(name, pattern);
+}
+
+bool holdsMap(const std::string& directory)
+{
+  std::error_code error;
+  for (const auto& entry : std::filesystem::directory_iterator(directory, error))
+  {
+    const std::string name = entry.path().filename().string();
+    if (name == "report.json" || isMapFileName(name))
+    {
+      return true;
+    }
+  }
+  return false;
+}
+
+void removeMap(const std::string& directory)
+{
+  std::vector<std::filesystem::path> files;
+  std::error_code error;
+  for (const auto& entry : std::filesystem::directory_iterator(directory, error))
+  {
+    if (isMapFileName(entry.path().filename().string()))
+    {
+      files.push_back(entry.path());
+    }
+  }
+  files.insert(files.begin(), std::filesystem::path(directory) / "report.json");
+  for (const auto& file : files)
+  {
+    std::filesystem::remove(file, error);
+    if (error)
+    {
+      throw std::runtime_error(
+        "cannot remove the earlier map's '" + file.string() + "': " + error.message());
+    }
+  }
+}
+
+void verifyMapFiles(const std::string& directory, const std::vector<std::string>& names)
+{
+  const Json::Value report = readReport(directory);
+  const std::string id = report["map_id"].asString();
+  for (const std::string& name : names)
+  {
+    const std::string path = directory + "/" + name;
+    const Json::Value* record = nullptr;
+    for (const Json::Value& file : report["files"])
+    {
+      if (file["name"].isString() && file["name"].asString() == name)
+      {
+        record = &file;
+      }
+    }
+    if (!record)
+    {
+      throw std::runtime_error(path + " is not a file of the map " + directory +
+        "/report.json describes");
+    }
+    if (!isFile(path))
+    {
+      throw std::runtime_error(path + " is missing (" + directory + "/report.json lists it)");
+    }
+    const std::string bytes = readBytes(path);
+    if ((*record)["bytes"].asUInt64() == bytes.size() && (*record)["md5"].asString() == md5Hex(bytes))
+    {
+      continue;
+    }
+    const std::string fileId = stampOf(path, MapIdName);
+    const std::string fileName = stampOf(path, MapFileName);
+    if (fileId != id)
+    {
+      throw std::runtime_error(path + " belongs to another map (map id " +
+        (fileId.empty() ? std::string("none") : fileId) + ", " + directory + "/report.json has " +
+        id + "): a stale or copied file");
+    }
+    if (fileName != name)
+    {
+      throw std::runtime_error(path + " is " + fileName +
+        " of this map, not " + name + ": swapped or renamed");
+    }
+    throw std::runtime_error(path + " was changed after the map was written (its size or "
+      "checksum differs from " + directory + "/report.json)");
+  }
+}
+
+} // namespace surfacemap
