@@ -28,16 +28,14 @@ import subprocess
 import sys
 
 
-def run_pair(pair, shared, surfacemap, work, extra, swap=False):
-    """Maps one pair (B onto A with `swap`); returns (report.json dict or None, seconds, peak MB, error text)."""
-    out = os.path.join(work, pair["name"])
+def run_map(surfacemap, arguments, out):
+    """Runs `surfacemap map ARGUMENTS --output-dir OUT/map --overwrite` timed by
+    /usr/bin/time, its output in OUT/map.txt; returns (report.json dict or None,
+    seconds, peak MB, error text)."""
     os.makedirs(out, exist_ok=True)
     timing = os.path.join(out, "time.txt")
-    path = lambda key: os.path.join(shared, pair[key])
-    first, second = ("b", "a") if swap else ("a", "b")
-    command = ["/usr/bin/time", "-f", "%e %M", "-o", timing, surfacemap, "map", path(first), path(second),
-               "--landmarks", path("landmarks_" + first), path("landmarks_" + second),
-               "--output-dir", os.path.join(out, "map"), "--overwrite"] + extra
+    command = (["/usr/bin/time", "-f", "%e %M", "-o", timing, surfacemap, "map"] + arguments +
+               ["--output-dir", os.path.join(out, "map"), "--overwrite"])
     with open(os.path.join(out, "map.txt"), "w") as log:
         status = subprocess.call(command, stdout=log, stderr=subprocess.STDOUT)
     seconds = peak = None
@@ -51,6 +49,14 @@ def run_pair(pair, shared, surfacemap, work, extra, swap=False):
         return None, seconds, peak, f"surfacemap map exited with {status} (see {out}/map.txt)"
     with open(os.path.join(out, "map", "report.json")) as f:
         return json.load(f), seconds, peak, None
+
+
+def run_pair(pair, shared, surfacemap, work, extra, swap=False):
+    """Maps one pair (B onto A with `swap`); returns what run_map returns."""
+    path = lambda key: os.path.join(shared, pair[key])
+    first, second = ("b", "a") if swap else ("a", "b")
+    return run_map(surfacemap, [path(first), path(second), "--landmarks", path("landmarks_" + first),
+                                path("landmarks_" + second)] + extra, os.path.join(work, pair["name"]))
 
 
 def ours(report, seconds, swap=False):

@@ -19,34 +19,18 @@ mapped, certified and kept its landmarks exact, 1 otherwise.
 
 import argparse
 import glob
-import json
 import os
 import platform
 import shlex
-import subprocess
 import sys
+
+from corpus_report import run_map
 
 
 def run_population(meshes, surfacemap, out, extra):
-    """Maps `meshes` (pairs of mesh and landmark file); returns (report or None, seconds, peak MB, error)."""
-    os.makedirs(out, exist_ok=True)
-    timing = os.path.join(out, "time.txt")
-    command = (["/usr/bin/time", "-f", "%e %M", "-o", timing, surfacemap, "map"] + [m for m, _ in meshes] +
-               ["--landmarks"] + [l for _, l in meshes] +
-               ["--preset", "population", "--output-dir", os.path.join(out, "map")] + extra)
-    with open(os.path.join(out, "map.txt"), "w") as log:
-        status = subprocess.call(command, stdout=log, stderr=subprocess.STDOUT)
-    seconds = peak = None
-    try:
-        with open(timing) as f:
-            seconds, kilobytes = f.read().strip().splitlines()[-1].split()[:2]
-            seconds, peak = float(seconds), float(kilobytes) / 1024.0
-    except (OSError, ValueError, IndexError):
-        pass
-    if status != 0:
-        return None, seconds, peak, f"surfacemap map exited with {status} (see {out}/map.txt)"
-    with open(os.path.join(out, "map", "report.json")) as f:
-        return json.load(f), seconds, peak, None
+    """Maps `meshes` (pairs of mesh and landmark file); returns what corpus_report.run_map returns."""
+    return run_map(surfacemap, [m for m, _ in meshes] + ["--landmarks"] + [l for _, l in meshes] +
+                   ["--preset", "population"] + extra, out)
 
 
 def defects(report):
