@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
-# The heart-tube example (Wrapping/Python/examples/heart_tube_pipeline.py) at
-# full size, by default 10 stages x 5 synthetic specimens with the filter's
+# The heart-tube example (Wrapping/Python/examples/heart_tube_pipeline.py, a
+# thin call of `python3 -m surfacemaps.population`) at full size, by default 10 stages x 5 synthetic specimens with the filter's
 # default schedule: once as one process (OpenMP on all cores) and once with
 # `mpirun -n 2` (one OpenMP thread per rank), then a table of the wall time
 # of every step and every stage for both runs (also written to
@@ -11,7 +11,8 @@
 # e.g. `bash Testing/Benchmarks/heart_tube_benchmark.sh /tmp/ht -- --quick` for
 # a check in seconds. Default OUTPUT: build/benchmarks/heart_tube. A run with
 # the default series (no EXAMPLE OPTIONS) also refreshes the README's pictures
-# Testing/Benchmarks/images/heart_tube_{averages,frames}.png.
+# Testing/Benchmarks/images/heart_tube_<picture>.png (stage means, frames,
+# spread, mode 1, explained variance, scores).
 # Environment:
 #   SURFACEMAPS_BUILD_DIR   the build directory (default build)
 #   SURFACEMAPS_MPI_RANKS   ranks of the MPI run (default 2; 0 skips it)
@@ -49,7 +50,7 @@ if [ "$ranks" -gt 0 ]; then
 fi
 
 if [ $# -eq 0 ]; then
-  for picture in averages frames; do
+  for picture in stage_means frames spread mode_1 explained_variance scores; do
     if [ -f "$out/serial/pictures/$picture.png" ]; then
       cp "$out/serial/pictures/$picture.png" "Testing/Benchmarks/images/heart_tube_$picture.png"
     fi
@@ -59,8 +60,8 @@ fi
 "$python" - "$out" << 'EOF'
 import json, os, sys
 out = sys.argv[1]
-runs = [(label, json.load(open(os.path.join(out, d, "timings.json"))))
-        for label, d in (("1 process", "serial"), ("MPI", "mpi")) if os.path.exists(os.path.join(out, d, "timings.json"))]
+runs = [(label, json.load(open(os.path.join(out, d, "report.json"))))
+        for label, d in (("1 process", "serial"), ("MPI", "mpi")) if os.path.exists(os.path.join(out, d, "report.json"))]
 labels = [f"{label} ({t['ranks']} rank{'s' if t['ranks'] > 1 else ''})" if label == "MPI" else label for label, t in runs]
 lines = ["| step | " + " | ".join(labels) + " |", "|---|" + "---:|" * len(runs)]
 first = runs[0][1]
@@ -70,11 +71,14 @@ for s in first["stages"]:
         r = next(x for x in t["stages"] if x["stage"] == s["stage"])
         cells.append(f"{r['total_s']:.1f} s (map {r['map_s']:.1f}, rank {r['rank']})")
     lines.append(f"| {s['name']}: {s['specimens']} specimens, {min(s['specimen_vertices'])}-"
-                 f"{max(s['specimen_vertices'])} vertices -> average {s['average_vertices']} | " + " | ".join(cells) + " |")
-for key, label in (("stage_averages_s", "all stage averages"), ("final_map_s", "final map of the averages"),
+                 f"{max(s['specimen_vertices'])} vertices -> mean {s['mean_vertices']}, spread {s['spread_rms']:.3f} | " + " | ".join(cells) + " |")
+for key, label in (("stage_maps_s", "all stage maps and means"), ("final_map_s", "final map of the means"),
+                   ("statistics_s", "statistics over all specimens"),
                    ("interpolation_s", "interpolation + writing the series"), ("pictures_s", "pictures"),
                    ("total_s", "total")):
-    lines.append(f"| {label} | " + " | ".join(f"{t[key]:.1f} s" for _, t in runs) + " |")
+    lines.append(f"| {label} | " + " | ".join(f"{t['timings'][key]:.1f} s" for _, t in runs) + " |")
+fractions = ", ".join(f"{100 * f:.1f} %" for f in first["statistics"]["explained_fractions"])
+lines.append(f"\nExplained variance over {first['statistics']['specimens']} specimens: {fractions}.")
 lines.append(f"\n{len(first['stages'])} stages, final triangulation {first['common_vertices']} vertices, "
              f"{first['frames']} frames.")
 text = "\n".join(lines) + "\n"

@@ -46,9 +46,14 @@ takes ``categorical=[names]`` and ``continuous=[names]`` to choose per array
 ``write_time_series(source, times, directory, name="surface")``
     The output of a temporal source (e.g. vtkSurfaceSequenceInterpolator) at
     each time as .vtp files plus a ParaView .pvd collection.
+``write_collection(meshes, times, directory, name)``
+    Given meshes, one per time, as .vtp files plus a ParaView .pvd collection.
 
 Submodules: ``surfacemaps.plots`` (distortion curves), ``surfacemaps.render``
-(offscreen pictures).
+(offscreen pictures), ``surfacemaps.population`` (``python3 -m
+surfacemaps.population STAGES_DIR --output-dir OUT``: stage maps and means,
+spread, one map across the stages, shape statistics over all specimens, the
+interpolated series; under MPI when run with mpirun).
 """
 
 import math
@@ -652,7 +657,6 @@ def write_time_series(source, times, directory, name="surface"):
     empty surface, OSError when a file cannot be written.
     """
     import os
-    from xml.sax.saxutils import quoteattr
 
     times = [float(t) for t in times]
     directory = os.fspath(directory)
@@ -672,17 +676,49 @@ def write_time_series(source, times, directory, name="surface"):
     finally:
         source.RemoveObserver(tag)
 
+    return paths + [_write_pvd(os.path.join(directory, f"{name}.pvd"), times, paths)]
+
+
+def _write_pvd(pvd, times, paths):
+    """A ParaView collection `pvd` listing `paths` (relative to its directory) at `times`; returns `pvd`."""
+    import os
+    from xml.sax.saxutils import quoteattr
+
+    base = os.path.dirname(pvd)
     lines = ['<?xml version="1.0"?>',
              '<VTKFile type="Collection" version="0.1" byte_order="LittleEndian">',
              "  <Collection>"]
     for t, path in zip(times, paths):
-        lines.append(f'    <DataSet timestep="{t!r}" group="" part="0" file={quoteattr(os.path.basename(path))}/>')
+        lines.append(f'    <DataSet timestep="{t!r}" group="" part="0" '
+                     f'file={quoteattr(os.path.relpath(path, base))}/>')
     lines += ["  </Collection>", "</VTKFile>", ""]
-    pvd = os.path.join(directory, f"{name}.pvd")
 
     def write_collection(temporary):
         with open(temporary, "w", encoding="utf-8") as f:
             f.write("\n".join(lines))
 
     _replace_atomically(pvd, write_collection)
-    return paths + [pvd]
+    return pvd
+
+
+def write_collection(meshes, times, directory, name, subdirectory=None, stem=None):
+    """Write vtkPolyData `meshes`, one per time of `times`, and a ParaView collection listing them.
+
+    Writes ``directory/[subdirectory/]stem_XXXX.vtp`` (stem defaults to `name`;
+    XXXX the index, at least four digits) and ``directory/name.pvd``, each
+    atomically, as write_time_series does for a temporal source. Returns the
+    paths written: the .vtp files, then the .pvd.
+    """
+    import os
+
+    times = [float(t) for t in times]
+    if len(times) != len(meshes):
+        raise ValueError(f"{len(meshes)} meshes but {len(times)} times")
+    directory = os.fspath(directory)
+    folder = os.path.join(directory, subdirectory) if subdirectory else directory
+    digits = max(4, len(str(max(len(times) - 1, 0))))
+    paths = []
+    for k, mesh in enumerate(meshes):
+        paths.append(os.path.join(folder, f"{stem or name}_{k:0{digits}d}.vtp"))
+        write_mesh(mesh, paths[-1])
+    return paths + [_write_pvd(os.path.join(directory, f"{name}.pvd"), times, paths)]

@@ -5,7 +5,8 @@
 white, ``max_value`` and above dark red. ``render_checkerboard(mesh, path)``
 draws a checkerboard of the mesh's "SpherePosition" (or given) coordinates,
 so a map's effect on a regular pattern can be seen on any surface that
-carries the same coordinates.
+carries the same coordinates. ``render_point_scalars(mesh, path, array, lo, hi)``
+is a heat map of a point array (e.g. a population's "StandardDeviation").
 
 Rendering needs a display; on a headless machine run the script under
 ``xvfb-run -a`` (Debian package xvfb, installed by .ci/install-deps.sh).
@@ -29,11 +30,12 @@ import sys
 import vtkmodules.vtkRenderingOpenGL2  # noqa: F401  (the OpenGL back end)
 from vtkmodules.vtkCommonCore import vtkLookupTable, vtkDoubleArray
 from vtkmodules.vtkIOImage import vtkPNGWriter
+from vtkmodules.vtkRenderingAnnotation import vtkScalarBarActor
 from vtkmodules.vtkRenderingCore import (vtkActor, vtkPolyDataMapper, vtkRenderer, vtkRenderWindow,
                                          vtkWindowToImageFilter)
 
 
-def _render(mesh, path, configure_mapper, size=(800, 600), azimuth=30.0, elevation=20.0):
+def _render(mesh, path, configure_mapper, size=(800, 600), azimuth=30.0, elevation=20.0, title=None):
     mapper = vtkPolyDataMapper()
     mapper.SetInputData(mesh)
     configure_mapper(mapper)
@@ -41,6 +43,19 @@ def _render(mesh, path, configure_mapper, size=(800, 600), azimuth=30.0, elevati
     actor.SetMapper(mapper)
     renderer = vtkRenderer()
     renderer.AddActor(actor)
+    if title is not None:  # a colour legend of the mapper's lookup table
+        bar = vtkScalarBarActor()
+        bar.SetLookupTable(mapper.GetLookupTable())
+        bar.SetTitle(title)
+        bar.SetNumberOfLabels(5)
+        bar.SetWidth(0.12)
+        bar.SetHeight(0.6)
+        bar.SetPosition(0.85, 0.2)
+        for text in (bar.GetTitleTextProperty(), bar.GetLabelTextProperty()):
+            text.SetColor(0.1, 0.1, 0.1)
+            text.ItalicOff()
+            text.ShadowOff()
+        renderer.AddActor2D(bar)
     renderer.SetBackground(1.0, 1.0, 1.0)
     renderer.ResetCamera()
     camera = renderer.GetActiveCamera()
@@ -84,6 +99,32 @@ def render_distortion(mesh, path, max_value=3.0, **view):
         mapper.SetLookupTable(table)
         mapper.UseLookupTableScalarRangeOn()
         mapper.ScalarVisibilityOn()
+
+    _render(mesh, path, configure, **view)
+
+
+def render_point_scalars(mesh, path, array, minimum, maximum, **view):
+    """PNG of `mesh` coloured by the 1-component point array `array`: white at `minimum` to dark
+    red at `maximum` (a heat map, e.g. the per-vertex "StandardDeviation" of a population), with
+    a colour legend titled ``view["title"]`` when given."""
+    values = mesh.GetPointData().GetArray(array)
+    if values is None or values.GetNumberOfComponents() != 1:
+        raise ValueError(f"the mesh has no 1-component point array {array!r}")
+    table = vtkLookupTable()
+    table.SetNumberOfTableValues(256)
+    for i in range(256):
+        t = i / 255.0
+        table.SetTableValue(i, 1.0 - 0.45 * t, 1.0 - 0.95 * t, 1.0 - 0.95 * t, 1.0)
+    table.SetRange(minimum, maximum if maximum > minimum else minimum + 1.0)
+    table.Build()
+
+    def configure(mapper):
+        mapper.SetScalarModeToUsePointFieldData()
+        mapper.SelectColorArray(array)
+        mapper.SetLookupTable(table)
+        mapper.UseLookupTableScalarRangeOn()
+        mapper.ScalarVisibilityOn()
+        mapper.InterpolateScalarsBeforeMappingOn()
 
     _render(mesh, path, configure, **view)
 
