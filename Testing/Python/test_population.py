@@ -168,6 +168,20 @@ def test_series_passes_through_the_keyframes(serial):
         assert np.allclose(points(read(path)), points(keyframe), rtol=0.0, atol=1e-9 * size)
 
 
+def test_one_stage_is_its_own_common_triangulation(stages_dir, tmp_path):
+    shutil.copytree(stages_dir / "stage_00", tmp_path / "stages" / "stage_00")
+    population(tmp_path / "stages", tmp_path / "out", "--no-pictures")
+    report = json.loads((tmp_path / "out" / "report.json").read_text())
+    assert report["statistics"]["specimens"] == SPECIMENS and report["frames"] == 0
+    assert not (tmp_path / "out" / "keyframes").exists() and not (tmp_path / "out" / "series").exists()
+    stage_mean = read(tmp_path / "out" / "stages" / "stage_00.vtp")
+    mean = read(tmp_path / "out" / "statistics" / "mean.vtp")
+    assert np.array_equal(triangles(mean), triangles(stage_mean))
+    # Two specimens: the statistics' spread is the stage's spread.
+    assert np.allclose(vtk_to_numpy(mean.GetPointData().GetArray("StandardDeviation")),
+                       vtk_to_numpy(stage_mean.GetPointData().GetArray("StandardDeviation")), rtol=1e-9, atol=0.0)
+
+
 def test_bad_stage_directory_is_named(tmp_path):
     (tmp_path / "stages" / "stage_a").mkdir(parents=True)
     result = run([sys.executable, "-m", "surfacemaps.population", tmp_path / "stages", "--output-dir",

@@ -12,7 +12,8 @@ suffix .pinned, .vts or .txt). Steps:
    order-free mean of the lifted specimens (generalized Procrustes,
    vtkSurfaceAverage) and their per-vertex spread (vtkSurfaceShapeStatistics'
    "StandardDeviation", on the mean);
-2. one map across the stage means (pairs in sequence: stage k to k+1);
+2. one map across the stage means (pairs in sequence: stage k to k+1;
+   with a single stage its own map is the common triangulation);
 3. every specimen lifted onto that final common triangulation (through its
    stage map and the final map: the final T's vertex lies in a triangle of
    stage k's triangulation, which has the same barycentric place on each of
@@ -250,6 +251,7 @@ def developmental_time(meshes):
 
 def stage_result(directory, k, args, threads):
     """Map stage k's specimens (star pairs), their mean and spread; portable, with wall times."""
+    from vtkmodules.util.numpy_support import vtk_to_numpy
     clock = time.perf_counter()
     files, meshes = read_stage(directory)
     loaded = time.perf_counter()
@@ -265,6 +267,7 @@ def stage_result(directory, k, args, threads):
     else:
         result["spread"], result["spread_rms"] = np.zeros(len(result["points"])), 0.0
     result["lifted"] = [portable(m)["points"] for m in lifted]
+    result["sphere"] = vtk_to_numpy(lifted[0].GetPointData().GetArray("SpherePosition")).copy()
     averaged = time.perf_counter()
     result.update(stage=k, time=developmental_time(meshes), name=os.path.basename(directory), files=files,
                   specimen_vertices=[m.GetNumberOfPoints() for m in meshes],
@@ -383,13 +386,12 @@ def frames_of(source, times):
     return frames
 
 
-def surface_pictures(keyframes, source, times, statistics, directory):
-    """stage_means.png, frames.png (a checkerboard of keyframe 0's sphere positions, so a square
-    follows one material region through the stages), spread.png (the per-vertex standard deviation
-    over all specimens on their mean) and mode_1.png (mode 1 at -2, 0, +2 standard deviations)."""
-    from vtkmodules.util.numpy_support import vtk_to_numpy
+def surface_pictures(keyframes, pattern, source, times, statistics, directory):
+    """stage_means.png, frames.png (a checkerboard of `pattern`, keyframe 0's sphere positions, so
+    a square follows one material region through the stages), spread.png (the per-vertex standard
+    deviation over all specimens on their mean) and mode_1.png (mode 1 at -2, 0, +2 standard
+    deviations); frames.png only for a series."""
     from surfacemaps import render
-    pattern = vtk_to_numpy(keyframes[0].GetPointData().GetArray("SpherePosition"))
     paths = []
     frames = frames_of(source, np.linspace(times[0], times[-1], 6)) if source is not None else []
     for name, meshes in (("stage_means.png", keyframes), ("frames.png", frames)):
@@ -492,26 +494,29 @@ def run(args, comm):
         times = list(np.linspace(0.0, 1.0, len(stages))) if len(stages) > 1 else [0.0]
     if any(b <= a for a, b in zip(times[:-1], times[1:])):
         raise surfacemaps.InputError(f"the stage times must increase: {times}")
+    from vtkmodules.util.numpy_support import vtk_to_numpy
     out = args.output_dir
     means = [polydata(r["points"], r["triangles"], landmarks=r["landmarks"],
                       point_arrays={"StandardDeviation": r["spread"]}, time=t) for r, t in zip(stages, times)]
     for r, mean in zip(stages, means):
         surfacemaps.write_mesh(mean, os.path.join(out, "stages", r["name"] + ".vtp"))
 
+    # One stage: its map is the common triangulation already (no final map, no series).
     step = time.perf_counter()
     if len(means) > 1:
         keyframes = surfacemaps.map_surfaces(means, pairs="sequence", NumberOfThreads=final_threads,
                                              **map_settings(args))
+        for k, keyframe in enumerate(keyframes):
+            surfacemaps.write_mesh(keyframe, os.path.join(out, "keyframes", f"keyframe_{k:02d}.vtp"))
+        pattern = vtk_to_numpy(keyframes[0].GetPointData().GetArray("SpherePosition"))
     else:
-        keyframes = surfacemaps.map_surfaces(means, NumberOfThreads=final_threads, **map_settings(args))
+        keyframes, pattern = means, stages[0]["sphere"]
     timings["final_map_s"] = time.perf_counter() - step
-    for k, keyframe in enumerate(keyframes):
-        surfacemaps.write_mesh(keyframe, os.path.join(out, "keyframes", f"keyframe_{k:02d}.vtp"))
 
     step = time.perf_counter()
     specimens, specimen_stages, lifted = [], [], []
     for k, (r, keyframe) in enumerate(zip(stages, keyframes)):
-        lifted += lift_onto(keyframe, r)
+        lifted += lift_onto(keyframe, r) if len(means) > 1 else r["lifted"]
         specimens += [(r["name"], name) for name in r["files"]]
         specimen_stages += [k] * len(r["files"])
     triangles = portable(keyframes[0])["triangles"]
@@ -537,7 +542,7 @@ def run(args, comm):
         os.makedirs(directory, exist_ok=True)
         pictures += plots(statistics, specimen_stages, [r["name"] for r in stages], directory)
         if display_available():
-            pictures += surface_pictures(keyframes, source, times, statistics, directory)
+            pictures += surface_pictures(keyframes, pattern, source, times, statistics, directory)
         else:
             print("surfacemaps.population: no display: surface pictures skipped (run under xvfb-run -a, "
                   "or --no-pictures)", file=sys.stderr)
