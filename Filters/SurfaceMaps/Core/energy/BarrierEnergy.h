@@ -1,6 +1,7 @@
 // SurfaceMaps engine: the bijectivity barrier of a sphere embedding.
 #pragma once
 
+#include "geometry/Predicates.h"
 #include "optimisation/AutoDiff.h"
 
 #include <Eigen/Core>
@@ -14,7 +15,11 @@ namespace surfacemaps
 {
 
 /// -log vol with vol = det[a, b, c] / 6 (the volume of the tetrahedron with the
-/// origin); +inf when vol <= 0.
+/// origin); +inf when the triangle is not positively oriented. Where the
+/// rounded determinant is small enough for its sign to be wrong, the exact
+/// predicate decides, so every state the optimisation accepts is positive as
+/// the exact certificate sees it (a sliver that is positive only in floating
+/// point would otherwise pass every line search and fail certification).
 template<typename T>
 T orientationBarrier(const Eigen::Matrix<T, 3, 1>& a,
   const Eigen::Matrix<T, 3, 1>& b,
@@ -24,6 +29,17 @@ T orientationBarrier(const Eigen::Matrix<T, 3, 1>& a,
   if (!(volume > 0.0))
   {
     return T(std::numeric_limits<double>::infinity());
+  }
+  // Rounding error of det[a, b, c] for points near the unit sphere is below
+  // 1e-15; 1e-12 leaves a margin and still sends only slivers to the exact test.
+  if (valueOf(volume) < 1e-12 / 6.0)
+  {
+    const auto primal = [](const Eigen::Matrix<T, 3, 1>& p)
+    { return Eigen::Vector3d(valueOf(p[0]), valueOf(p[1]), valueOf(p[2])); };
+    if (orient3dOrigin(primal(a), primal(b), primal(c)) <= 0)
+    {
+      return T(std::numeric_limits<double>::infinity());
+    }
   }
   using std::log;
   return -log(volume);

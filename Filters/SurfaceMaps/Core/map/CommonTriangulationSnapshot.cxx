@@ -83,14 +83,15 @@ bool CommonTriangulation::update(Snapshot& s, const SpherePoints& points) const
   const int n = this->numberOfInputs();
   const int nv = s.vertices;
   const std::vector<Eigen::Vector3d>& positions = points.positions();
-  // Every triangle positive (as the barrier sees it) before walking in T.
+  // Every triangle positive, decided as the certificate decides it (exactly),
+  // before walking in T.
   const long long nt = static_cast<long long>(s.triangles.size());
   bool positive = true;
 #pragma omp parallel for schedule(static) reduction(&& : positive) if (nt * n > 5000)
   for (long long k = 0; k < nt * n; ++k)
   {
     const auto& t = s.embeddedTriangles[k / nt][k % nt];
-    positive = positive && positions[t[0]].dot(positions[t[1]].cross(positions[t[2]])) > 0.0;
+    positive = positive && orient3dOrigin(positions[t[0]], positions[t[1]], positions[t[2]]) > 0;
   }
   if (!positive)
   {
