@@ -11,8 +11,10 @@
 #include "vtkDataArray.h"
 #include "vtkDoubleArray.h"
 #include "vtkFieldData.h"
+#include "vtkFloatArray.h"
 #include "vtkIdTypeArray.h"
 #include "vtkInformationVector.h"
+#include "vtkIntArray.h"
 #include "vtkLogger.h"
 #include "vtkPointData.h"
 #include "vtkPoints.h"
@@ -150,7 +152,68 @@ vtkSmartPointer<vtkPolyData> vtkSurfaceMapsConversion::ToPolyData(
     }
     output->GetCellData()->AddArray(tc);
   }
+  AddPointArrays(output, mesh);
   return output;
+}
+
+void vtkSurfaceMapsConversion::AddPointArrays(vtkPolyData* output, const surfacemaps::PolygonMesh& mesh)
+{
+  using Type = surfacemaps::PolygonMeshPointArray::Type;
+  vtkPointData* pd = output->GetPointData();
+  for (const surfacemaps::PolygonMeshPointArray& a : mesh.pointArrays)
+  {
+    const vtkIdType tuples = static_cast<vtkIdType>(mesh.points.size());
+    if (a.values.size() != static_cast<std::size_t>(tuples) * a.components)
+    {
+      continue; // not one tuple per point: nothing a reader hands over
+    }
+    vtkSmartPointer<vtkDataArray> array;
+    switch (a.type)
+    {
+      case Type::UInt8:
+        array = vtkSmartPointer<vtkUnsignedCharArray>::New();
+        break;
+      case Type::Int32:
+        array = vtkSmartPointer<vtkIntArray>::New();
+        break;
+      case Type::Int64:
+        array = vtkSmartPointer<vtkTypeInt64Array>::New();
+        break;
+      case Type::Float32:
+        array = vtkSmartPointer<vtkFloatArray>::New();
+        break;
+      case Type::Float64:
+        array = vtkSmartPointer<vtkDoubleArray>::New();
+        break;
+    }
+    array->SetName(a.name.c_str());
+    array->SetNumberOfComponents(a.components);
+    array->SetNumberOfTuples(tuples);
+    for (vtkIdType i = 0; i < tuples; ++i)
+    {
+      for (int c = 0; c < a.components; ++c)
+      {
+        array->SetComponent(i, c, a.values[static_cast<std::size_t>(i) * a.components + c]);
+      }
+    }
+    // The attribute roles VTK's PLY reader gives them.
+    if (a.name == "Normals" && a.components == 3)
+    {
+      pd->SetNormals(array);
+    }
+    else if (a.name == "TCoords" && a.components == 2)
+    {
+      pd->SetTCoords(array);
+    }
+    else if ((a.name == "RGB" && a.components == 3) || (a.name == "RGBA" && a.components == 4))
+    {
+      pd->SetScalars(array);
+    }
+    else
+    {
+      pd->AddArray(array);
+    }
+  }
 }
 
 surfacemaps::HalfedgeMesh vtkSurfaceMapsConversion::ToHalfedgeMesh(vtkPolyData* input)

@@ -31,8 +31,13 @@ public:
   /// Every polygon of `input` (vertices, lines and strips are counted as
   /// non-polygon cells), with per-corner texture coordinates if present.
   static surfacemaps::PolygonMesh ToPolygonMesh(vtkPolyData* input);
-  /// Points and polygons (and "CornerTCoords" when every face is a triangle).
+  /// Points and polygons (and "CornerTCoords" when every face is a triangle),
+  /// with the mesh's point arrays (AddPointArrays).
   static vtkSmartPointer<vtkPolyData> ToPolyData(const surfacemaps::PolygonMesh& mesh);
+  /// The mesh's point arrays as VTK arrays of their types on `output`'s point
+  /// data; "Normals", "TCoords" and "RGB"/"RGBA" become the normals, texture
+  /// coordinates and scalars, as VTK's PLY reader makes them.
+  static void AddPointArrays(vtkPolyData* output, const surfacemaps::PolygonMesh& mesh);
 
   /// Half-edge mesh of a valid triangle mesh; throws std::invalid_argument otherwise.
   static surfacemaps::HalfedgeMesh ToHalfedgeMesh(vtkPolyData* input);

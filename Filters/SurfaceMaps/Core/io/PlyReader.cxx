@@ -362,6 +362,7 @@ private:
   }
 
   std::array<int, 3> coordinateProperties(const Element& e) const;
+  void planPointArrays(const Element& e);
   void readInstance(const Element& e, long long i, bool isFace, std::vector<double>& values);
   void readList(const Element& e, long long i, const Property& p);
   void addFace(long long i);
@@ -369,6 +370,8 @@ private:
   const std::string& Name;
   BodyReader Body;
   PolygonMesh Mesh;
+  /// Per point array of the mesh, the vertex properties giving its components.
+  std::vector<std::vector<int>> ArrayProperties;
   std::vector<Eigen::Vector2d> TexCoords;
   bool AnyTex = false;
   std::vector<double> List;
@@ -384,6 +387,10 @@ void MeshBuilder::readElement(const Element& e)
   {
     return; // nothing to read however many instances it declares
   }
+  if (isVertex)
+  {
+    this->planPointArrays(e);
+  }
   std::vector<double> values(e.properties.size());
   for (long long i = 0; i < e.count; ++i)
   {
@@ -391,7 +398,134 @@ void MeshBuilder::readElement(const Element& e)
     if (isVertex)
     {
       this->Mesh.points.emplace_back(values[xyz[0]], values[xyz[1]], values[xyz[2]]);
+      for (std::size_t a = 0; a < this->ArrayProperties.size(); ++a)
+      {
+        for (int k : this->ArrayProperties[a])
+        {
+          this->Mesh.pointArrays[a].values.push_back(values[k]);
+        }
+      }
     }
+  }
+}
+
+// The point arrays of the vertex element's scalar properties (see readPly).
+void MeshBuilder::planPointArrays(const Element& e)
+{
+  if (!this->Mesh.pointArrays.empty())
+  {
+    return; // a second vertex element: its points are read, its arrays not
+  }
+  auto find = [&](const std::string& name)
+  {
+    for (std::size_t k = 0; k < e.properties.size(); ++k)
+    {
+      if (!e.properties[k].isList && e.properties[k].name == name)
+      {
+        return static_cast<int>(k);
+      }
+    }
+    return -1;
+  };
+  std::vector<bool> used(e.properties.size(), false);
+  for (const char* c : { "x", "y", "z" })
+  {
+    const int k = find(c);
+    if (k >= 0)
+    {
+      used[k] = true;
+    }
+  }
+  auto add = [&](const std::string& name, const std::vector<int>& properties,
+               PolygonMeshPointArray::Type type)
+  {
+    for (const PolygonMeshPointArray& a : this->Mesh.pointArrays)
+    {
+      if (a.name == name)
+      {
+        return; // the first of two same-named arrays wins
+      }
+    }
+    PolygonMeshPointArray array;
+    array.name = name;
+    array.components = static_cast<int>(properties.size());
+    array.type = type;
+    this->Mesh.pointArrays.push_back(std::move(array));
+    this->ArrayProperties.push_back(properties);
+    for (int k : properties)
+    {
+      used[k] = true;
+    }
+  };
+  // Named groups: all of a group's properties present, as VTK's reader needs them.
+  auto group = [&](const std::vector<std::string>& names)
+  {
+    std::vector<int> properties;
+    for (const std::string& n : names)
+    {
+      const int k = find(n);
+      if (k < 0 || used[k])
+      {
+        return std::vector<int>();
+      }
+      properties.push_back(k);
+    }
+    return properties;
+  };
+  std::vector<int> colour = group({ "red", "green", "blue" });
+  if (!colour.empty())
+  {
+    const std::vector<int> alpha = group({ "alpha" });
+    colour.insert(colour.end(), alpha.begin(), alpha.end());
+    bool bytes = true;
+    for (int k : colour)
+    {
+      bytes = bytes && e.properties[k].type == Type::UInt8;
+    }
+    add(colour.size() == 4 ? "RGBA" : "RGB", colour,
+      bytes ? PolygonMeshPointArray::Type::UInt8 : PolygonMeshPointArray::Type::Float32);
+  }
+  const std::vector<int> normals = group({ "nx", "ny", "nz" });
+  if (!normals.empty())
+  {
+    add("Normals", normals, PolygonMeshPointArray::Type::Float32);
+  }
+  for (const auto& names : std::vector<std::vector<std::string>>{ { "u", "v" }, { "s", "t" },
+         { "texture_u", "texture_v" }, { "texture_s", "texture_t" } })
+  {
+    const std::vector<int> tcoords = group(names);
+    if (!tcoords.empty())
+    {
+      add("TCoords", tcoords, PolygonMeshPointArray::Type::Float32);
+      break;
+    }
+  }
+  for (std::size_t k = 0; k < e.properties.size(); ++k)
+  {
+    const Property& p = e.properties[k];
+    if (used[k] || p.isList)
+    {
+      continue;
+    }
+    PolygonMeshPointArray::Type type = PolygonMeshPointArray::Type::Int32;
+    switch (p.type)
+    {
+      case Type::UInt8:
+        type = PolygonMeshPointArray::Type::UInt8;
+        break;
+      case Type::UInt32:
+        type = PolygonMeshPointArray::Type::Int64;
+        break;
+      case Type::Float32:
+        type = PolygonMeshPointArray::Type::Float32;
+        break;
+      case Type::Float64:
+        type = PolygonMeshPointArray::Type::Float64;
+        break;
+      default:
+        break;
+    }
+    add(p.name, { static_cast<int>(k) }, type);
   }
 }
 

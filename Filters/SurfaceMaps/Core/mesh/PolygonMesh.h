@@ -6,10 +6,31 @@
 #include <array>
 #include <cstddef>
 #include <initializer_list>
+#include <string>
 #include <vector>
 
 namespace surfacemaps
 {
+
+/// A per-vertex array read from a file (e.g. PLY colours, normals, texture
+/// coordinates and other scalar properties), with the value type the file
+/// gives it so integer data stays integer (labels are carried categorically).
+struct PolygonMeshPointArray
+{
+  enum class Type
+  {
+    UInt8,
+    Int32,
+    Int64,
+    Float32,
+    Float64
+  };
+  std::string name;
+  int components = 1;
+  Type type = Type::Float64;
+  /// Point p's component c at values[p * components + c].
+  std::vector<double> values;
+};
 
 /// Indexed polygon mesh with optional per-corner texture coordinates. This is
 /// what readers produce and what validation inspects; it may hold anything a
@@ -23,6 +44,8 @@ struct PolygonMesh
   std::vector<int> faceVertices;
   /// Empty, or one entry per entry of faceVertices (NaN where a corner has none).
   std::vector<Eigen::Vector2d> cornerTexCoords;
+  /// Per-vertex arrays of the file, one tuple per entry of points.
+  std::vector<PolygonMeshPointArray> pointArrays;
   /// Cells of the source that are not polygons (lines, vertices, strips).
   std::size_t nonPolygonCells = 0;
   /// Face corners of the source whose vertex index does not fit an int (64-bit

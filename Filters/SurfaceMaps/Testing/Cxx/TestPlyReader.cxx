@@ -89,6 +89,44 @@ TEST(PlyReader, BinaryBothEndians)
   }
 }
 
+TEST(PlyReader, VertexPropertiesBecomePointArrays)
+{
+  // A lone "red" is no colour group: it keeps its own name and type.
+  const PolygonMesh tetra = parsePly(binaryTetrahedron(true), "m");
+  ASSERT_EQ(tetra.pointArrays.size(), 1u);
+  EXPECT_EQ(tetra.pointArrays[0].name, "red");
+  EXPECT_EQ(tetra.pointArrays[0].type, PolygonMeshPointArray::Type::UInt8);
+  EXPECT_EQ(tetra.pointArrays[0].values, std::vector<double>(4, 200.0));
+
+  const std::string text = "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\n"
+                           "property float y\nproperty float z\nproperty uchar red\n"
+                           "property uchar green\nproperty uchar blue\nproperty float nx\n"
+                           "property float ny\nproperty float nz\nproperty float s\n"
+                           "property float t\nproperty int label\nproperty uint big\n"
+                           "property double quality\nelement face 1\n"
+                           "property list uchar int vertex_indices\nend_header\n"
+                           "0 0 0 1 2 3 0 0 1 0.5 0.25 7 4000000000 0.125\n"
+                           "1 0 0 4 5 6 0 0 1 1 0 -2 1 1.5\n"
+                           "0 1 0 7 8 9 0 0 1 0 1 3 2 2.5\n3 0 1 2\n";
+  const PolygonMesh mesh = parsePly(text, "m");
+  std::vector<std::string> names;
+  for (const auto& a : mesh.pointArrays)
+  {
+    names.push_back(a.name + "/" + std::to_string(a.components));
+  }
+  EXPECT_EQ(names,
+    (std::vector<std::string>{ "RGB/3", "Normals/3", "TCoords/2", "label/1", "big/1", "quality/1" }));
+  using Type = PolygonMeshPointArray::Type;
+  EXPECT_EQ(mesh.pointArrays[0].type, Type::UInt8);
+  EXPECT_EQ(mesh.pointArrays[3].type, Type::Int32);
+  EXPECT_EQ(mesh.pointArrays[4].type, Type::Int64);
+  EXPECT_EQ(mesh.pointArrays[5].type, Type::Float64);
+  EXPECT_EQ(mesh.pointArrays[0].values, (std::vector<double>{ 1, 2, 3, 4, 5, 6, 7, 8, 9 }));
+  EXPECT_EQ(mesh.pointArrays[2].values, (std::vector<double>{ 0.5, 0.25, 1, 0, 0, 1 }));
+  EXPECT_EQ(mesh.pointArrays[3].values, (std::vector<double>{ 7, -2, 3 }));
+  EXPECT_EQ(mesh.pointArrays[4].values[0], 4000000000.0);
+}
+
 TEST(PlyReader, Errors)
 {
   expectPlyError("this is not ply\n", "not a PLY file");

@@ -6,6 +6,7 @@
 #include "vtkDataArray.h"
 #include "vtkFieldData.h"
 #include "vtkNew.h"
+#include "vtkPLYReader.h"
 #include "vtkPointData.h"
 #include "vtkPolyData.h"
 #include "vtkStringArray.h"
@@ -71,6 +72,88 @@ TEST(SurfaceMeshReader, EveryFormat)
       vtkStringArray::SafeDownCast(r.Output->GetFieldData()->GetAbstractArray("FileName"));
     ASSERT_NE(name, nullptr);
     EXPECT_EQ(name->GetValue(0), Data + "/" + c.File);
+  }
+}
+
+// Per-vertex PLY properties come out as VTK's own PLY reader gives them (names,
+// types, components, values, attribute roles), in ASCII and binary, plus the
+// scalar properties VTK's reader drops.
+TEST(SurfaceMeshReader, PlyPropertiesMatchVTKsReader)
+{
+  const std::string header = "element vertex 4\nproperty float x\nproperty float y\n"
+                             "property float z\nproperty float nx\nproperty float ny\n"
+                             "property float nz\nproperty uchar red\nproperty uchar green\n"
+                             "property uchar blue\nproperty uchar alpha\nproperty float u\n"
+                             "property float v\nproperty float quality\nelement face 4\n"
+                             "property list uchar int vertex_indices\nend_header\n";
+  const float vertices[4][13] = { { 1, 1, 1, 0.5f, 0.5f, 0.5f, 255, 0, 0, 255, 0, 0, 0.5f },
+    { 1, -1, -1, 0.5f, -0.5f, -0.5f, 0, 255, 0, 255, 1, 0, 0.25f },
+    { -1, 1, -1, -0.5f, 0.5f, -0.5f, 0, 0, 255, 128, 0, 1, 0.75f },
+    { -1, -1, 1, -0.5f, -0.5f, 0.5f, 10, 20, 30, 0, 1, 1, 1.5f } };
+  const int faces[4][3] = { { 0, 1, 2 }, { 0, 3, 1 }, { 0, 2, 3 }, { 1, 3, 2 } };
+  std::string ascii = "ply\nformat ascii 1.0\n" + header;
+  std::string binary = "ply\nformat binary_little_endian 1.0\n" + header;
+  for (const auto& v : vertices)
+  {
+    for (int k = 0; k < 13; ++k)
+    {
+      ascii += std::to_string(v[k]) + (k == 12 ? "\n" : " ");
+      if (k >= 6 && k < 10)
+      {
+        binary.push_back(static_cast<char>(static_cast<unsigned char>(v[k])));
+      }
+      else
+      {
+        binary.append(reinterpret_cast<const char*>(&v[k]), sizeof(float));
+      }
+    }
+  }
+  for (const auto& f : faces)
+  {
+    ascii += "3 " + std::to_string(f[0]) + " " + std::to_string(f[1]) + " " + std::to_string(f[2]) + "\n";
+    binary.push_back(3);
+    binary.append(reinterpret_cast<const char*>(f), sizeof(f));
+  }
+  for (const auto& [name, bytes] : { std::make_pair("ascii", ascii), std::make_pair("binary", binary) })
+  {
+    const std::string path = testing::TempDir() + "/properties_" + name + ".ply";
+    {
+      std::ofstream file(path, std::ios::binary);
+      file << bytes;
+    }
+    const ReadResult ours = read(path);
+    ASSERT_TRUE(ours.Error.empty()) << ours.Error;
+    vtkNew<vtkPLYReader> theirs;
+    theirs->SetFileName(path.c_str());
+    theirs->Update();
+    vtkPointData* a = ours.Output->GetPointData();
+    vtkPointData* b = theirs->GetOutput()->GetPointData();
+    ASSERT_EQ(ours.Output->GetNumberOfPoints(), theirs->GetOutput()->GetNumberOfPoints());
+    ASSERT_EQ(b->GetNumberOfArrays(), 3) << name;
+    for (int i = 0; i < b->GetNumberOfArrays(); ++i)
+    {
+      vtkDataArray* expected = b->GetArray(i);
+      vtkDataArray* got = a->GetArray(expected->GetName());
+      ASSERT_NE(got, nullptr) << name << ": " << expected->GetName();
+      EXPECT_EQ(got->GetDataType(), expected->GetDataType()) << expected->GetName();
+      ASSERT_EQ(got->GetNumberOfComponents(), expected->GetNumberOfComponents());
+      for (vtkIdType t = 0; t < expected->GetNumberOfTuples(); ++t)
+      {
+        for (int c = 0; c < expected->GetNumberOfComponents(); ++c)
+        {
+          EXPECT_EQ(got->GetComponent(t, c), expected->GetComponent(t, c))
+            << name << ": " << expected->GetName() << " " << t << " " << c;
+        }
+      }
+    }
+    EXPECT_STREQ(a->GetNormals()->GetName(), b->GetNormals()->GetName());
+    EXPECT_STREQ(a->GetTCoords()->GetName(), b->GetTCoords()->GetName());
+    EXPECT_STREQ(a->GetScalars()->GetName(), b->GetScalars()->GetName());
+    // What VTK's reader drops is kept.
+    vtkDataArray* quality = a->GetArray("quality");
+    ASSERT_NE(quality, nullptr);
+    EXPECT_EQ(quality->GetComponent(3, 0), 1.5);
+    std::remove(path.c_str());
   }
 }
 
