@@ -8,6 +8,7 @@
 #include <Eigen/Geometry>
 
 #include <array>
+#include <cmath>
 #include <limits>
 #include <vector>
 
@@ -15,11 +16,10 @@ namespace surfacemaps
 {
 
 /// -log vol with vol = det[a, b, c] / 6 (the volume of the tetrahedron with the
-/// origin); +inf when the triangle is not positively oriented. Where the
-/// rounded determinant is small enough for its sign to be wrong, the exact
-/// predicate decides, so every state the optimisation accepts is positive as
-/// the exact certificate sees it (a sliver that is positive only in floating
-/// point would otherwise pass every line search and fail certification).
+/// origin); +inf when vol <= 0. Rounded on purpose: a Newton step that starts
+/// from a sliver the exact test calls flat can still move it back (its
+/// gradient is finite); what a step may end in is decided exactly (see
+/// exactOrientationBarrier and the trial check of CommonTriangulation::update).
 template<typename T>
 T orientationBarrier(const Eigen::Matrix<T, 3, 1>& a,
   const Eigen::Matrix<T, 3, 1>& b,
@@ -30,19 +30,25 @@ T orientationBarrier(const Eigen::Matrix<T, 3, 1>& a,
   {
     return T(std::numeric_limits<double>::infinity());
   }
-  // Rounding error of det[a, b, c] for points near the unit sphere is below
-  // 1e-15; 1e-12 leaves a margin and still sends only slivers to the exact test.
-  if (valueOf(volume) < 1e-12 / 6.0)
-  {
-    const auto primal = [](const Eigen::Matrix<T, 3, 1>& p)
-    { return Eigen::Vector3d(valueOf(p[0]), valueOf(p[1]), valueOf(p[2])); };
-    if (orient3dOrigin(primal(a), primal(b), primal(c)) <= 0)
-    {
-      return T(std::numeric_limits<double>::infinity());
-    }
-  }
   using std::log;
   return -log(volume);
+}
+
+/// orientationBarrier for a state that is to be accepted (an edit of T): also
+/// +inf where the rounded determinant is positive but the exact one is not,
+/// so every state the optimisation keeps is one the exact certificate
+/// accepts. Rounding error of det[a, b, c] for points near the unit sphere is
+/// below 1e-15; below 1e-12 the exact predicate decides.
+inline double exactOrientationBarrier(const Eigen::Vector3d& a,
+  const Eigen::Vector3d& b,
+  const Eigen::Vector3d& c)
+{
+  const double barrier = orientationBarrier<double>(a, b, c);
+  if (barrier > -std::log(1e-12 / 6.0) && orient3dOrigin(a, b, c) <= 0)
+  {
+    return std::numeric_limits<double>::infinity();
+  }
+  return barrier;
 }
 
 /// -log vol(t) per triangle t = (a, b, c) of an embedding, vol(t) = det[a, b, c] / 6

@@ -45,7 +45,7 @@ double CommonTriangulation::triangleEnergy(const MapVertex& a,
   {
     if (w.barrier > 0.0)
     {
-      const double barrier = orientationBarrier<double>(a.g[i], b.g[i], c.g[i]);
+      const double barrier = exactOrientationBarrier(a.g[i], b.g[i], c.g[i]);
       if (!std::isfinite(barrier))
       {
         return Infinity;

@@ -311,12 +311,12 @@ TEST(MapEnergies, BarrierGaussNewtonHessianIsPositiveAndMatchesTheGradient)
   }
 }
 
-// A sliver whose rounded determinant is positive while the exact one is not
-// must be rejected like a flipped triangle: the certificate is exact, so a
-// state the barrier accepts has to pass it; a triangle positive both ways
-// keeps its finite barrier. Chords whose third point lies on
+// An edit must not make a sliver whose rounded determinant is positive while
+// the exact one is not: the certificate is exact, so a state the optimisation
+// keeps has to pass it; a triangle positive both ways keeps its finite
+// barrier. Chords whose third point lies on
 // the great circle through the first two, up to rounding, give both signs.
-TEST(MapEnergies, BarrierRejectsSliversThatAreOnlyPositiveWhenRounded)
+TEST(MapEnergies, ExactBarrierRejectsSliversThatAreOnlyPositiveWhenRounded)
 {
   std::mt19937 random(7);
   std::normal_distribution<double> normal;
@@ -331,7 +331,7 @@ TEST(MapEnergies, BarrierRejectsSliversThatAreOnlyPositiveWhenRounded)
     const Eigen::Vector3d c = (s * a + (1.0 - s) * b).normalized();
     const double rounded = a.dot(b.cross(c));
     const int exact = orient3dOrigin(a, b, c);
-    const double barrier = orientationBarrier<double>(a, b, c);
+    const double barrier = exactOrientationBarrier(a, b, c);
     if (rounded > 0.0 && exact <= 0)
     {
       ++roundedPositiveOnly;
