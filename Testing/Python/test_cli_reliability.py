@@ -541,6 +541,40 @@ def test_a_failing_overwrite_leaves_the_earlier_map(two_maps, tmp_path):
     assert r.returncode == 0 and e.returncode == 0, (r.stderr, e.stderr)
 
 
+def test_sigterm_while_the_new_map_is_staged_leaves_the_earlier_map(two_maps, tmp_path):
+    """SIGTERM as soon as the staging directory DIR.tmp.<pid> appears (polled every ms): the
+    earlier map is still there, byte for byte, and nothing is left beside it. Should the run
+    finish before the signal lands, the new map must be complete instead."""
+    import time
+    target = copy_map(two_maps[0], tmp_path / "kept")
+    before = {name: (target / name).read_bytes() for name in os.listdir(target)}
+    process = subprocess.Popen([CLI, "map", data("ellipsoid.obj"), data("blob.off"), "--output-dir",
+                                target, "--overwrite", *SHORT], stdout=subprocess.DEVNULL,
+                               stderr=subprocess.PIPE, text=True)
+    staging = tmp_path / f"kept.tmp.{process.pid}"
+    try:
+        deadline = time.monotonic() + 240
+        while process.poll() is None and not staging.exists() and time.monotonic() < deadline:
+            time.sleep(0.001)
+        staged = staging.exists()
+        process.send_signal(signal.SIGTERM)
+        process.wait(timeout=60)
+    finally:
+        if process.poll() is None:
+            process.kill()
+            process.wait()
+    assert siblings_left_behind(tmp_path) == []
+    if process.returncode == -signal.SIGTERM:
+        assert staged, "the signal came before the staging directory"
+        assert {name: (target / name).read_bytes() for name in os.listdir(target)} == before
+    else:
+        assert process.returncode == 0, process.stderr.read()
+    checks = tmp_path / "checks"
+    checks.mkdir()
+    r, e = transfer_and_evaluate(target, checks)
+    assert r.returncode == 0 and e.returncode == 0, (r.stderr, e.stderr)
+
+
 def test_overwrite_swaps_in_a_complete_map_and_keeps_other_files(two_maps, tmp_path):
     import json
     target = copy_map(two_maps[0], tmp_path / "replaced")
