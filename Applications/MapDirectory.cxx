@@ -367,8 +367,10 @@ void MapDestination::commit(const std::vector<std::string>& names)
   }
   if (!carried || ec)
   {
-    throw std::runtime_error("the new map is in " + this->Directory + ", but not every other file "
-      "of the earlier directory could be moved into it: they are in " + old);
+    throw std::runtime_error("the new map is in " + this->Directory +
+      ", but not every other file of the earlier directory could be moved into it: they are "
+      "in " +
+      old);
   }
   fs::remove_all(old, ec);
 }

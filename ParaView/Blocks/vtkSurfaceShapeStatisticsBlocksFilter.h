@@ -1,6 +1,6 @@
 /**
  * @class   vtkSurfaceShapeStatisticsBlocksFilter
- * @brief   vtkSurfaceShapeStatistics whose inputs may come as one composite (ParaView's shape statistics).
+ * @brief   vtkSurfaceShapeStatistics whose inputs may come as one composite (for ParaView).
  *
  * The shape statistics (mean, modes, "StandardDeviation") of the surfaces of
  * its input port flattened into one list (connections in order, a

@@ -175,8 +175,8 @@ void writePreset(std::ostream& out)
     }
     doc += ".";
   }
-  out << "        <Documentation>" << escaped(doc) << " Default: "
-      << escaped(label(surfacemaps::presetName(all.front())))
+  out << "        <Documentation>" << escaped(doc)
+      << " Default: " << escaped(label(surfacemaps::presetName(all.front())))
       << ". (Command line: --preset.)</Documentation>\n"
       << "      </IntVectorProperty>\n";
 }

@@ -203,7 +203,8 @@ void checkPresetProperty(Pipeline& pipeline)
   }
   check(vtkSMPropertyHelper(property).GetAsInt() == vtkSurfaceMapFilter::PRESET_PAIR,
     "Preset defaults to Pair");
-  const std::string doc = property->GetDocumentation() && property->GetDocumentation()->GetDescription()
+  const std::string doc =
+    property->GetDocumentation() && property->GetDocumentation()->GetDescription()
     ? property->GetDocumentation()->GetDescription()
     : "";
   check(doc.find("ApproximationWeight") != std::string::npos,
@@ -226,8 +227,9 @@ int settingIndex(const char* name)
 std::vector<std::string> phasesOf(vtkDataObject* data)
 {
   std::vector<std::string> phases;
-  auto* names =
-    data ? vtkStringArray::SafeDownCast(data->GetFieldData()->GetAbstractArray("PhaseName")) : nullptr;
+  auto* names = data
+    ? vtkStringArray::SafeDownCast(data->GetFieldData()->GetAbstractArray("PhaseName"))
+    : nullptr;
   for (vtkIdType k = 0; names && k < names->GetNumberOfValues(); ++k)
   {
     phases.push_back(names->GetValue(k));
@@ -477,7 +479,8 @@ int main(int argc, char* argv[])
     byHand->UpdatePipeline();
     check(vtkSMPropertyHelper(population, "TargetError").GetAsDouble() ==
           vtkSurfaceMapFilter::GetSettingDefault(targetError) &&
-        presetFilter && presetFilter->GetSetting(targetError) ==
+        presetFilter &&
+        presetFilter->GetSetting(targetError) ==
           vtkSurfaceMapFilter::GetSettingDefault(targetError),
       "the preset leaves the TargetError property and the filter's setting as set");
     auto* presetBlocks = outputOf<vtkMultiBlockDataSet>(population);
