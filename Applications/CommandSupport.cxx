@@ -20,6 +20,7 @@
 
 #include <fcntl.h>
 #include <sys/stat.h>
+#include <sys/syscall.h>
 #include <unistd.h>
 
 #include <atomic>
@@ -27,6 +28,7 @@
 
 #include <cerrno>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
@@ -98,10 +100,12 @@ ErrorCapture::~ErrorCapture()
   this->Algorithm->RemoveObserver(this->Tag);
 }
 
-void ErrorCapture::callback(vtkObject*, unsigned long, void* self, void* text)
+namespace
 {
-  std::string message = text ? static_cast<const char*>(text) : "unknown error";
-  // vtkErrorMacro text: "ERROR: In file, line N\nClass (0x...): message"
+// vtkErrorMacro/vtkWarningMacro text: "ERROR: In file, line N\nClass (0x...): message"
+std::string macroMessage(void* text, const char* none)
+{
+  std::string message = text ? static_cast<const char*>(text) : none;
   const std::size_t marker = message.find("): ");
   if (marker != std::string::npos)
   {
@@ -111,7 +115,31 @@ void ErrorCapture::callback(vtkObject*, unsigned long, void* self, void* text)
   {
     message.pop_back();
   }
-  static_cast<ErrorCapture*>(self)->Messages.push_back(message);
+  return message;
+}
+} // namespace
+
+void ErrorCapture::callback(vtkObject*, unsigned long, void* self, void* text)
+{
+  static_cast<ErrorCapture*>(self)->Messages.push_back(macroMessage(text, "unknown error"));
+}
+
+WarningPrinter::WarningPrinter(vtkAlgorithm* algorithm)
+  : Algorithm(algorithm)
+{
+  vtkNew<vtkCallbackCommand> command;
+  command->SetCallback(&WarningPrinter::callback);
+  this->Tag = algorithm->AddObserver(vtkCommand::WarningEvent, command);
+}
+
+WarningPrinter::~WarningPrinter()
+{
+  this->Algorithm->RemoveObserver(this->Tag);
+}
+
+void WarningPrinter::callback(vtkObject*, unsigned long, void*, void* text)
+{
+  std::fprintf(stderr, "surfacemap: warning: %s\n", macroMessage(text, "unknown warning").c_str());
 }
 
 ProgressBar::ProgressBar(vtkAlgorithm* algorithm)
@@ -280,6 +308,86 @@ constexpr std::size_t TemporaryPathSize = 4096;
 char TemporaryPaths[TemporarySlots][TemporaryPathSize];
 volatile std::sig_atomic_t TemporaryInUse[TemporarySlots];
 
+// Directories for InterruptCleanup and the one rename of InterruptRestore,
+// in the same kind of fixed storage.
+constexpr int DirectorySlots = 4;
+char DirectoryPaths[DirectorySlots][TemporaryPathSize];
+volatile std::sig_atomic_t DirectoryInUse[DirectorySlots];
+char RestoreFrom[TemporaryPathSize];
+char RestoreTo[TemporaryPathSize];
+volatile std::sig_atomic_t RestoreInUse = 0;
+
+bool registerPath(char* slot, const std::string& path)
+{
+  if (path.size() >= TemporaryPathSize)
+  {
+    return false;
+  }
+  std::memcpy(slot, path.c_str(), path.size() + 1);
+  std::atomic_signal_fence(std::memory_order_seq_cst);
+  return true;
+}
+
+bool startsWith(const char* text, const char* prefix)
+{
+  return std::strncmp(text, prefix, std::strlen(prefix)) == 0;
+}
+
+// A name a map writes (isMapFileName's pattern, loosely) or a temporary
+// file; async-signal-safe (no allocation, no locale).
+bool isMapWrittenName(const char* name)
+{
+  if (std::strcmp(name, "report.json") == 0 || std::strstr(name, ".tmp.") != nullptr)
+  {
+    return true;
+  }
+  const std::size_t length = std::strlen(name);
+  return (startsWith(name, "common_") || startsWith(name, "mapped_") ||
+           startsWith(name, "embedding_")) &&
+    length > 4 && std::strcmp(name + length - 4, ".vtp") == 0;
+}
+
+// Removes the map's files from `directory`, then the directory if empty,
+// with system calls only (a signal handler may not allocate).
+void removeMapFilesOf(const char* directory)
+{
+  const int fd = open(directory, O_RDONLY | O_DIRECTORY | O_CLOEXEC);
+  if (fd < 0)
+  {
+    return;
+  }
+  struct Entry
+  {
+    std::uint64_t inode;
+    std::int64_t offset;
+    unsigned short length;
+    unsigned char type;
+    char name[1];
+  };
+  alignas(8) static char buffer[8192];
+  // Unlinking while reading the directory may skip entries: read it again
+  // until a pass removes nothing.
+  for (bool removed = true; removed;)
+  {
+    removed = false;
+    lseek(fd, 0, SEEK_SET);
+    for (long n; (n = syscall(SYS_getdents64, fd, buffer, sizeof(buffer))) > 0;)
+    {
+      for (long at = 0; at < n;)
+      {
+        const auto* entry = reinterpret_cast<const Entry*>(buffer + at);
+        at += entry->length;
+        if (isMapWrittenName(entry->name) && unlinkat(fd, entry->name, 0) == 0)
+        {
+          removed = true;
+        }
+      }
+    }
+  }
+  close(fd);
+  rmdir(directory);
+}
+
 extern "C" void removeTemporariesAndExit(int signal)
 {
   for (int k = 0; k < TemporarySlots; ++k)
@@ -287,6 +395,17 @@ extern "C" void removeTemporariesAndExit(int signal)
     if (TemporaryInUse[k])
     {
       unlink(TemporaryPaths[k]);
+    }
+  }
+  if (RestoreInUse)
+  {
+    rename(RestoreFrom, RestoreTo);
+  }
+  for (int k = 0; k < DirectorySlots; ++k)
+  {
+    if (DirectoryInUse[k])
+    {
+      removeMapFilesOf(DirectoryPaths[k]);
     }
   }
   // The default action, so the parent sees death by this signal.
@@ -403,6 +522,44 @@ void writeChecked(const std::string& temporary, const std::string& path, const s
   }
 }
 } // namespace
+
+InterruptCleanup::InterruptCleanup(const std::string& directory)
+{
+  for (int k = 0; k < DirectorySlots; ++k)
+  {
+    if (!DirectoryInUse[k] && registerPath(DirectoryPaths[k], directory))
+    {
+      DirectoryInUse[k] = 1;
+      this->Slot = k;
+      return;
+    }
+  }
+}
+
+InterruptCleanup::~InterruptCleanup()
+{
+  if (this->Slot >= 0)
+  {
+    DirectoryInUse[this->Slot] = 0;
+  }
+}
+
+InterruptRestore::InterruptRestore(const std::string& moved, const std::string& original)
+{
+  if (!RestoreInUse && registerPath(RestoreFrom, moved) && registerPath(RestoreTo, original))
+  {
+    RestoreInUse = 1;
+    this->Registered = true;
+  }
+}
+
+InterruptRestore::~InterruptRestore()
+{
+  if (this->Registered)
+  {
+    RestoreInUse = 0;
+  }
+}
 
 void installSignalHandlers()
 {

@@ -34,6 +34,22 @@ private:
   std::vector<std::string> Messages;
 };
 
+/// Prints the warnings of an algorithm (vtkWarningMacro) on stderr as they
+/// come, "surfacemap: warning: <message>", while this object lives.
+class WarningPrinter
+{
+public:
+  explicit WarningPrinter(vtkAlgorithm* algorithm);
+  ~WarningPrinter();
+  WarningPrinter(const WarningPrinter&) = delete;
+  WarningPrinter& operator=(const WarningPrinter&) = delete;
+
+private:
+  static void callback(vtkObject*, unsigned long, void*, void* text);
+  vtkAlgorithm* Algorithm;
+  unsigned long Tag = 0;
+};
+
 /// A progress bar on stderr while an algorithm runs, only if stderr is a
 /// terminal.
 class ProgressBar
@@ -141,6 +157,39 @@ std::string jsonString(const std::string& text);
 /// the process ends, and ignores SIGXFSZ so a file size limit is a reported
 /// write error. Call once at the start of main.
 void installSignalHandlers();
+
+/// While it lives, SIGINT and SIGTERM remove the files of `directory` that a
+/// map writes (report.json, common_/mapped_/embedding_<i>.vtp, temporary
+/// *.tmp.* files) and then the directory if that left it empty; any other
+/// file stays, and with it the directory. For a map being written beside
+/// the directory it will replace, and for the replaced map's files.
+class InterruptCleanup
+{
+public:
+  explicit InterruptCleanup(const std::string& directory);
+  ~InterruptCleanup();
+  InterruptCleanup(const InterruptCleanup&) = delete;
+  InterruptCleanup& operator=(const InterruptCleanup&) = delete;
+
+private:
+  int Slot = -1;
+};
+
+/// While it lives, SIGINT and SIGTERM first rename `moved` back to
+/// `original` (before any InterruptCleanup runs). The rename fails, and
+/// changes nothing, while `original` exists: only the moment between moving
+/// a directory away and moving its replacement in is undone.
+class InterruptRestore
+{
+public:
+  InterruptRestore(const std::string& moved, const std::string& original);
+  ~InterruptRestore();
+  InterruptRestore(const InterruptRestore&) = delete;
+  InterruptRestore& operator=(const InterruptRestore&) = delete;
+
+private:
+  bool Registered = false;
+};
 
 /// Writes `content` to a temporary name beside `path`, checks every write,
 /// fsync, close and the size on disk, then renames it. On any failure the

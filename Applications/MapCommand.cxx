@@ -64,9 +64,11 @@ const char* const MapHelpIntro =
   "\n"
   "  --output-dir DIR     where to write (created if missing; checked for\n"
   "                       writing before computing)\n"
-  "  --overwrite          replace an earlier map in DIR (its report.json is\n"
-  "                       removed first, then its files); without it a DIR\n"
-  "                       holding a map is refused before computing\n"
+  "  --overwrite          replace an earlier map in DIR as a whole: the new map\n"
+  "                       is written beside DIR and checked, then swapped in;\n"
+  "                       on failure the earlier map stays; other files in DIR\n"
+  "                       stay; without it a DIR holding a map is refused\n"
+  "                       before computing\n"
   "  --landmarks FA FB ...\n"
   "                       one landmark file per mesh, in the same order (give\n"
   "                       the meshes first); same id = corresponding points\n";
@@ -242,6 +244,7 @@ int computeMap(vtkSurfaceMapFilter* map,
     map->AddInputData(input);
   }
   {
+    WarningPrinter warnings(map);
     ProgressBar bar(map);
     map->Update();
   }
@@ -488,11 +491,14 @@ int runMap(const std::vector<std::string>& args)
     reportPhases(map->GetOutput(0)) + reportErrorBound(map, static_cast<int>(inputs.size()));
   try
   {
-    const std::string& dir = arguments.outputDir;
-    // No reader takes a directory without report.json for a map, and the
-    // new report lists only the new files: an interruption from here on
-    // leaves no map rather than a mix of two.
-    removeMap(dir);
+    // The earlier map, if any, stays untouched until the new one is
+    // complete and checked beside it (MapDestination).
+    MapDestination destination(arguments.outputDir, holdsMap(arguments.outputDir));
+    if (!destination.note().empty())
+    {
+      std::fprintf(stderr, "note: %s\n", destination.note().c_str());
+    }
+    const std::string& dir = destination.path();
     MapWriter files(dir);
     report += writeOutputs(
       map, errors, files, "common", "approximating map", "approximating_map", inputs, true);
@@ -502,6 +508,7 @@ int runMap(const std::vector<std::string>& args)
     map->SetOutputModeToInputEmbeddings();
     writeOutputs(map, errors, files, "embedding", nullptr, nullptr, inputs, false);
     writeFileAtomically(dir + "/report.json", report + ",\n" + files.reportJson() + "\n}\n");
+    destination.commit(files.names());
   }
   catch (const std::runtime_error& e)
   {

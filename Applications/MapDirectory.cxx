@@ -18,6 +18,9 @@
 #include <sstream>
 #include <stdexcept>
 
+#include <sys/stat.h>
+#include <unistd.h>
+
 namespace surfacemap
 {
 
@@ -136,6 +139,7 @@ void MapWriter::write(vtkPolyData* data, const std::string& name)
   stamped->SetFieldData(fields);
   const std::string path = this->Directory + "/" + name;
   writePolyDataAtomically(stamped, path);
+  this->Names.push_back(name);
   // As on disk: what readers will compare against.
   const std::string bytes = readBytes(path);
   this->Records.push_back("{ \"name\": " + jsonString(name) +
@@ -241,6 +245,134 @@ void verifyMapFiles(const std::string& directory, const std::vector<std::string>
     throw std::runtime_error(path + " was changed after the map was written (its size or "
       "checksum differs from " + directory + "/report.json)");
   }
+}
+
+namespace
+{
+// Why DIR cannot be swapped by renames; empty if it can.
+std::string whyNotSwappable(const std::filesystem::path& directory)
+{
+  std::error_code ec;
+  const std::filesystem::path cwd = std::filesystem::current_path(ec);
+  if (!ec)
+  {
+    const auto relative = cwd.lexically_relative(directory);
+    if (!relative.empty() && *relative.begin() != "..")
+    {
+      return "it is or holds the working directory";
+    }
+  }
+  struct stat self, parent;
+  if (stat(directory.c_str(), &self) != 0 || stat(directory.parent_path().c_str(), &parent) != 0 ||
+    self.st_dev != parent.st_dev)
+  {
+    return "it is a mount point";
+  }
+  if (access(directory.parent_path().c_str(), W_OK) != 0)
+  {
+    return "its parent directory is not writable";
+  }
+  return "";
+}
+
+std::string withPid(const std::filesystem::path& directory, const char* kind)
+{
+  return directory.string() + "." + kind + "." + std::to_string(getpid());
+}
+} // namespace
+
+MapDestination::MapDestination(const std::string& directory, bool replacing)
+  : Directory(directory)
+  , Path(directory)
+{
+  if (!replacing)
+  {
+    return;
+  }
+  std::error_code ec;
+  // A symbolic link keeps pointing at the directory's path, which then holds the new map.
+  const std::filesystem::path real = std::filesystem::canonical(directory, ec);
+  const std::string why = ec ? ec.message() : whyNotSwappable(real);
+  if (!why.empty())
+  {
+    this->Note = "the earlier map in " + directory + " is removed before the new one is written (" +
+      why + ": it cannot be replaced as a whole)";
+    // No reader takes a directory without report.json for a map, and the
+    // new report lists only the new files: an interruption from here on
+    // leaves no map rather than a mix of two.
+    removeMap(directory);
+    return;
+  }
+  this->Directory = real.string();
+  this->Path = withPid(real, "tmp");
+  std::filesystem::remove_all(this->Path, ec); // a leftover of a killed run with this pid
+  this->Cleanup = std::make_unique<InterruptCleanup>(this->Path);
+  this->Staged = true;
+  createOutputDirectory(this->Path, "report.json");
+}
+
+MapDestination::~MapDestination()
+{
+  if (this->Staged && !this->Committed)
+  {
+    std::error_code ec;
+    std::filesystem::remove_all(this->Path, ec);
+  }
+}
+
+void MapDestination::commit(const std::vector<std::string>& names)
+{
+  verifyMapFiles(this->Path, names);
+  if (!this->Staged)
+  {
+    this->Committed = true;
+    return;
+  }
+  namespace fs = std::filesystem;
+  const std::string old = withPid(this->Directory, "old");
+  std::error_code ec;
+  fs::remove_all(old, ec);
+  {
+    InterruptRestore restore(old, this->Directory);
+    fs::rename(this->Directory, old, ec);
+    if (ec)
+    {
+      throw std::runtime_error("cannot move the earlier map in " + this->Directory +
+        " aside: " + ec.message() + " (it is unchanged)");
+    }
+    fs::rename(this->Path, this->Directory, ec);
+    if (ec)
+    {
+      const std::string reason = ec.message();
+      fs::rename(old, this->Directory, ec);
+      throw std::runtime_error("cannot move the new map into " + this->Directory + ": " + reason +
+        (ec ? " (the earlier map is in " + old + ")" : " (the earlier map is unchanged)"));
+    }
+  }
+  this->Committed = true;
+  this->Cleanup.reset(); // the staging directory is DIR now
+  InterruptCleanup removeOld(old);
+  // What the directory held besides the earlier map stays in it.
+  bool carried = true;
+  for (const auto& entry : fs::directory_iterator(old, ec))
+  {
+    const std::string name = entry.path().filename().string();
+    if (name == "report.json" || isMapFileName(name))
+    {
+      continue;
+    }
+    std::error_code moved;
+    fs::rename(entry.path(), fs::path(this->Directory) / name, moved);
+    carried = carried && !moved;
+  }
+  if (!carried || ec)
+  {
+    throw std::runtime_error("the new map is in " + this->Directory +
+      ", but not every other file of the earlier directory could be moved into it: they are "
+      "in " +
+      old);
+  }
+  fs::remove_all(old, ec);
 }
 
 } // namespace surfacemap

@@ -13,6 +13,7 @@
 
 #include "vtkSmartPointer.h"
 
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -20,6 +21,8 @@ class vtkPolyData;
 
 namespace surfacemap
 {
+
+class InterruptCleanup;
 
 /// Writes the files of one map into a directory and records them.
 class MapWriter
@@ -37,10 +40,62 @@ public:
   /// no trailing comma).
   std::string reportJson() const;
 
+  /// The names written so far, in order.
+  const std::vector<std::string>& names() const { return this->Names; }
+
 private:
   std::string Directory;
   std::string Id;
+  std::vector<std::string> Names;
   std::vector<std::string> Records;
+};
+
+/// Where `surfacemap map` writes a map, so that an output directory holding
+/// an earlier map is replaced as a whole or stays as it was.
+///
+/// Without an earlier map the files go straight into the directory (a
+/// directory without report.json is no map). With one, they go into a
+/// staging directory beside it (DIR.tmp.<pid>, same file system), and
+/// commit() checks every file against the new report.json, renames DIR to
+/// DIR.old.<pid>, the staging directory to DIR, carries over what DIR held
+/// besides the earlier map's files, and removes DIR.old.<pid>. Until then
+/// the earlier map is untouched: on any failure, or SIGINT/SIGTERM, the
+/// staging directory is removed (the signal handler also undoes a swap
+/// caught between its two renames). Where no sibling can be made or a
+/// rename cannot work (DIR is the working directory or holds it, a mount
+/// point, or its parent is not writable), the earlier map is removed first
+/// (report.json before its files) and `note` says so: never a mix of two
+/// maps, but no old map left either should the new one fail.
+class MapDestination
+{
+public:
+  /// `directory` exists and is writable (prepareOutputDirectory);
+  /// `replacing`: it holds an earlier map to replace (removed here when it
+  /// cannot be staged). Throws std::runtime_error naming a directory or
+  /// file that cannot be prepared or removed.
+  MapDestination(const std::string& directory, bool replacing);
+  /// Removes the staging directory unless committed.
+  ~MapDestination();
+  MapDestination(const MapDestination&) = delete;
+  MapDestination& operator=(const MapDestination&) = delete;
+
+  /// Where to write the map's files.
+  const std::string& path() const { return this->Path; }
+  /// Why the earlier map is replaced in place (empty when staged or new).
+  const std::string& note() const { return this->Note; }
+
+  /// Puts the map written into path(), `names` with report.json, in place.
+  /// Throws std::runtime_error (the earlier map intact) if a file does not
+  /// match report.json or the swap fails.
+  void commit(const std::vector<std::string>& names);
+
+private:
+  std::string Directory;
+  std::string Path;
+  std::string Note;
+  bool Staged = false;
+  bool Committed = false;
+  std::unique_ptr<InterruptCleanup> Cleanup;
 };
 
 /// True for a name like a map file's: common_<i>.vtp, mapped_<i>.vtp,

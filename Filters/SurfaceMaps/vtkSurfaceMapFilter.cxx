@@ -147,7 +147,13 @@ struct vtkSurfaceMapFilter::vtkInternals
     vtkInternals& internals = *this;
     internals.ClearMap();
     this->Report(0.0, "Validating the inputs");
-    std::vector<surfacemaps::MapInput> mapInputs = vtkSurfaceMapInputs::Read(inputs, useSizing);
+    std::vector<std::string> warnings;
+    std::vector<surfacemaps::MapInput> mapInputs =
+      vtkSurfaceMapInputs::Read(inputs, useSizing, warnings);
+    for (const std::string& warning : warnings)
+    {
+      vtkWarningWithObjectMacro(this->Filter, << warning);
+    }
 
     // Sphere embeddings: the first 40 % of the progress when any is computed.
     const double embeddingShare = 0.4;
@@ -295,6 +301,11 @@ const char* vtkSurfaceMapFilter::GetSettingChoices(int i)
 const char* vtkSurfaceMapFilter::GetSettingDocumentation(int i)
 {
   return settingAt(i) ? settingAt(i)->doc : nullptr;
+}
+
+const char* vtkSurfaceMapFilter::GetSettingTopic(int i)
+{
+  return settingAt(i) ? settingAt(i)->topic : nullptr;
 }
 
 int vtkSurfaceMapFilter::GetSettingType(int i)

@@ -19,7 +19,10 @@
  * Optional point arrays:
  * - "Landmarks" (int, id >= 0 at landmark vertices, -1 elsewhere): the same id
  *   on two inputs means the two vertices correspond; every input must carry
- *   the same ids.
+ *   the same ids. Landmarks that are the mirror image of input 0's (most
+ *   landmark triples turn the other way around the input's centroid: a
+ *   mirrored mesh or the other side's landmark list) get a vtkWarningMacro
+ *   naming both inputs before the map runs; the map still runs.
  * - "Sizing" (1 component): target edge length in the input's own units
  *   (see SizingMode); without it, sizing follows the curvature.
  * - "SpherePosition" (3 components): a precomputed bijective sphere embedding
@@ -482,7 +485,9 @@ public:
    * name (Set<Name>/Get<Name>), command-line flag (without "--"; for a
    * switch the flag that turns it on, GetSettingOffFlag the one that turns it
    * off, else nullptr), choices ("star|sequence|..." for SETTING_CHOICE,
-   * else nullptr), documentation, SettingTypes value, range and default.
+   * else nullptr), documentation, topic (the group a GUI shows it in, e.g.
+   * "Landmark phase"; settings of one topic are consecutive), SettingTypes
+   * value, range and default.
    * Indices outside [0, GetNumberOfSettings()) give nullptr or NaN.
    */
   static int GetNumberOfSettings();
@@ -491,6 +496,7 @@ public:
   static const char* GetSettingOffFlag(int i);
   static const char* GetSettingChoices(int i);
   static const char* GetSettingDocumentation(int i);
+  static const char* GetSettingTopic(int i);
   static int GetSettingType(int i);
   static double GetSettingMinimum(int i);
   static double GetSettingMaximum(int i);

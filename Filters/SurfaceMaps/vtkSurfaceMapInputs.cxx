@@ -116,7 +116,8 @@ std::string vtkSurfaceMapInputs::Name(vtkPolyData* input, int index)
 
 std::vector<surfacemaps::MapInput> vtkSurfaceMapInputs::Read(
   const std::vector<vtkPolyData*>& inputs,
-  bool useSizing)
+  bool useSizing,
+  std::vector<std::string>& warnings)
 {
   const int n = static_cast<int>(inputs.size());
   std::vector<surfacemaps::MapInput> result(n);
@@ -157,6 +158,17 @@ std::vector<surfacemaps::MapInput> vtkSurfaceMapInputs::Read(
   {
     result[i].landmarks = landmarks[i].empty() ? std::vector<int>(result[i].mesh.points.size(), -1)
                                                : std::move(landmarks[i]);
+  }
+  if (anyLandmarks && n > 1)
+  {
+    std::vector<const surfacemaps::PolygonMesh*> meshes;
+    std::vector<std::vector<int>> ids;
+    for (const surfacemaps::MapInput& input : result)
+    {
+      meshes.push_back(&input.mesh);
+      ids.push_back(input.landmarks);
+    }
+    warnings = surfacemaps::checkLandmarkMirroring(meshes, ids, names);
   }
   return result;
 }

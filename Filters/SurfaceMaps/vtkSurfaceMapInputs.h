@@ -27,9 +27,11 @@ public:
 
   /// Every input as an engine input (mesh, landmarks, sizing when
   /// `useSizing`), validated; throws InputError listing every defect of
-  /// every input.
-  static std::vector<surfacemaps::MapInput> Read(
-    const std::vector<vtkPolyData*>& inputs, bool useSizing);
+  /// every input. `warnings` receives what is valid but suspect: landmarks
+  /// that are the mirror image of input 0's (checkLandmarkMirroring).
+  static std::vector<surfacemaps::MapInput> Read(const std::vector<vtkPolyData*>& inputs,
+    bool useSizing,
+    std::vector<std::string>& warnings);
 
   /// Sets every input's sphere embedding: a given "SpherePosition" array
   /// (certified; InputError if it is no bijective embedding), else computed,

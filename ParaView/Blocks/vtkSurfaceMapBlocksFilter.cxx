@@ -10,7 +10,26 @@
 #include "vtkPolyData.h"
 #include "vtkSurfaceMapsBlockList.h"
 
+#include <cmath>
+#include <vector>
+
 vtkStandardNewMacro(vtkSurfaceMapBlocksFilter);
+
+namespace
+{
+/// Setting i's value under `preset` for a filter holding `value`: the
+/// preset's where `value` is the table default, else `value`.
+double effectiveValue(int i, double value, int preset)
+{
+  if (value != vtkSurfaceMapFilter::GetSettingDefault(i))
+  {
+    return value;
+  }
+  vtkNew<vtkSurfaceMapFilter> presetValues;
+  presetValues->ApplyPreset(preset);
+  return presetValues->GetSetting(i);
+}
+} // namespace
 
 vtkSurfaceMapBlocksFilter::vtkSurfaceMapBlocksFilter()
 {
@@ -18,6 +37,26 @@ vtkSurfaceMapBlocksFilter::vtkSurfaceMapBlocksFilter()
 }
 
 vtkSurfaceMapBlocksFilter::~vtkSurfaceMapBlocksFilter() = default;
+
+void vtkSurfaceMapBlocksFilter::SetPreset(int preset)
+{
+  if (preset < 0 || preset >= GetNumberOfPresets())
+  {
+    vtkErrorMacro(<< "no preset " << preset << " (0 to " << GetNumberOfPresets() - 1 << ")");
+    return;
+  }
+  if (preset != this->Preset)
+  {
+    this->Preset = preset;
+    this->Modified();
+  }
+}
+
+double vtkSurfaceMapBlocksFilter::GetEffectiveSetting(int i)
+{
+  const double value = this->GetSetting(i);
+  return std::isnan(value) ? value : effectiveValue(i, value, this->Preset);
+}
 
 void vtkSurfaceMapBlocksFilter::UpdateNumberOfOutputPorts()
 {
@@ -74,7 +113,24 @@ int vtkSurfaceMapBlocksFilter::RequestData(vtkInformation* request,
   const auto surfaces =
     vtkSurfaceMapsBlockList::NewSurfaces(inputs->GetNumberOfInformationObjects(), outputs);
   vtkInformationVector* flatInputs[1] = { inputs };
+  // The preset's values for this run only: the settings as set come back
+  // afterwards (the time stamps of these changes precede the output's, so
+  // they do not make the pipeline run again).
+  const int n = GetNumberOfSettings();
+  std::vector<double> set(n);
+  for (int i = 0; i < n; ++i)
+  {
+    set[i] = this->GetSetting(i);
+  }
+  for (int i = 0; i < n; ++i)
+  {
+    this->SetSetting(i, effectiveValue(i, set[i], this->Preset));
+  }
   const int ok = this->Superclass::RequestData(request, flatInputs, outputs);
+  for (int i = 0; i < n; ++i)
+  {
+    this->SetSetting(i, set[i]);
+  }
   vtkSurfaceMapsBlockList::Gather(surfaces, names, output);
   return ok;
 }
@@ -82,4 +138,5 @@ int vtkSurfaceMapBlocksFilter::RequestData(vtkInformation* request,
 void vtkSurfaceMapBlocksFilter::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
+  os << indent << "Preset: " << GetPresetName(this->Preset) << "\n";
 }

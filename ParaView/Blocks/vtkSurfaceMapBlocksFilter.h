@@ -13,6 +13,17 @@
  * setting, the kept map (switching OutputMode does not recompute), progress,
  * AbortExecute and the errors are vtkSurfaceMapFilter's.
  *
+ * Preset: ParaView pushes every property of the proxy (each setting at
+ * its table default unless changed), so a preset cannot be applied as
+ * vtkSurfaceMapFilter::ApplyPreset does (once, overwritten by later Set
+ * calls) without depending on the order the properties arrive in. Here the
+ * preset is a property of its own, resolved when the map runs: a setting
+ * the preset governs takes the preset's value while it is at its table
+ * default, and a value changed away from the default wins over the preset
+ * (as a command-line flag wins over --preset). Get<Name>()/GetSetting(i)
+ * keep returning the values set; GetEffectiveSetting(i) is what the map
+ * runs with.
+ *
  * Its RequestInformation announces the N blocks in
  * COMPOSITE_DATA_META_DATA, so that downstream filters (the sequence
  * interpolator) know the number of surfaces before the map has run.
@@ -32,6 +43,23 @@ public:
   vtkTypeMacro(vtkSurfaceMapBlocksFilter, vtkSurfaceMapFilter);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
+  ///@{
+  /**
+   * The preset (vtkSurfaceMapFilter::Presets) filling in the settings it
+   * governs that are at their table defaults, when the map runs. Default
+   * PRESET_PAIR (the defaults themselves: no change). An unknown preset is
+   * ignored with a vtkErrorMacro.
+   */
+  void SetPreset(int preset);
+  vtkGetMacro(Preset, int);
+  ///@}
+
+  /**
+   * Setting i's value the map runs with under Preset (see above); NaN for
+   * an index out of range.
+   */
+  double GetEffectiveSetting(int i);
+
 protected:
   vtkSurfaceMapBlocksFilter();
   ~vtkSurfaceMapBlocksFilter() override;
@@ -41,6 +69,8 @@ protected:
   int FillOutputPortInformation(int port, vtkInformation* info) override;
   int RequestInformation(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+
+  int Preset = PRESET_PAIR;
 
 private:
   vtkSurfaceMapBlocksFilter(const vtkSurfaceMapBlocksFilter&) = delete;

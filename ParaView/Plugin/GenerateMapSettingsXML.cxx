@@ -5,9 +5,13 @@
 // without touching the plugin.
 //
 // Usage: GenerateMapSettingsXML TEMPLATE OUTPUT
-// Copies TEMPLATE to OUTPUT with the line holding @MAP_SETTINGS@ replaced by
-// one property per setting. Exit code 1 (and a message) if the template has no
-// such line or a file cannot be read or written.
+// Copies TEMPLATE to OUTPUT with the line holding @MAP_PRESET@ replaced by
+// the Preset property (one entry per preset of Core/map/MapPresets.cxx) and
+// the line holding @MAP_SETTINGS@ by one property per setting and one
+// property group per topic of the table. Exit code 1
+// (and a message) if the template lacks either line or a file cannot be read
+// or written.
+#include "map/MapPresets.h"
 #include "map/MapSettings.h"
 
 #include <cstdio>
@@ -16,6 +20,7 @@
 #include <set>
 #include <sstream>
 #include <string>
+#include <vector>
 
 namespace
 {
@@ -112,6 +117,70 @@ void writeProperty(std::ostream& out, const surfacemaps::MapSetting& s)
   out << "      </" << element << ">\n";
 }
 
+// One PropertyGroup per topic of the table (its settings are consecutive),
+// so the panel shows the settings under the table's headings.
+void writeGroups(std::ostream& out)
+{
+  const std::vector<surfacemaps::MapSetting>& table = surfacemaps::mapSettings();
+  for (std::size_t k = 0; k < table.size();)
+  {
+    const std::string topic = table[k].topic ? table[k].topic : "Other settings";
+    out << "      <PropertyGroup label=\"" << escaped(topic) << "\">\n";
+    for (; k < table.size() && topic == (table[k].topic ? table[k].topic : "Other settings"); ++k)
+    {
+      out << "        <Property name=\"" << table[k].name << "\"/>\n";
+    }
+    out << "      </PropertyGroup>\n";
+  }
+}
+
+// "population" -> "Population", as ParaView's enumerations are written.
+std::string label(const char* name)
+{
+  std::string text = name;
+  if (!text.empty() && text[0] >= 'a' && text[0] <= 'z')
+  {
+    text[0] = static_cast<char>(text[0] - 'a' + 'A');
+  }
+  return text;
+}
+
+// vtkSurfaceMapBlocksFilter::SetPreset: the preset is resolved when the map
+// runs, so its place among the properties does not matter.
+void writePreset(std::ostream& out)
+{
+  const std::vector<surfacemaps::MapPreset> all = surfacemaps::presets();
+  out << "      <IntVectorProperty name=\"Preset\" command=\"SetPreset\" "
+         "number_of_elements=\"1\" default_values=\"0\">\n"
+      << "        <EnumerationDomain name=\"enum\">\n";
+  for (std::size_t p = 0; p < all.size(); ++p)
+  {
+    out << "          <Entry value=\"" << p << "\" text=\""
+        << escaped(label(surfacemaps::presetName(all[p]))) << "\"/>\n";
+  }
+  out << "        </EnumerationDomain>\n";
+  std::string doc = "Named settings for a kind of study, applied when the map runs: a setting "
+                    "the preset sets takes the preset's value while it is at its default, and a "
+                    "value you change wins over the preset.";
+  for (surfacemaps::MapPreset preset : all)
+  {
+    doc += std::string(" ") + label(surfacemaps::presetName(preset)) + ": " +
+      surfacemaps::presetDocumentation(preset) + " Sets ";
+    const std::vector<surfacemaps::PresetValue> values = surfacemaps::presetValues(preset);
+    for (std::size_t k = 0; k < values.size(); ++k)
+    {
+      const surfacemaps::MapSetting* s = surfacemaps::findMapSetting(values[k].setting);
+      doc += (k == 0 ? "" : ", ") + std::string(values[k].setting) + " " +
+        s->format(s->clamp(values[k].value));
+    }
+    doc += ".";
+  }
+  out << "        <Documentation>" << escaped(doc)
+      << " Default: " << escaped(label(surfacemaps::presetName(all.front())))
+      << ". (Command line: --preset.)</Documentation>\n"
+      << "      </IntVectorProperty>\n";
+}
+
 } // namespace
 
 int main(int argc, char* argv[])
@@ -128,23 +197,33 @@ int main(int argc, char* argv[])
     return 1;
   }
   std::ostringstream out;
-  bool replaced = false;
+  bool settings = false;
+  bool preset = false;
   for (std::string line; std::getline(in, line);)
   {
-    if (line.find("@MAP_SETTINGS@") == std::string::npos)
+    if (line.find("@MAP_SETTINGS@") != std::string::npos)
+    {
+      for (const surfacemaps::MapSetting& s : surfacemaps::mapSettings())
+      {
+        writeProperty(out, s);
+      }
+      writeGroups(out);
+      settings = true;
+    }
+    else if (line.find("@MAP_PRESET@") != std::string::npos)
+    {
+      writePreset(out);
+      preset = true;
+    }
+    else
     {
       out << line << "\n";
-      continue;
     }
-    for (const surfacemaps::MapSetting& s : surfacemaps::mapSettings())
-    {
-      writeProperty(out, s);
-    }
-    replaced = true;
   }
-  if (!replaced)
+  if (!settings || !preset)
   {
-    std::cerr << argv[0] << ": " << argv[1] << " has no @MAP_SETTINGS@ line\n";
+    std::cerr << argv[0] << ": " << argv[1] << " has no "
+              << (settings ? "@MAP_PRESET@" : "@MAP_SETTINGS@") << " line\n";
     return 1;
   }
   std::ofstream file(argv[2]);

@@ -18,24 +18,31 @@
 #include "vtkPointData.h"
 #include "vtkPolyData.h"
 #include "vtkProcessModule.h"
+#include "vtkSMDocumentation.h"
 #include "vtkSMDoubleRangeDomain.h"
 #include "vtkSMEnumerationDomain.h"
 #include "vtkSMIntRangeDomain.h"
 #include "vtkSMParaViewPipelineController.h"
 #include "vtkSMPluginManager.h"
 #include "vtkSMProperty.h"
+#include "vtkSMPropertyGroup.h"
 #include "vtkSMPropertyHelper.h"
 #include "vtkSMProxyManager.h"
 #include "vtkSMSession.h"
 #include "vtkSMSessionProxyManager.h"
 #include "vtkSMSourceProxy.h"
 #include "vtkSmartPointer.h"
+#include "vtkStringArray.h"
+#include "vtkSurfaceMapBlocksFilter.h"
 #include "vtkSurfaceMapFilter.h"
 #include "vtkTable.h"
 
+#include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <iostream>
 #include <string>
+#include <vector>
 
 namespace
 {
@@ -149,7 +156,85 @@ void checkMapSettings(Pipeline& pipeline)
         break;
     }
     check(property->GetDocumentation() != nullptr, name + " is documented");
+    // In the panel under its topic: exactly one property group holds it.
+    int groups = 0;
+    std::string label;
+    for (std::size_t g = 0; g < map->GetNumberOfPropertyGroups(); ++g)
+    {
+      vtkSMPropertyGroup* group = map->GetPropertyGroup(g);
+      for (unsigned int p = 0; p < group->GetNumberOfProperties(); ++p)
+      {
+        if (group->GetProperty(p) == property)
+        {
+          ++groups;
+          label = group->GetXMLLabel() ? group->GetXMLLabel() : "";
+        }
+      }
+    }
+    const char* topic = vtkSurfaceMapFilter::GetSettingTopic(i);
+    check(groups == 1 && topic && label == topic,
+      name + " is in one property group, the table's topic " + (topic ? topic : "(none)") +
+        " (found in " + std::to_string(groups) + ", '" + label + "')");
   }
+}
+
+// The Preset property: one enumeration entry per preset of the engine's
+// table, documented, default "Pair".
+void checkPresetProperty(Pipeline& pipeline)
+{
+  auto map = pipeline.New("filters", "SurfaceMap");
+  vtkSMProperty* property = map ? map->GetProperty("Preset") : nullptr;
+  check(property != nullptr, "SurfaceMap has the property Preset");
+  if (!property)
+  {
+    return;
+  }
+  auto* entries = vtkSMEnumerationDomain::SafeDownCast(property->GetDomain("enum"));
+  const int n = vtkSurfaceMapFilter::GetNumberOfPresets();
+  check(entries && entries->GetNumberOfEntries() == static_cast<unsigned int>(n),
+    "Preset has one enumeration entry per preset");
+  for (int p = 0; entries && p < n && p < static_cast<int>(entries->GetNumberOfEntries()); ++p)
+  {
+    std::string name = vtkSurfaceMapFilter::GetPresetName(p);
+    name[0] = static_cast<char>(std::toupper(name[0]));
+    check(entries->GetEntryValue(static_cast<unsigned int>(p)) == p &&
+        name == entries->GetEntryText(static_cast<unsigned int>(p)),
+      "Preset entry " + std::to_string(p) + " is " + name);
+  }
+  check(vtkSMPropertyHelper(property).GetAsInt() == vtkSurfaceMapFilter::PRESET_PAIR,
+    "Preset defaults to Pair");
+  const std::string doc =
+    property->GetDocumentation() && property->GetDocumentation()->GetDescription()
+    ? property->GetDocumentation()->GetDescription()
+    : "";
+  check(doc.find("ApproximationWeight") != std::string::npos,
+    "Preset's documentation names the settings it sets: " + doc);
+}
+
+int settingIndex(const char* name)
+{
+  for (int i = 0; i < vtkSurfaceMapFilter::GetNumberOfSettings(); ++i)
+  {
+    if (std::string(vtkSurfaceMapFilter::GetSettingName(i)) == name)
+    {
+      return i;
+    }
+  }
+  return -1;
+}
+
+// The map's phases as run (field data "PhaseName").
+std::vector<std::string> phasesOf(vtkDataObject* data)
+{
+  std::vector<std::string> phases;
+  auto* names = data
+    ? vtkStringArray::SafeDownCast(data->GetFieldData()->GetAbstractArray("PhaseName"))
+    : nullptr;
+  for (vtkIdType k = 0; names && k < names->GetNumberOfValues(); ++k)
+  {
+    phases.push_back(names->GetValue(k));
+  }
+  return phases;
 }
 
 vtkSmartPointer<vtkSMSourceProxy> read(
@@ -211,6 +296,7 @@ int main(int argc, char* argv[])
     Pipeline pipeline{ session->GetSessionProxyManager(), controller };
 
     checkMapSettings(pipeline);
+    checkPresetProperty(pipeline);
 
     // The reader, every format.
     for (const char* file : { "ellipsoid_coarse.stl", "blob.vtp", "limbs.ply", "limbs_coarse.vtk",
@@ -299,6 +385,121 @@ int main(int argc, char* argv[])
     vtkDataArray* weights = mean ? mean->GetFieldData()->GetArray("AverageWeight") : nullptr;
     check(weights && weights->GetNumberOfTuples() == 2 && weights->GetComponent(0, 0) == 0.5,
       "the average weighs both blocks equally");
+
+    // The shape statistics of the map's blocks: two surfaces, one mode; the
+    // mean at Coefficient 0, and at Coefficient 2 the mean moved by two
+    // standard deviations along Mode_1.
+    auto statistics = pipeline.New("filters", "SurfaceShapeStatistics");
+    check(statistics != nullptr, "the plugin defines filters/SurfaceShapeStatistics");
+    if (statistics)
+    {
+      check(vtkSMDoubleRangeDomain::SafeDownCast(
+              statistics->GetProperty("Coefficient")->GetDomain("range")) != nullptr,
+        "Coefficient has a range (a slider)");
+      vtkSMPropertyHelper(statistics, "Input").Set(map, 0);
+      pipeline.Apply(statistics, "statistics");
+      statistics->UpdatePipeline();
+      vtkNew<vtkPolyData> meanShape;
+      if (auto* shape = outputOf<vtkPolyData>(statistics))
+      {
+        meanShape->DeepCopy(shape);
+      }
+      check(meanShape->GetNumberOfPoints() == commonPoints,
+        "the statistics' mean has the common triangulation's points");
+      vtkDataArray* spread = meanShape->GetPointData()->GetArray("StandardDeviation");
+      vtkDataArray* mode = meanShape->GetPointData()->GetArray("Mode_1");
+      check(spread && mode && mode->GetNumberOfComponents() == 3 &&
+          !meanShape->GetPointData()->GetArray("Mode_2"),
+        "the statistics of two surfaces have StandardDeviation and exactly one mode");
+      const double variance = fieldValue(meanShape, "Variance");
+      check(variance > 0 && fieldValue(meanShape, "ExplainedVarianceFraction") > 0.999,
+        "one mode explains the variance of two different surfaces");
+      vtkSMPropertyHelper(statistics, "Coefficient").Set(2.0);
+      statistics->UpdateVTKObjects();
+      statistics->UpdatePipeline();
+      auto* moved = outputOf<vtkPolyData>(statistics);
+      double largest = 0.0;
+      double mismatch = 0.0;
+      for (vtkIdType v = 0; moved && mode && v < commonPoints; ++v)
+      {
+        double p[3], q[3], u[3];
+        meanShape->GetPoint(v, p);
+        moved->GetPoint(v, q);
+        mode->GetTuple(v, u);
+        for (int c = 0; c < 3; ++c)
+        {
+          const double expected = 2.0 * std::sqrt(variance) * u[c];
+          largest = std::max(largest, std::abs(expected));
+          mismatch = std::max(mismatch, std::abs(q[c] - p[c] - expected));
+        }
+      }
+      check(moved && moved->GetNumberOfPoints() == commonPoints && largest > 0 &&
+          mismatch <= 1e-9 * (1.0 + largest),
+        "Coefficient 2 moves the mean by two standard deviations along Mode_1 (mismatch " +
+          std::to_string(mismatch) + ")");
+      vtkSMPropertyHelper(statistics, "Mode").Set(2);
+      statistics->UpdateVTKObjects();
+      statistics->UpdatePipeline();
+      moved = outputOf<vtkPolyData>(statistics);
+      check(moved && moved->GetNumberOfPoints() == 0,
+        "Mode 2 of two surfaces (one mode) is an error with an empty output");
+    }
+
+    // The population preset: the settings it sets that are left at their
+    // defaults take its values, a changed one (FineIterations) wins, and the
+    // run is the same as with those values set by hand.
+    auto population = pipeline.New("filters", "SurfaceMap");
+    auto byHand = pipeline.New("filters", "SurfaceMap");
+    for (auto* proxy : { population.GetPointer(), byHand.GetPointer() })
+    {
+      vtkSMPropertyHelper(proxy, "Input").Add(ellipsoid, 0);
+      vtkSMPropertyHelper(proxy, "Input").Add(blob, 0);
+      vtkSMPropertyHelper(proxy, "LandmarkIterations").Set(20);
+      vtkSMPropertyHelper(proxy, "CoarseIterations").Set(3);
+      vtkSMPropertyHelper(proxy, "FineIterations").Set(3);
+    }
+    vtkSMPropertyHelper(population, "Preset").Set(vtkSurfaceMapFilter::PRESET_POPULATION);
+    vtkSMPropertyHelper(byHand, "TargetError").Set(1e-2);
+    vtkSMPropertyHelper(byHand, "ApproximationWeight").Set(2.0);
+    vtkSMPropertyHelper(byHand, "RefinementRounds").Set(0);
+    pipeline.Apply(population, "population");
+    pipeline.Apply(byHand, "by hand");
+    auto* presetFilter = vtkSurfaceMapBlocksFilter::SafeDownCast(population->GetClientSideObject());
+    check(presetFilter && presetFilter->GetPreset() == vtkSurfaceMapFilter::PRESET_POPULATION,
+      "the Preset property reaches the filter");
+    const int targetError = settingIndex("TargetError");
+    const int fineIterations = settingIndex("FineIterations");
+    const int refinementRounds = settingIndex("RefinementRounds");
+    check(presetFilter && presetFilter->GetEffectiveSetting(targetError) == 1e-2 &&
+        presetFilter->GetEffectiveSetting(refinementRounds) == 0 &&
+        presetFilter->GetEffectiveSetting(fineIterations) == 3,
+      "under Population the map runs with TargetError 0.01 and no refinement rounds, and the "
+      "FineIterations set wins over the preset's");
+    population->UpdatePipeline();
+    byHand->UpdatePipeline();
+    check(vtkSMPropertyHelper(population, "TargetError").GetAsDouble() ==
+          vtkSurfaceMapFilter::GetSettingDefault(targetError) &&
+        presetFilter &&
+        presetFilter->GetSetting(targetError) ==
+          vtkSurfaceMapFilter::GetSettingDefault(targetError),
+      "the preset leaves the TargetError property and the filter's setting as set");
+    auto* presetBlocks = outputOf<vtkMultiBlockDataSet>(population);
+    auto* handBlocks = outputOf<vtkMultiBlockDataSet>(byHand);
+    auto* presetT = presetBlocks ? vtkPolyData::SafeDownCast(presetBlocks->GetBlock(0)) : nullptr;
+    auto* handT = handBlocks ? vtkPolyData::SafeDownCast(handBlocks->GetBlock(0)) : nullptr;
+    check(presetT && handT && fieldValue(presetT, "Bijective") == 1.0 &&
+        presetT->GetNumberOfPoints() == handT->GetNumberOfPoints() &&
+        fieldValue(presetT, "Energy") == fieldValue(handT, "Energy") &&
+        phasesOf(presetT) == phasesOf(handT),
+      "the Population map is the map with the preset's values set by hand (" +
+        std::to_string(presetT ? presetT->GetNumberOfPoints() : -1) + " and " +
+        std::to_string(handT ? handT->GetNumberOfPoints() : -1) + " vertices)");
+    const auto phases = phasesOf(presetT);
+    check(!phases.empty() && std::find(phases.begin(), phases.end(), "refine") == phases.end(),
+      "the Population map runs no refinement phase");
+    auto* pairT = blocks ? vtkPolyData::SafeDownCast(blocks->GetBlock(0)) : nullptr;
+    check(presetT && pairT && fieldValue(presetT, "Energy") != fieldValue(pairT, "Energy"),
+      "the Population map differs from the Pair map of the same caps");
 
     // The evaluation of block 0 -> block 1.
     auto evaluation = pipeline.New("filters", "SurfaceMapEvaluation");

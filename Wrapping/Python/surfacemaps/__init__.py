@@ -80,6 +80,10 @@ class MapError(RuntimeError):
     """No certified bijective map was found (or the computation failed otherwise)."""
 
 
+class SurfaceMapsWarning(UserWarning):
+    """Valid but suspect input, e.g. landmarks that are the mirror image of the first mesh's."""
+
+
 def _error_observer(algorithm):
     """Turn the algorithm's ErrorEvents into a list of messages (instead of VTK's output window).
 
@@ -99,6 +103,44 @@ def _collect_errors(algorithm):
     return _error_observer(algorithm)[0]
 
 
+def _macro_text(text, default):
+    """The message of a vtkErrorMacro/vtkWarningMacro text, without file, line and object."""
+    return text.split("): ", 1)[-1].strip() if text else default
+
+
+def _update(algorithm, errors=None):
+    """algorithm.Update() with the error itself as the only message.
+
+    When RequestData fails, VTK's executive adds its own error ("Algorithm ...
+    returned failure for request: ..." and the whole request) through the
+    output window; here it is observed for this update only and dropped when
+    the algorithm reported why (its ErrorEvents fill `errors`), else appended
+    to `errors` so that the caller raises it. The algorithm's warnings become
+    Python warnings (SurfaceMapsWarning)."""
+    import warnings
+    from vtkmodules.vtkCommonCore import vtkCommand
+    executive = algorithm.GetExecutive()
+    pipeline_errors = []
+
+    def on_pipeline_error(obj, event, text=None):
+        pipeline_errors.append(_macro_text(text, "pipeline error"))
+
+    def on_warning(obj, event, text=None):
+        warnings.warn(_macro_text(text, "unknown warning"), SurfaceMapsWarning, stacklevel=4)
+
+    on_pipeline_error.CallDataType = "string0"
+    on_warning.CallDataType = "string0"
+    tags = [(executive, executive.AddObserver(vtkCommand.ErrorEvent, on_pipeline_error)),
+            (algorithm, algorithm.AddObserver(vtkCommand.WarningEvent, on_warning))]
+    try:
+        algorithm.Update()
+    finally:
+        for obj, tag in tags:
+            obj.RemoveObserver(tag)
+    if errors is not None and not errors:
+        errors.extend(pipeline_errors)
+
+
 _SUMMARY = ("SymmetricDirichlet", "AreaBelow1.5", "AreaBelow2", "MaxDistortion", "DegenerateTriangles",
             "MinAngleSource", "MeanMinAngleSource", "MinAngleTarget", "MeanMinAngleTarget", "HausdorffSource",
             "HausdorffTarget", "TwoSidedDistanceSource", "TwoSidedDistanceTarget", "Bijective",
@@ -108,12 +150,12 @@ _SUMMARY = ("SymmetricDirichlet", "AreaBelow1.5", "AreaBelow2", "MaxDistortion",
 def read_mesh(path, landmarks=None):
     """Read a mesh file (OBJ, OFF, PLY, STL, VTP, VTK) and optionally a landmark file."""
     reader = vtkSurfaceMeshReader()
-    _collect_errors(reader)
+    errors = _collect_errors(reader)
     reader.SetFileName(str(path))
     if landmarks is not None:
         reader.SetLandmarkFileName(str(landmarks))
-    reader.Update()
-    message = reader.GetLastErrorMessage()
+    _update(reader, errors)
+    message = reader.GetLastErrorMessage() or "; ".join(errors)
     if message:
         raise InputError(message)
     return reader.GetOutput()
@@ -125,7 +167,7 @@ def validate(*meshes, check_landmark_correspondence=True):
     validator.SetCheckLandmarkCorrespondence(check_landmark_correspondence)
     for mesh in meshes:
         validator.AddInputDataObject(mesh)
-    validator.Update()
+    _update(validator)
     table = validator.GetOutput()
     rows = []
     for r in range(table.GetNumberOfRows()):
@@ -155,7 +197,7 @@ def embed_on_sphere(mesh, **settings):
             raise TypeError(f"vtkSphereEmbeddingFilter has no setting {name!r}")
         setter(value)
     f.SetInputData(mesh)
-    f.Update()
+    _update(f, errors)
     if errors or f.GetOutput().GetNumberOfPoints() == 0:
         raise InputError("; ".join(errors) or "the embedding was aborted")
     return f.GetOutput()
@@ -168,7 +210,7 @@ def evaluate_map(source, target, source_original=None, target_original=None):
     for port, mesh in enumerate((source, target, source_original, target_original)):
         if mesh is not None:
             e.SetInputData(port, mesh)
-    e.Update()
+    _update(e, errors)
     if errors:
         raise InputError("; ".join(errors))
     fields = e.GetOutput().GetFieldData()
@@ -350,7 +392,7 @@ def map_surfaces(meshes, landmarks=None, target_error=None, pairs=None, keep_lan
         f.AddInputData(_with_landmarks(mesh, None if landmarks is None else landmarks[k]))
 
     def outputs():
-        f.Update()
+        _update(f, errors)
         if errors or f.GetOutput(0).GetNumberOfPoints() == 0:
             message = "; ".join(errors) or "the map was aborted"
             raise (InputError if f.GetErrorCode() == vtkSurfaceMapFilter.InvalidInputError else MapError)(message)
@@ -406,7 +448,7 @@ def transfer(map_dir, source, target, arrays=None, categorical=None, continuous=
         t.SetInputDataObject(port, read_mesh(path))
     for name in arrays or ():
         t.AddArrayName(str(name))
-    t.Update()
+    _update(t, errors)
     if errors or t.GetOutput().GetNumberOfPoints() == 0:
         message = "; ".join(errors) or "the transfer was aborted"
         raise (InputError if t.GetErrorCode() == vtkSurfaceMapTransfer.InvalidInputError else MapError)(message)
@@ -513,7 +555,7 @@ def average_surfaces(meshes, weights=None, align="rigid", categorical=None, cont
         a.AddInputData(_with_landmarks(mesh, None))
         if weights is not None:
             a.SetInputWeight(k, weights[k])
-    a.Update()
+    _update(a, errors)
     if errors or a.GetOutput().GetNumberOfPoints() == 0:
         raise InputError("; ".join(errors) or "the average was aborted")
     result = a.GetOutput().NewInstance()
@@ -558,7 +600,7 @@ class ShapeStatistics:
             raise ValueError(f"mode is 1 to {len(self.variances)}, not {mode}")
         a.SetMode(mode)
         a.SetCoefficient(coefficient)
-        a.Update()
+        _update(a)
         result = a.GetOutput().NewInstance()
         result.ShallowCopy(a.GetOutput())
         return result
@@ -590,7 +632,7 @@ def shape_statistics(meshes, modes=3, align="rigid"):
     a.SetNumberOfModes(int(modes))
     for mesh in meshes:
         a.AddInputData(_with_landmarks(mesh, None))
-    a.Update()
+    _update(a, errors)
     if errors or a.GetOutput().GetNumberOfPoints() == 0:
         raise InputError("; ".join(errors) or "the statistics were aborted")
     return ShapeStatistics(a)

@@ -328,12 +328,21 @@ void detailSettings(std::vector<MapSetting>& table)
 std::vector<MapSetting> buildTable()
 {
   std::vector<MapSetting> table;
-  pairSettings(table);
-  landmarkSettings(table);
-  phaseSettings(table);
-  refinementSettings(table);
-  boundSettings(table);
-  detailSettings(table);
+  const auto add = [&table](void (*settings)(std::vector<MapSetting>&), const char* topic)
+  {
+    const std::size_t first = table.size();
+    settings(table);
+    for (std::size_t k = first; k < table.size(); ++k)
+    {
+      table[k].topic = topic;
+    }
+  };
+  add(pairSettings, "Pairs");
+  add(landmarkSettings, "Landmark phase");
+  add(phaseSettings, "Coarse and fine phases");
+  add(refinementSettings, "Refinement");
+  add(boundSettings, "Error bound");
+  add(detailSettings, "Limits and solver");
   return table;
 }
 

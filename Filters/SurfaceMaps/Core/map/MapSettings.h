@@ -42,6 +42,9 @@ struct MapSetting
   const char* doc;
   std::function<double(const SurfaceMapOptions&)> get;
   std::function<void(SurfaceMapOptions&, double)> set;
+  /// The group it belongs to, e.g. "Landmark phase" (GUIs show the settings
+  /// by topic; the table's order keeps each topic together).
+  const char* topic = nullptr;
 
   double defaultValue() const { return this->get(SurfaceMapOptions()); }
   /// `value` clamped into the range (and rounded for counts).

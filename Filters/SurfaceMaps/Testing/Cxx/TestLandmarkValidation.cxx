@@ -1,4 +1,7 @@
 #include "mesh/LandmarkValidation.h"
+#include "mesh/Primitives.h"
+
+#include <Eigen/Geometry>
 
 #include <gtest/gtest.h>
 
@@ -31,4 +34,56 @@ TEST(LandmarkValidation, LandmarkCorrespondence)
   auto ids = checkLandmarkCorrespondence({ { 0, 1 }, { 0, 2 }, { 1, 0 } }, names);
   ASSERT_EQ(ids[1].size(), 1u);
   EXPECT_NE(ids[1][0].find("id 1 is on a (vertex 1) but not on b"), std::string::npos);
+}
+
+namespace
+{
+// An icosphere with 6 landmarks at scattered vertices, and its image under `transform`
+// (triangles reversed when it mirrors, so the mesh stays outward oriented).
+PolygonMesh transformed(const PolygonMesh& mesh, const Eigen::Matrix3d& transform)
+{
+  PolygonMesh result = mesh;
+  for (Eigen::Vector3d& p : result.points)
+  {
+    p = transform * p + Eigen::Vector3d(3.0, -1.0, 2.0);
+  }
+  if (transform.determinant() < 0)
+  {
+    for (std::size_t f = 0; f < result.numberOfFaces(); ++f)
+    {
+      std::swap(result.faceVertices[result.faceOffsets[f] + 1],
+        result.faceVertices[result.faceOffsets[f] + 2]);
+    }
+  }
+  return result;
+}
+} // namespace
+
+TEST(LandmarkValidation, MirroredLandmarksAreFound)
+{
+  const PolygonMesh sphere = makeIcosphere(2);
+  std::vector<int> ids(sphere.points.size(), -1);
+  const int vertices[] = { 0, 7, 19, 33, 58, 101 };
+  for (int k = 0; k < 6; ++k)
+  {
+    ids[vertices[k]] = k;
+  }
+  // A rotation, scaling and translation keeps every orientation.
+  const Eigen::Matrix3d rotation =
+    1.7 * Eigen::AngleAxisd(1.1, Eigen::Vector3d(1, 2, 3).normalized()).toRotationMatrix();
+  const PolygonMesh turned = transformed(sphere, rotation);
+  const LandmarkOrientation same = compareLandmarkOrientation(sphere, ids, turned, ids);
+  EXPECT_GT(same.triples, 10);
+  EXPECT_EQ(same.opposite, 0);
+  // A mirror flips every decisive triple.
+  const PolygonMesh mirrored = transformed(sphere, Eigen::Vector3d(-1.0, 1.0, 1.0).asDiagonal());
+  const LandmarkOrientation flipped = compareLandmarkOrientation(sphere, ids, mirrored, ids);
+  EXPECT_GT(flipped.triples, 10);
+  EXPECT_EQ(flipped.opposite, flipped.triples);
+
+  const std::vector<std::string> warnings = checkLandmarkMirroring(
+    { &sphere, &turned, &mirrored }, { ids, ids, ids }, { "input 0", "input 1", "input 2" });
+  ASSERT_EQ(warnings.size(), 1u);
+  EXPECT_NE(warnings[0].find("the landmarks of input 2 are the mirror image of those of input 0"),
+    std::string::npos);
 }

@@ -111,3 +111,60 @@ def test_map_settings_outside_their_range_are_refused(setting, value):
     kwargs = {setting: value}
     with pytest.raises(ValueError, match="must be a finite number in"):
         surfacemaps.map_surfaces([data("ellipsoid.obj")], **kwargs)
+
+
+def _two_component_landmarks():
+    array = vtkIntArray()
+    array.SetNumberOfComponents(2)
+    return with_landmarks(array, [(5, 0)])
+
+
+@pytest.mark.parametrize("call, match", [
+    (lambda: surfacemaps.read_mesh(data("no_such_mesh.obj")), "no_such_mesh.obj"),
+    (lambda: surfacemaps.evaluate_map(vtkPolyData(), vtkPolyData()), "contains no vertices"),
+    (lambda: surfacemaps.embed_on_sphere(vtkPolyData()), "no vertices|empty"),
+    (lambda: surfacemaps.map_surfaces([_two_component_landmarks(),
+                                       surfacemaps.read_mesh(data("blob.off"))]), "2 components"),
+    (lambda: surfacemaps.average_surfaces([data("ellipsoid_coarse.stl"), data("blob.off")]), "input 1"),
+    (lambda: surfacemaps.shape_statistics([data("ellipsoid_coarse.stl"), data("blob.off")]), "input 1"),
+], ids=["read_mesh", "evaluate_map", "embed_on_sphere", "map_surfaces", "average_surfaces",
+        "shape_statistics"])
+def test_the_python_error_is_the_only_message(capfd, call, match):
+    """VTK's executive adds "Algorithm ... returned failure for request" (and the request) on
+    stderr after a failed update; the Python API raises the filter's error and prints nothing."""
+    capfd.readouterr()
+    with pytest.raises(surfacemaps.InputError, match=match):
+        call()
+    err = capfd.readouterr().err
+    assert err == "", err
+
+
+def test_mirror_image_landmarks_raise_a_python_warning(tmp_path, capfd):
+    """blob.off mirrored in x with blob.vts's landmark vertices, against ellipsoid.obj and its
+    landmarks: a SurfaceMapsWarning naming both inputs (not VTK's output window), and the map
+    still runs."""
+    lines = [line for line in open(data("blob.off")).read().splitlines()
+             if line.strip() and not line.startswith("#")]
+    vertices, faces = map(int, lines[1].split()[:2])
+    out = ["OFF", lines[1]]
+    for line in lines[2:2 + vertices]:
+        x, y, z = map(float, line.split()[:3])
+        out.append(f"{-x!r} {y!r} {z!r}")
+    for line in lines[2 + vertices:2 + vertices + faces]:
+        count, *corners = line.split()
+        out.append(" ".join([count, *reversed(corners)]))
+    mirrored = tmp_path / "blob_mirrored.off"
+    mirrored.write_text("\n".join(out) + "\n")
+    blob_landmarks = [int(line.split()[0]) for line in open(data("blob.vts")) if line.strip()]
+    ellipsoid_landmarks = [int(line.split()[-1]) for line in open(data("ellipsoid.pinned")) if line.strip()]
+    capfd.readouterr()
+    with pytest.warns(surfacemaps.SurfaceMapsWarning,
+                      match=r"landmarks of input 1 \(\S*blob_mirrored.off\) are the mirror image of "
+                            r"those of input 0 \(\S*ellipsoid.obj\)"):
+        common = surfacemaps.map_surfaces([data("ellipsoid.obj"), str(mirrored)],
+                                          landmarks=[ellipsoid_landmarks, blob_landmarks],
+                                          LandmarkIterations=10, CoarseIterations=3, FineIterations=3,
+                                          RefinementRounds=0)
+    assert len(common) == 2 and common[0].GetNumberOfPoints() > 0
+    err = capfd.readouterr().err
+    assert "mirror image" not in err and "Warning: In" not in err, err
