@@ -7,8 +7,10 @@ The VTK classes of the module are available directly from this package::
 
 Helpers:
 
-``read_mesh(path, landmarks=None)``
-    Read a mesh (and optional landmark file) into a vtkPolyData; raises
+``read_mesh(path, landmarks=None, sizing=None)``
+    Read a mesh (and optional landmark and sizing files) into a vtkPolyData;
+    landmarks given as points are snapped to the closest vertex (distances in
+    the field data, a warning above 1 % of the bounding-box diagonal); raises
     ``surfacemaps.InputError`` with the reader's message on failure.
 ``validate(*meshes)``
     Validate one or more vtkPolyData as SurfaceMaps inputs; returns a list of
@@ -100,17 +102,37 @@ _SUMMARY = ("SymmetricDirichlet", "AreaBelow1.5", "AreaBelow2", "MaxDistortion",
             "NonPositiveTriangles")
 
 
-def read_mesh(path, landmarks=None):
-    """Read a mesh file (OBJ, OFF, PLY, STL, VTP, VTK) and optionally a landmark file."""
+def read_mesh(path, landmarks=None, sizing=None):
+    """Read a mesh file (OBJ, OFF, PLY, STL, VTP, VTK), optionally with a landmark file and a sizing file.
+
+    Landmarks: vertex indices (.pinned, .txt, SHREC .vts) or points (.vts without index, .csv x,y,z[,id],
+    3D Slicer .fcsv and .mrk.json), each point snapped to the closest vertex; the mesh's field data then
+    holds LandmarkSnapId, LandmarkSnapVertex and LandmarkSnapDistance, and a point farther than 1 % of
+    the bounding-box diagonal from its vertex raises a UserWarning. Sizing: one target edge length per
+    vertex per line, read into the point array "Sizing" (used by map_surfaces instead of curvature).
+    """
+    import warnings
+    from vtkmodules.vtkCommonCore import vtkCommand
     reader = vtkSurfaceMeshReader()
     _collect_errors(reader)
+    notes = []
+
+    def on_warning(obj, event, text=None):
+        notes.append(text.split("): ", 1)[-1].strip() if text else "warning")
+
+    on_warning.CallDataType = "string0"
+    reader.AddObserver(vtkCommand.WarningEvent, on_warning)
     reader.SetFileName(str(path))
     if landmarks is not None:
         reader.SetLandmarkFileName(str(landmarks))
+    if sizing is not None:
+        reader.SetSizingFileName(str(sizing))
     reader.Update()
     message = reader.GetLastErrorMessage()
     if message:
         raise InputError(message)
+    for note in notes:
+        warnings.warn(note, UserWarning, stacklevel=2)
     return reader.GetOutput()
 
 
