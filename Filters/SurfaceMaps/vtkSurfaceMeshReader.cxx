@@ -438,14 +438,39 @@ void snapLandmarkPoints(vtkSurfaceMeshReader* self,
     {
       continue;
     }
-    const vtkIdType closest = locator->FindClosestPoint(record.Point.data());
+    vtkIdType closest = locator->FindClosestPoint(record.Point.data());
+    double p[3];
     if (closest < 0)
     {
-      throw surfacemaps::InputError(meshPath + " has no vertices to snap landmarks to");
+      // The locator gives up on points far outside its bins (coordinates
+      // near the double range): look at every vertex.
+      double best = std::numeric_limits<double>::infinity();
+      for (vtkIdType v = 0; v < mesh->GetNumberOfPoints(); ++v)
+      {
+        mesh->GetPoint(v, p);
+        const double d2 = vtkMath::Distance2BetweenPoints(p, record.Point.data());
+        if (d2 < best)
+        {
+          best = d2;
+          closest = v;
+        }
+      }
     }
-    double p[3];
-    mesh->GetPoint(closest, p);
-    const double distance = std::sqrt(vtkMath::Distance2BetweenPoints(p, record.Point.data()));
+    double distance = std::numeric_limits<double>::infinity();
+    if (closest >= 0)
+    {
+      mesh->GetPoint(closest, p);
+      distance = std::sqrt(vtkMath::Distance2BetweenPoints(p, record.Point.data()));
+    }
+    if (!std::isfinite(distance))
+    {
+      std::ostringstream point;
+      point << "(" << record.Point[0] << ", " << record.Point[1] << ", " << record.Point[2] << ")";
+      surfacemaps::failAtLine(landmarkPath,
+        record.Line,
+        "landmark " + std::to_string(record.Id) + " at " + point.str() +
+          " is too far from every vertex of " + meshPath + " to snap to one");
+    }
     record.Vertex = static_cast<int>(closest);
     ids->InsertNextValue(record.Id);
     vertices->InsertNextValue(closest);

@@ -106,6 +106,7 @@ MALFORMED = [
     ("bad.mrk.json", '{"markups": [{"controlPoints": [\n{"position": [0, 0, 0]},\n{"position": [1, 2]}\n]}]}',
      ":3: control point 1 has no \"position\" of three numbers"),
     ("bad.mrk.json", '{"markups": [{"controlPoints": [\n{"position": [0, 0, 0]},\n', ": not valid JSON"),
+    ("huge.vts", "0.959 0 0.27\n1e200 0 0\n", ":2: landmark 1 at (1e+200, 0, 0) is too far from every vertex of"),
     ("same_vertex.vts", "0.959 0 0.27\n0.96 0 0.27\n", ":2: landmark 1 falls on vertex 146, which already "
                                                      "carries landmark 0 (line 1)"),
 ]
