@@ -218,7 +218,8 @@ MapArguments parseArguments(const std::vector<std::string>& args, vtkSurfaceMapF
   {
     throw UsageError{ parsed.landmarks.empty() && parsed.sizing.empty()
         ? "no meshes given"
-        : "no meshes given (the meshes come first: map A B --landmarks FA FB)" };
+        : "no meshes given (the meshes come before --landmarks and --sizing: map A B "
+          "--landmarks FA FB)" };
   }
   if (parsed.outputDir.empty())
   {
