@@ -310,11 +310,13 @@ std::vector<surfacemaps::LandmarkRecord> parseMarkupsJsonValues(const std::strin
     what = what.substr(0, what.find('\n'));
     surfacemaps::failAtLine(path, std::max(line, 1), "not valid JSON: " + what);
   }
-  auto fail = [&](const Json::Value& where, const std::string& what)
+  auto lineOf = [&text](const Json::Value& value)
   {
-    surfacemaps::failAtLine(
-      path, lineAt(text, static_cast<std::size_t>(std::max<ptrdiff_t>(0, where.getOffsetStart()))), what);
+    const ptrdiff_t offset = std::max<ptrdiff_t>(0, value.getOffsetStart());
+    return lineAt(text, static_cast<std::size_t>(offset));
   };
+  auto fail = [&](const Json::Value& where, const std::string& what)
+  { surfacemaps::failAtLine(path, lineOf(where), what); };
   if (!root.isObject() || !root["markups"].isArray() || root["markups"].empty() ||
     !root["markups"][0].isObject())
   {
@@ -348,7 +350,7 @@ std::vector<surfacemaps::LandmarkRecord> parseMarkupsJsonValues(const std::strin
         which + " has no \"position\" of three numbers");
     }
     surfacemaps::LandmarkRecord record;
-    record.Line = lineAt(text, static_cast<std::size_t>(std::max<ptrdiff_t>(0, point.getOffsetStart())));
+    record.Line = lineOf(point);
     for (Json::ArrayIndex c = 0; c < 3; ++c)
     {
       if (!position[c].isNumeric() || !std::isfinite(position[c].asDouble()))
