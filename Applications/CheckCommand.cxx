@@ -22,7 +22,9 @@
 namespace surfacemap
 {
 
-const char* const CheckHelp =
+namespace
+{
+const std::string CheckHelpText = std::string(
   "usage: surfacemap check MESH... [--landmarks FILE...]\n"
   "\n"
   "Checks that every MESH is a valid SurfaceMaps input (closed, manifold,\n"
@@ -30,15 +32,17 @@ const char* const CheckHelp =
   "zero-area triangles) and prints its statistics. Formats: .obj .off .ply\n"
   ".stl .vtp .vtk.\n"
   "\n"
-  "  --landmarks FILE...  one landmark file per mesh, in the same order: one\n"
-  "                       0-based vertex index per line (optionally 'lk i'),\n"
-  "                       or SHREC .vts lines 'i x y z'. The landmark ids\n"
-  "                       (line order) must match across meshes, as a map\n"
+  "  --landmarks FILE...  one landmark file per mesh, in the same order (the\n"
+  "                       formats are below). The landmark ids must match\n"
+  "                       across meshes, as a map\n"
   "                       between them requires. Without --landmarks each\n"
   "                       mesh is checked on its own (landmark arrays in VTP\n"
   "                       files only need unique ids).\n"
   "\n"
-  "Exit code 0 only if every mesh is valid; 2 otherwise.\n";
+  "Exit code 0 only if every mesh is valid; 2 otherwise.\n") + LandmarkFormatsHelp;
+} // namespace
+
+const char* const CheckHelp = CheckHelpText.c_str();
 
 namespace
 {
@@ -94,11 +98,12 @@ int runCheck(const std::vector<std::string>& args)
   bool ok = true;
   vtkNew<vtkSurfaceMeshValidator> validator;
   validator->SetCheckLandmarkCorrespondence(inLandmarks);
-  std::vector<std::string> names;
+  std::vector<std::string> names, snapped;
   for (std::size_t i = 0; i < meshes.size(); ++i)
   {
     vtkNew<vtkSurfaceMeshReader> reader;
     ignoreErrors(reader);
+    ErrorCapture warnings(reader, vtkCommand::WarningEvent);
     reader->SetFileName(meshes[i].c_str());
     if (!landmarks.empty())
     {
@@ -113,8 +118,13 @@ int runCheck(const std::vector<std::string>& args)
       continue;
     }
     vtkSmartPointer<vtkPolyData> mesh = reader->GetOutput();
+    for (const std::string& warning : warnings.messages())
+    {
+      printWarning(warning);
+    }
     validator->AddInputDataObject(mesh);
     names.push_back(meshes[i]);
+    snapped.push_back(landmarks.empty() ? "" : landmarkSnapSummary(mesh, landmarks[i]));
   }
 
   if (!names.empty())
@@ -136,6 +146,10 @@ int runCheck(const std::vector<std::string>& args)
                 << format(value("MinAngle").ToDouble()) << " deg (mean of per-triangle minima "
                 << format(value("MeanMinAngle").ToDouble()) << "), landmarks "
                 << value("Landmarks").ToString() << "\n";
+      if (!snapped[r].empty())
+      {
+        std::cout << "  " << snapped[r] << "\n";
+      }
       const std::string defects = value("Defects").ToString();
       std::istringstream lines(defects);
       for (std::string line; std::getline(lines, line);)

@@ -23,6 +23,7 @@
 #include <sys/syscall.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <atomic>
 #include <csignal>
 
@@ -86,13 +87,13 @@ bool succeeds(const std::function<void()>& step)
   }
 }
 
-ErrorCapture::ErrorCapture(vtkAlgorithm* algorithm)
+ErrorCapture::ErrorCapture(vtkAlgorithm* algorithm, unsigned long event)
   : Algorithm(algorithm)
 {
   vtkNew<vtkCallbackCommand> command;
   command->SetCallback(&ErrorCapture::callback);
   command->SetClientData(this);
-  this->Tag = algorithm->AddObserver(vtkCommand::ErrorEvent, command);
+  this->Tag = algorithm->AddObserver(event ? event : vtkCommand::ErrorEvent, command);
 }
 
 ErrorCapture::~ErrorCapture()
@@ -181,14 +182,93 @@ void ProgressBar::callback(vtkObject*, unsigned long, void* self, void*)
   bar->Shown = true;
 }
 
-vtkSmartPointer<vtkPolyData> readMesh(const std::string& path, const std::string& landmarks)
+const char* const LandmarkFormatsHelp =
+  "\n"
+  "Landmark files (by extension; the k-th landmark of a file has id k unless\n"
+  "the file gives ids; the same id on two meshes means corresponding points):\n"
+  "  .pinned .txt .vts  one per line: a 0-based vertex index ('i' or 'lk i'),\n"
+  "                     SHREC 'i x y z' (the index is used), or a point\n"
+  "                     'x y z' / '-1 x y z' (the index is missing)\n"
+  "  .csv               'x,y,z' or 'x,y,z,id' per line, or columns named by a\n"
+  "                     header line (x, y, z, id, label)\n"
+  "  .fcsv              3D Slicer markups CSV ('#' comment lines, columns\n"
+  "                     id,x,y,z,...; integer ids are used, node names are not)\n"
+  "  .mrk.json          3D Slicer markups JSON: markups[0].controlPoints, each\n"
+  "                     with a position (and optional integer id and label)\n"
+  "A point becomes the closest vertex of its mesh; the snap distance is\n"
+  "printed (and recorded in report.json by 'map'), with a warning when it\n"
+  "exceeds 1 % of the mesh's bounding-box diagonal. Points are read in the\n"
+  "mesh's own coordinates, as written (no RAS/LPS conversion). A malformed file\n"
+  "is rejected naming the file and line (exit code 2).\n";
+
+void printWarning(const std::string& message)
+{
+  std::cerr << "surfacemap: warning: " << message << "\n";
+}
+
+std::string landmarkSnapSummary(vtkPolyData* mesh, const std::string& landmarks)
+{
+  vtkDataArray* distances = mesh->GetFieldData()->GetArray("LandmarkSnapDistance");
+  if (!distances || distances->GetNumberOfTuples() == 0)
+  {
+    return "";
+  }
+  double largest = 0.0;
+  for (vtkIdType k = 0; k < distances->GetNumberOfTuples(); ++k)
+  {
+    largest = std::max(largest, distances->GetTuple1(k));
+  }
+  const double diagonal = mesh->GetLength();
+  std::ostringstream line;
+  line << "landmarks of " << landmarks << ": " << distances->GetNumberOfTuples()
+       << " point" << (distances->GetNumberOfTuples() == 1 ? "" : "s")
+       << " snapped to the closest vertex, largest snap distance " << std::setprecision(4)
+       << largest << " (" << (diagonal > 0.0 ? 100.0 * largest / diagonal : 0.0)
+       << " % of the bounding-box diagonal)";
+  return line.str();
+}
+
+std::string landmarkSnapJson(vtkPolyData* mesh)
+{
+  vtkFieldData* fd = mesh->GetFieldData();
+  vtkDataArray* ids = fd->GetArray("LandmarkSnapId");
+  vtkDataArray* vertices = fd->GetArray("LandmarkSnapVertex");
+  vtkDataArray* distances = fd->GetArray("LandmarkSnapDistance");
+  if (!ids || !vertices || !distances || distances->GetNumberOfTuples() == 0)
+  {
+    return "null";
+  }
+  const double diagonal = mesh->GetLength();
+  std::ostringstream json;
+  json << "[";
+  for (vtkIdType k = 0; k < distances->GetNumberOfTuples(); ++k)
+  {
+    const double d = distances->GetTuple1(k);
+    json << (k ? ", " : "") << "{ \"id\": " << static_cast<long long>(ids->GetTuple1(k))
+         << ", \"vertex\": " << static_cast<long long>(vertices->GetTuple1(k))
+         << ", \"distance\": " << jsonNumber(d)
+         << ", \"percent_of_diagonal\": " << jsonNumber(diagonal > 0.0 ? 100.0 * d / diagonal : 0.0)
+         << " }";
+  }
+  json << "]";
+  return json.str();
+}
+
+vtkSmartPointer<vtkPolyData> readMesh(const std::string& path,
+  const std::string& landmarks,
+  const std::string& sizing)
 {
   vtkNew<vtkSurfaceMeshReader> reader;
   ErrorCapture readErrors(reader);
+  ErrorCapture readWarnings(reader, vtkCommand::WarningEvent);
   reader->SetFileName(path.c_str());
   if (!landmarks.empty())
   {
     reader->SetLandmarkFileName(landmarks.c_str());
+  }
+  if (!sizing.empty())
+  {
+    reader->SetSizingFileName(sizing.c_str());
   }
   reader->Update();
   if (*reader->GetLastErrorMessage())
@@ -197,6 +277,15 @@ vtkSmartPointer<vtkPolyData> readMesh(const std::string& path, const std::string
     return nullptr;
   }
   vtkSmartPointer<vtkPolyData> mesh = reader->GetOutput();
+  for (const std::string& warning : readWarnings.messages())
+  {
+    printWarning(warning);
+  }
+  const std::string snapped = landmarkSnapSummary(mesh, landmarks);
+  if (!snapped.empty())
+  {
+    std::printf("%s\n", snapped.c_str());
+  }
   return mesh;
 }
 

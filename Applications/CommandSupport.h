@@ -15,12 +15,13 @@ class vtkPolyData;
 namespace surfacemap
 {
 
-/// Collects the messages of a VTK algorithm's ErrorEvents (without VTK's
-/// source-location prefix), so commands can print them their own way.
+/// Collects the messages of a VTK algorithm's ErrorEvents (or another event
+/// that carries a message, such as WarningEvent), without VTK's
+/// source-location prefix, so commands can print them their own way.
 class ErrorCapture
 {
 public:
-  explicit ErrorCapture(vtkAlgorithm* algorithm);
+  explicit ErrorCapture(vtkAlgorithm* algorithm, unsigned long event = 0 /* ErrorEvent */);
   ~ErrorCapture();
   ErrorCapture(const ErrorCapture&) = delete;
   ErrorCapture& operator=(const ErrorCapture&) = delete;
@@ -102,9 +103,30 @@ const std::vector<const char*>& evaluationSummaryNames();
 /// A summary figure of measureMap's result, NaN if absent.
 double summaryValue(vtkPolyData* result, const char* name);
 
+/// The landmark file formats, for the help of every command with --landmarks
+/// (indented by 2, lines of at most 78 characters).
+extern const char* const LandmarkFormatsHelp;
+
+/// Prints "surfacemap: warning: <message>" on stderr.
+void printWarning(const std::string& message);
+
+/// One line on the landmarks of `mesh` (read by vtkSurfaceMeshReader from
+/// `landmarks`) that were given as points and snapped to vertices: how many,
+/// the largest snap distance, absolute and in % of the bounding-box diagonal;
+/// empty when none was a point.
+std::string landmarkSnapSummary(vtkPolyData* mesh, const std::string& landmarks);
+
+/// The snapped landmarks of `mesh` as a JSON list of { id, vertex, distance,
+/// percent_of_diagonal }, "null" when none was a point.
+std::string landmarkSnapJson(vtkPolyData* mesh);
+
 /// Reads a mesh with vtkSurfaceMeshReader; on failure prints the reason and
-/// returns null.
-vtkSmartPointer<vtkPolyData> readMesh(const std::string& path, const std::string& landmarks = "");
+/// returns null. Landmarks given as points: the reader's warnings (a point
+/// far from every vertex) go to stderr and landmarkSnapSummary to stdout.
+/// `sizing` names a sizing file (vtkSurfaceMeshReader::SetSizingFileName).
+vtkSmartPointer<vtkPolyData> readMesh(const std::string& path,
+  const std::string& landmarks = "",
+  const std::string& sizing = "");
 
 /// Reads a mesh (and optional landmark file) with vtkSurfaceMeshReader and
 /// validates it; on failure prints the reasons and returns null.

@@ -12,6 +12,7 @@
 
 #include <cstdio>
 #include <iostream>
+#include <string>
 
 namespace surfacemap
 {
@@ -35,7 +36,9 @@ bool hasLandmarks(vtkPolyData* mesh)
 
 } // namespace
 
-const char* const EmbedHelp =
+namespace
+{
+const std::string EmbedHelpText = std::string(
   "usage: surfacemap embed MESH -o OUT.vtp [--on-sphere] [--landmarks FILE]\n"
   "                        [--reference EMBEDDED.vtp]\n"
   "\n"
@@ -47,12 +50,16 @@ const char* const EmbedHelp =
   "  --on-sphere           put the output points on the sphere (for viewing);\n"
   "                        the original coordinates go to InputPosition\n"
   "  --landmarks FILE      landmark file carried along as the Landmarks array\n"
+  "                        (formats below)\n"
   "  --reference FILE      an embedding written by this command (with landmarks):\n"
   "                        rotate the new embedding so that its landmarks come\n"
   "                        closest to the reference's\n"
   "\n"
   "Exit code 0 with a certified embedding, 2 for bad usage or input, 3 if no\n"
-  "certified embedding was found.\n";
+  "certified embedding was found.\n") + LandmarkFormatsHelp;
+} // namespace
+
+const char* const EmbedHelp = EmbedHelpText.c_str();
 
 int runEmbed(const std::vector<std::string>& args)
 {

@@ -10,8 +10,10 @@
 
 #include "vtkAbstractArray.h"
 #include "vtkDataArray.h"
+#include "vtkDoubleArray.h"
 #include "vtkFieldData.h"
 #include "vtkNew.h"
+#include "vtkPointData.h"
 #include "vtkPolyData.h"
 #include "vtkSmartPointer.h"
 #include "vtkStringArray.h"
@@ -32,7 +34,8 @@ namespace
 {
 const char* const MapHelpIntro =
   "usage: surfacemap map A B [C ...] --output-dir DIR [--landmarks FA FB ...]\n"
-  "                      [--categorical NAME] [--continuous NAME] [SETTING ...]\n"
+  "                      [--sizing SA SB ...] [--categorical NAME]\n"
+  "                      [--continuous NAME] [SETTING ...]\n"
   "\n"
   "Computes a bijective map between the meshes A, B, ... (closed, manifold,\n"
   "genus 0) through one adaptive common triangulation T (Schmidt, Pieper,\n"
@@ -71,7 +74,16 @@ const char* const MapHelpIntro =
   "                       before computing\n"
   "  --landmarks FA FB ...\n"
   "                       one landmark file per mesh, in the same order (give\n"
-  "                       the meshes first); same id = corresponding points\n";
+  "                       the meshes first); same id = corresponding points\n"
+  "                       (formats below; points snap to the closest vertex)\n"
+  "  --sizing SA SB ...   the target edge lengths of T, one source per mesh, in\n"
+  "                       the same order: a file with one length per vertex\n"
+  "                       per line (in the mesh's units; finite, positive, one\n"
+  "                       per vertex), or the name of a point array of that\n"
+  "                       mesh (a VTP input's); a name that is an existing\n"
+  "                       file is read as the file. Used instead of the\n"
+  "                       curvature sizing; where the inputs disagree, T\n"
+  "                       follows the smallest\n";
 
 const char* const MapHelpSettings =
   "\n"
@@ -85,7 +97,7 @@ const char* const MapExitCodes =
   "an internal error.\n";
 
 const std::string MapHelpText = std::string(MapHelpIntro) + ArrayTransferFlagsHelp +
-  MapHelpSettings + presetsHelp() + settingsHelp() + MapExitCodes;
+  MapHelpSettings + presetsHelp() + settingsHelp() + LandmarkFormatsHelp + MapExitCodes;
 } // namespace
 
 const char* const MapHelp = MapHelpText.c_str();
@@ -155,7 +167,7 @@ std::string evaluate(const char* what,
 
 struct MapArguments
 {
-  std::vector<std::string> meshes, landmarks;
+  std::vector<std::string> meshes, landmarks, sizing;
   std::string outputDir;
   /// --preset's name, "" without one.
   std::string preset;
@@ -166,17 +178,23 @@ MapArguments parseArguments(const std::vector<std::string>& args, vtkSurfaceMapF
 {
   MapArguments parsed;
   parsed.preset = applyPresetFlag(map, args);
-  bool inLandmarks = false;
+  // Where a file name goes: the meshes, or the list of the last --landmarks
+  // or --sizing.
+  std::vector<std::string>* list = &parsed.meshes;
   for (std::size_t i = 0; i < args.size(); ++i)
   {
     const std::string& a = args[i];
-    if (a != "--landmarks" && isOption(a))
+    if (isOption(a))
     {
-      inLandmarks = false;
+      list = &parsed.meshes;
     }
     if (a == "--landmarks")
     {
-      inLandmarks = true;
+      list = &parsed.landmarks;
+    }
+    else if (a == "--sizing")
+    {
+      list = &parsed.sizing;
     }
     else if (a == "--output-dir")
     {
@@ -195,14 +213,15 @@ MapArguments parseArguments(const std::vector<std::string>& args, vtkSurfaceMapF
     }
     else
     {
-      (inLandmarks ? parsed.landmarks : parsed.meshes).push_back(a);
+      list->push_back(a);
     }
   }
   if (parsed.meshes.empty())
   {
-    throw UsageError{ parsed.landmarks.empty()
+    throw UsageError{ parsed.landmarks.empty() && parsed.sizing.empty()
         ? "no meshes given"
-        : "no meshes given (the meshes come before --landmarks: map A B --landmarks FA FB)" };
+        : "no meshes given (the meshes come before --landmarks and --sizing: map A B "
+          "--landmarks FA FB)" };
   }
   if (parsed.outputDir.empty())
   {
@@ -214,19 +233,64 @@ MapArguments parseArguments(const std::vector<std::string>& args, vtkSurfaceMapF
       std::to_string(parsed.meshes.size()) + " meshes, " + std::to_string(parsed.landmarks.size()) +
       " landmark files)" };
   }
+  if (!parsed.sizing.empty() && parsed.sizing.size() != parsed.meshes.size())
+  {
+    throw UsageError{ "--sizing needs one file or array name per mesh (" +
+      std::to_string(parsed.meshes.size()) + " meshes, " + std::to_string(parsed.sizing.size()) +
+      " sizing sources)" };
+  }
   return parsed;
 }
 
-// Every mesh read (with its landmark file); null after printing why. The map
+// --sizing NAME where NAME is not a file: the point array NAME of `mesh`
+// becomes its "Sizing" array, once checked (one component, finite, positive).
+// Throws std::runtime_error naming the mesh, the array and the vertex.
+void sizingFromArray(vtkPolyData* mesh, const std::string& name, const std::string& meshPath)
+{
+  vtkDataArray* array = mesh->GetPointData()->GetArray(name.c_str());
+  if (!array)
+  {
+    throw std::runtime_error("--sizing " + name + ": no such file, and " + meshPath +
+      " has no numeric point array of that name");
+  }
+  if (array->GetNumberOfComponents() != 1)
+  {
+    throw std::runtime_error("--sizing " + name + ": the point array of " + meshPath + " has " +
+      std::to_string(array->GetNumberOfComponents()) + " components, not one length per vertex");
+  }
+  vtkNew<vtkDoubleArray> sizing;
+  sizing->SetName("Sizing");
+  sizing->SetNumberOfValues(array->GetNumberOfTuples());
+  for (vtkIdType v = 0; v < array->GetNumberOfTuples(); ++v)
+  {
+    const double value = array->GetTuple1(v);
+    if (!std::isfinite(value) || value <= 0.0)
+    {
+      std::ostringstream message;
+      message << "--sizing " << name << ": the point array of " << meshPath << " has "
+              << value << " at vertex " << v << ", not a finite positive length";
+      throw std::runtime_error(message.str());
+    }
+    sizing->SetValue(v, value);
+  }
+  mesh->GetPointData()->AddArray(sizing);
+}
+
+// Every mesh read (with its landmark file and sizing); null after printing why. The map
 // filter validates them (once, with every defect of every input named).
 std::vector<vtkSmartPointer<vtkPolyData>> readInputs(const MapArguments& arguments)
 {
   std::vector<vtkSmartPointer<vtkPolyData>> inputs;
   for (std::size_t i = 0; i < arguments.meshes.size(); ++i)
   {
-    inputs.push_back(
-      readMesh(arguments.meshes[i], arguments.landmarks.empty() ? "" : arguments.landmarks[i]));
-    if (!inputs.back())
+    const std::string sizing = arguments.sizing.empty() ? "" : arguments.sizing[i];
+    const bool sizingFile = !sizing.empty() && isFile(sizing);
+    inputs.push_back(readMesh(arguments.meshes[i],
+      arguments.landmarks.empty() ? "" : arguments.landmarks[i],
+      sizingFile ? sizing : ""));
+    if (!inputs.back() ||
+      (!sizing.empty() && !sizingFile &&
+        !succeeds([&] { sizingFromArray(inputs.back(), sizing, arguments.meshes[i]); })))
     {
       return {};
     }
@@ -289,6 +353,10 @@ std::string reportMap(vtkSurfaceMapFilter* map,
     json << (i ? ",\n" : "\n") << "    { \"file\": " << jsonString(absolute(arguments.meshes[i]))
          << ", \"landmarks\": "
          << (arguments.landmarks.empty() ? "null" : jsonString(absolute(arguments.landmarks[i])))
+         << ", \"landmark_snap\": " << landmarkSnapJson(inputs[i]) << ", \"sizing\": "
+         << (arguments.sizing.empty()        ? "null"
+                : isFile(arguments.sizing[i]) ? jsonString(absolute(arguments.sizing[i]))
+                                              : jsonString("point array " + arguments.sizing[i]))
          << ", \"vertices\": " << inputs[i]->GetNumberOfPoints()
          << ", \"triangles\": " << inputs[i]->GetNumberOfPolys()
          << ", \"embedding_seconds\": " << jsonNumber(field(first, "EmbeddingSeconds", i)) << " }";

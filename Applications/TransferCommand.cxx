@@ -7,12 +7,16 @@
 #include "vtkSurfaceMapTransfer.h"
 
 #include "vtkAbstractArray.h"
+#include "vtkCellArray.h"
+#include "vtkCellData.h"
+#include "vtkIdList.h"
 
 #include "vtkNew.h"
 #include "vtkPointData.h"
 #include "vtkPolyData.h"
 #include "vtkSmartPointer.h"
 
+#include <array>
 #include <cstdio>
 #include <filesystem>
 #include <stdexcept>
@@ -27,7 +31,8 @@ namespace
 {
 const char* const TransferHelpIntro =
   "usage: surfacemap transfer MAPDIR --from I --to J [--arrays NAME ...]\n"
-  "                           [--categorical NAME] [--continuous NAME] -o OUT.vtp\n"
+  "                           [--source-data MESH] [--categorical NAME]\n"
+  "                           [--continuous NAME] -o OUT.vtp\n"
   "\n"
   "Carries the point data of input I of a map onto the vertices of input J\n"
   "through the exact map that 'surfacemap map' computed (no optimisation runs):\n"
@@ -52,6 +57,12 @@ const char* const TransferHelpIntro =
   "                     given to 'surfacemap map')\n"
   "  --to J             the input that receives it\n"
   "  --arrays NAME ...  only these point arrays of input I\n"
+  "  --source-data MESH carry the point arrays (and per-corner texture\n"
+  "                     coordinates) of MESH instead of those input I had when\n"
+  "                     the map was computed: MESH must have input I's\n"
+  "                     connectivity (the same vertex count and the same\n"
+  "                     triangles in the same order, as a copy of input I with\n"
+  "                     new arrays has), else exit code 2 naming the mismatch\n"
   "  -o, --output FILE  the output .vtp (checked for writing before computing)\n";
 
 const char* const TransferExitCodes =
@@ -90,7 +101,7 @@ int parseIndex(const std::string& option, const std::string& text)
 
 struct TransferArguments
 {
-  std::string directory, output;
+  std::string directory, output, sourceData;
   int from = -1, to = -1;
   std::vector<std::string> arrays;
 };
@@ -118,6 +129,10 @@ TransferArguments parseArguments(const std::vector<std::string>& args,
     else if (a == "-o" || a == "--output")
     {
       parsed.output = optionValue(args, i);
+    }
+    else if (a == "--source-data")
+    {
+      parsed.sourceData = optionValue(args, i, "a mesh file");
     }
     else if (a == "--arrays")
     {
@@ -199,6 +214,84 @@ bool findMapFiles(const std::string& directory, const std::vector<std::string>& 
   return true;
 }
 
+// The triangles of `mesh` as vertex id triples, in order (non-triangles as
+// empty triples: the validator of the map's inputs ruled them out there).
+std::vector<std::array<vtkIdType, 3>> trianglesOf(vtkPolyData* mesh)
+{
+  std::vector<std::array<vtkIdType, 3>> triangles;
+  vtkCellArray* polys = mesh->GetPolys();
+  vtkNew<vtkIdList> ids;
+  polys->InitTraversal();
+  while (polys->GetNextCell(ids))
+  {
+    std::array<vtkIdType, 3> t = { -1, -1, -1 };
+    for (vtkIdType k = 0; k < ids->GetNumberOfIds() && ids->GetNumberOfIds() == 3; ++k)
+    {
+      t[k] = ids->GetId(k);
+    }
+    triangles.push_back(t);
+  }
+  return triangles;
+}
+
+std::string triangleText(const std::array<vtkIdType, 3>& t)
+{
+  return "(" + std::to_string(t[0]) + ", " + std::to_string(t[1]) + ", " + std::to_string(t[2]) +
+    ")";
+}
+
+// Input I's embedding (`embedding`, embedding_I.vtp) with the point arrays and
+// cell data of `data` (--source-data) instead of its own, keeping its
+// SpherePosition. Throws std::runtime_error naming the first mismatch of
+// vertex count or triangles.
+vtkSmartPointer<vtkPolyData> withSourceData(vtkPolyData* embedding,
+  vtkPolyData* data,
+  const std::string& dataPath,
+  const std::string& embeddingName,
+  int from)
+{
+  const std::string input = "input " + std::to_string(from) + " (" + embeddingName + ")";
+  if (data->GetNumberOfPoints() != embedding->GetNumberOfPoints())
+  {
+    throw std::runtime_error("--source-data " + dataPath + " has " +
+      std::to_string(data->GetNumberOfPoints()) + " vertices, " + input + " has " +
+      std::to_string(embedding->GetNumberOfPoints()) + ": not the connectivity of input " +
+      std::to_string(from));
+  }
+  const auto mine = trianglesOf(data);
+  const auto theirs = trianglesOf(embedding);
+  if (mine.size() != theirs.size() || data->GetNumberOfCells() != data->GetNumberOfPolys())
+  {
+    throw std::runtime_error("--source-data " + dataPath + " has " +
+      std::to_string(data->GetNumberOfCells()) + " cells, " + input + " has " +
+      std::to_string(theirs.size()) + " triangles: not the connectivity of input " +
+      std::to_string(from));
+  }
+  for (std::size_t t = 0; t < mine.size(); ++t)
+  {
+    // The same triangle may start at another corner.
+    const auto& a = mine[t];
+    const auto& b = theirs[t];
+    const bool same = (a[0] == b[0] && a[1] == b[1] && a[2] == b[2]) ||
+      (a[0] == b[1] && a[1] == b[2] && a[2] == b[0]) ||
+      (a[0] == b[2] && a[1] == b[0] && a[2] == b[1]);
+    if (!same)
+    {
+      throw std::runtime_error("--source-data " + dataPath + ": triangle " + std::to_string(t) +
+        " is " + triangleText(a) + ", in " + input + " it is " + triangleText(b) +
+        ": not the connectivity of input " + std::to_string(from));
+    }
+  }
+  auto source = vtkSmartPointer<vtkPolyData>::New();
+  source->ShallowCopy(embedding);
+  vtkAbstractArray* sphere = embedding->GetPointData()->GetAbstractArray("SpherePosition");
+  source->GetPointData()->ShallowCopy(data->GetPointData());
+  source->GetPointData()->RemoveArray("SpherePosition");
+  source->GetPointData()->AddArray(sphere);
+  source->GetCellData()->ShallowCopy(data->GetCellData());
+  return source;
+}
+
 // Reads the map's files into the transfer's ports; false after printing why.
 // Throws UsageError for --categorical or --continuous arrays input I lacks.
 bool readMapFiles(vtkSurfaceMapTransfer* transfer,
@@ -212,14 +305,29 @@ bool readMapFiles(vtkSurfaceMapTransfer* transfer,
     {
       return false;
     }
+    if (port == 1 && !arguments.sourceData.empty())
+    {
+      vtkSmartPointer<vtkPolyData> given = readMesh(arguments.sourceData);
+      if (!given ||
+        !succeeds(
+          [&]
+          {
+            data =
+              withSourceData(data, given, arguments.sourceData, files[port], arguments.from);
+          }))
+      {
+        return false;
+      }
+    }
     transfer->SetInputDataObject(port, data);
   }
   const std::string missing = missingArrayTransferNames(
     transfer, { vtkPolyData::SafeDownCast(transfer->GetInputDataObject(1, 0)) });
   if (!missing.empty())
   {
-    throw UsageError{ "input " + std::to_string(arguments.from) + " (" + files[1] +
-      ") has no point array " + missing + " (named by --categorical or --continuous)" };
+    throw UsageError{ "input " + std::to_string(arguments.from) + " (" +
+      (arguments.sourceData.empty() ? files[1] : arguments.sourceData) + ") has no point array " +
+      missing + " (named by --categorical or --continuous)" };
   }
   return true;
 }

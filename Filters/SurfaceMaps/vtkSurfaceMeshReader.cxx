@@ -9,16 +9,20 @@
 #include "io/ObjReader.h"
 #include "io/OffReader.h"
 #include "io/PlyReader.h"
+#include "io/SizingReader.h"
 #include "io/TextFile.h"
 #include "io/XmlPolyDataCheck.h"
 
 #include "vtkCallbackCommand.h"
 #include "vtkCommand.h"
+#include "vtkDoubleArray.h"
 #include "vtkExecutive.h"
 #include "vtkFieldData.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
+#include "vtkIdTypeArray.h"
 #include "vtkIntArray.h"
+#include "vtkMath.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
 #include "vtkOutputWindow.h"
@@ -27,15 +31,23 @@
 #include "vtkPolyDataReader.h"
 #include "vtkSTLReader.h"
 #include "vtkSmartPointer.h"
+#include "vtkStaticPointLocator.h"
 #include "vtkStringArray.h"
 #include "vtkXMLPolyDataReader.h"
+
+#include "vtk_jsoncpp.h"
 
 #include <algorithm>
 #include <cctype>
 #include <cerrno>
+#include <cmath>
+#include <cstdlib>
 #include <cstring>
 #include <fstream>
+#include <limits>
+#include <memory>
 #include <new>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -267,13 +279,252 @@ vtkSmartPointer<vtkPolyData> readMesh(const std::string& path)
     path + ": unknown mesh format '" + ext + "' (supported: .obj .off .ply .stl .vtp .vtk)");
 }
 
-// The "Landmarks" point array (id per vertex, -1 elsewhere) from a landmark file.
-void addLandmarks(vtkPolyData* mesh, const std::string& landmarkPath, const std::string& meshPath)
+// The 1-based line of byte `offset` of `text`.
+int lineAt(const std::string& text, std::size_t offset)
 {
-  const std::vector<int> indices = surfacemaps::readLandmarks(landmarkPath);
-  const std::vector<int> ids = surfacemaps::landmarkIdsFromIndices(indices,
-    static_cast<std::size_t>(mesh->GetNumberOfPoints()),
-    landmarkPath + " (for " + meshPath + ")");
+  offset = std::min(offset, text.size());
+  return 1 + static_cast<int>(std::count(text.begin(), text.begin() + offset, '\n'));
+}
+
+// 3D Slicer's markups JSON (.mrk.json): markups[0].controlPoints[i] with
+// "position" [x, y, z] and optional "id" and "label".
+std::vector<surfacemaps::LandmarkRecord> parseMarkupsJsonValues(const std::string& text,
+  const std::string& path)
+{
+  Json::CharReaderBuilder builder;
+  builder["collectComments"] = false;
+  const std::unique_ptr<Json::CharReader> reader(builder.newCharReader());
+  Json::Value root;
+  std::string problems;
+  if (!reader->parse(text.data(), text.data() + text.size(), &root, &problems))
+  {
+    // jsoncpp: "* Line 3, Column 5\n  Syntax error: ..."
+    int line = 0;
+    const std::size_t at = problems.find("Line ");
+    if (at != std::string::npos)
+    {
+      line = std::atoi(problems.c_str() + at + 5);
+    }
+    std::string what = problems.substr(std::min(problems.size(), problems.find('\n') + 1));
+    what.erase(0, what.find_first_not_of(" \n"));
+    what = what.substr(0, what.find('\n'));
+    surfacemaps::failAtLine(path, std::max(line, 1), "not valid JSON: " + what);
+  }
+  auto lineOf = [&text](const Json::Value& value)
+  {
+    const ptrdiff_t offset = std::max<ptrdiff_t>(0, value.getOffsetStart());
+    return lineAt(text, static_cast<std::size_t>(offset));
+  };
+  auto fail = [&](const Json::Value& where, const std::string& what)
+  { surfacemaps::failAtLine(path, lineOf(where), what); };
+  if (!root.isObject() || !root["markups"].isArray() || root["markups"].empty() ||
+    !root["markups"][0].isObject())
+  {
+    fail(root, "not a Slicer markups file (no \"markups\" list)");
+  }
+  const Json::Value& markup = root["markups"][0];
+  const Json::Value& points = markup["controlPoints"];
+  if (!points.isArray())
+  {
+    fail(markup, "markups[0] has no \"controlPoints\" list");
+  }
+  std::vector<surfacemaps::LandmarkRecord> records;
+  std::vector<long long> ids;
+  for (Json::ArrayIndex k = 0; k < points.size(); ++k)
+  {
+    const Json::Value& point = points[k];
+    const std::string which = "control point " + std::to_string(k);
+    if (!point.isObject())
+    {
+      fail(point, which + " is not an object");
+    }
+    const Json::Value& status = point["positionStatus"];
+    if (status.isString() && (status.asString() == "undefined" || status.asString() == "missing"))
+    {
+      fail(point, which + " has no position (positionStatus \"" + status.asString() + "\")");
+    }
+    const Json::Value& position = point["position"];
+    if (!position.isArray() || position.size() != 3)
+    {
+      fail(point.isMember("position") ? position : point,
+        which + " has no \"position\" of three numbers");
+    }
+    surfacemaps::LandmarkRecord record;
+    record.Line = lineOf(point);
+    for (Json::ArrayIndex c = 0; c < 3; ++c)
+    {
+      if (!position[c].isNumeric() || !std::isfinite(position[c].asDouble()))
+      {
+        fail(position[c], which + " has a position that is not three finite numbers");
+      }
+      record.Point[c] = position[c].asDouble();
+    }
+    if (point["label"].isString())
+    {
+      record.Label = point["label"].asString();
+    }
+    // Slicer's ids are strings ("1") or node names; integers >= 0 are ids.
+    long long id = -1;
+    const Json::Value& given = point["id"];
+    if (given.isString() && !surfacemaps::parseInt(given.asString(), id))
+    {
+      id = -1;
+    }
+    else if (given.isInt())
+    {
+      id = given.asInt();
+    }
+    if (id > std::numeric_limits<int>::max())
+    {
+      id = -1;
+    }
+    records.push_back(record);
+    ids.push_back(id);
+  }
+  surfacemaps::finishLandmarkIds(records, ids, path);
+  return records;
+}
+
+std::vector<surfacemaps::LandmarkRecord> parseMarkupsJson(const std::string& text,
+  const std::string& path)
+{
+  try
+  {
+    return parseMarkupsJsonValues(text, path);
+  }
+  catch (const surfacemaps::InputError&)
+  {
+    throw;
+  }
+  catch (const std::exception& e)
+  {
+    // jsoncpp's own limits (nesting depth, number ranges) throw its exceptions.
+    throw surfacemaps::InputError(path + ": not a usable markups file: " + e.what());
+  }
+}
+
+bool isMarkupsJson(const std::string& path)
+{
+  const std::string ext = extensionOf(path);
+  return ext == "json";
+}
+
+// Landmarks given as points become the vertex closest to them; returns, per
+// such landmark, its id, vertex and distance (input units) and warns when one
+// is farther than 1 % of the bounding-box diagonal.
+void snapLandmarkPoints(vtkSurfaceMeshReader* self,
+  vtkPolyData* mesh,
+  std::vector<surfacemaps::LandmarkRecord>& records,
+  const std::string& landmarkPath,
+  const std::string& meshPath)
+{
+  if (std::all_of(records.begin(),
+        records.end(),
+        [](const surfacemaps::LandmarkRecord& r) { return r.Vertex >= 0; }))
+  {
+    return;
+  }
+  vtkNew<vtkStaticPointLocator> locator;
+  locator->SetDataSet(mesh);
+  locator->BuildLocator();
+  const double diagonal = mesh->GetLength();
+  auto ids = vtkSmartPointer<vtkIntArray>::New();
+  ids->SetName("LandmarkSnapId");
+  auto vertices = vtkSmartPointer<vtkIdTypeArray>::New();
+  vertices->SetName("LandmarkSnapVertex");
+  auto distances = vtkSmartPointer<vtkDoubleArray>::New();
+  distances->SetName("LandmarkSnapDistance");
+  for (surfacemaps::LandmarkRecord& record : records)
+  {
+    if (record.Vertex >= 0)
+    {
+      continue;
+    }
+    vtkIdType closest = locator->FindClosestPoint(record.Point.data());
+    double p[3];
+    if (closest < 0)
+    {
+      // The locator gives up on points far outside its bins (coordinates
+      // near the double range): look at every vertex.
+      double best = std::numeric_limits<double>::infinity();
+      for (vtkIdType v = 0; v < mesh->GetNumberOfPoints(); ++v)
+      {
+        mesh->GetPoint(v, p);
+        const double d2 = vtkMath::Distance2BetweenPoints(p, record.Point.data());
+        if (d2 < best)
+        {
+          best = d2;
+          closest = v;
+        }
+      }
+    }
+    double distance = std::numeric_limits<double>::infinity();
+    if (closest >= 0)
+    {
+      mesh->GetPoint(closest, p);
+      distance = std::sqrt(vtkMath::Distance2BetweenPoints(p, record.Point.data()));
+    }
+    if (!std::isfinite(distance))
+    {
+      std::ostringstream point;
+      point << "(" << record.Point[0] << ", " << record.Point[1] << ", " << record.Point[2] << ")";
+      surfacemaps::failAtLine(landmarkPath,
+        record.Line,
+        "landmark " + std::to_string(record.Id) + " at " + point.str() +
+          " is too far from every vertex of " + meshPath + " to snap to one");
+    }
+    record.Vertex = static_cast<int>(closest);
+    ids->InsertNextValue(record.Id);
+    vertices->InsertNextValue(closest);
+    distances->InsertNextValue(distance);
+    if (distance > 0.01 * diagonal)
+    {
+      std::ostringstream message;
+      message << landmarkPath << ":" << record.Line << ": landmark " << record.Id
+              << (record.Label.empty() ? "" : " (" + record.Label + ")") << " lies " << distance
+              << " from the closest vertex (" << closest << ") of " << meshPath << ", "
+              << 100.0 * distance / diagonal
+              << " % of its bounding-box diagonal (more than 1 %): is the point in the mesh's "
+                 "coordinates?";
+      vtkWarningWithObjectMacro(self, << message.str());
+    }
+  }
+  mesh->GetFieldData()->AddArray(ids);
+  mesh->GetFieldData()->AddArray(vertices);
+  mesh->GetFieldData()->AddArray(distances);
+}
+
+// The "Landmarks" point array (id per vertex, -1 elsewhere) from a landmark
+// file: vertex indices, or points snapped to the closest vertex.
+void addLandmarks(vtkSurfaceMeshReader* self,
+  vtkPolyData* mesh,
+  const std::string& landmarkPath,
+  const std::string& meshPath)
+{
+  std::vector<surfacemaps::LandmarkRecord> records;
+  if (isMarkupsJson(landmarkPath))
+  {
+    records = parseMarkupsJson(surfacemaps::readTextFile(landmarkPath), landmarkPath);
+    if (records.empty())
+    {
+      throw surfacemaps::InputError(landmarkPath + ": the landmark file lists no landmarks");
+    }
+  }
+  else
+  {
+    records = surfacemaps::readLandmarkRecords(landmarkPath);
+  }
+  snapLandmarkPoints(self, mesh, records, landmarkPath, meshPath);
+  std::vector<int> ids;
+  try
+  {
+    ids = surfacemaps::landmarkIdsFromRecords(
+      records, static_cast<std::size_t>(mesh->GetNumberOfPoints()), landmarkPath);
+  }
+  catch (const surfacemaps::InputError& e)
+  {
+    throw surfacemaps::InputError(std::string(e.what()) + " (landmarks of " + meshPath + ")");
+  }
   auto landmarks = vtkSmartPointer<vtkIntArray>::New();
   landmarks->SetName("Landmarks");
   landmarks->SetNumberOfValues(static_cast<vtkIdType>(ids.size()));
@@ -282,6 +533,29 @@ void addLandmarks(vtkPolyData* mesh, const std::string& landmarkPath, const std:
     landmarks->SetValue(static_cast<vtkIdType>(i), ids[i]);
   }
   mesh->GetPointData()->AddArray(landmarks);
+}
+
+// The "Sizing" point array from a sizing file.
+void addSizing(vtkPolyData* mesh, const std::string& sizingPath, const std::string& meshPath)
+{
+  std::vector<double> sizing;
+  try
+  {
+    sizing = surfacemaps::readSizing(
+      sizingPath, static_cast<std::size_t>(mesh->GetNumberOfPoints()));
+  }
+  catch (const surfacemaps::InputError& e)
+  {
+    throw surfacemaps::InputError(std::string(e.what()) + " (sizing of " + meshPath + ")");
+  }
+  auto array = vtkSmartPointer<vtkDoubleArray>::New();
+  array->SetName("Sizing");
+  array->SetNumberOfValues(static_cast<vtkIdType>(sizing.size()));
+  for (std::size_t i = 0; i < sizing.size(); ++i)
+  {
+    array->SetValue(static_cast<vtkIdType>(i), sizing[i]);
+  }
+  mesh->GetPointData()->AddArray(array);
 }
 
 // The "FileName" field-data string that names the mesh in messages.
@@ -305,6 +579,7 @@ vtkSurfaceMeshReader::~vtkSurfaceMeshReader()
 {
   this->SetFileName(nullptr);
   this->SetLandmarkFileName(nullptr);
+  this->SetSizingFileName(nullptr);
 }
 
 bool vtkSurfaceMeshReader::CanReadFile(const char* fileName)
@@ -354,7 +629,11 @@ int vtkSurfaceMeshReader::RequestData(vtkInformation*,
       }
       if (this->LandmarkFileName && *this->LandmarkFileName)
       {
-        addLandmarks(mesh, this->LandmarkFileName, path);
+        addLandmarks(this, mesh, this->LandmarkFileName, path);
+      }
+      if (this->SizingFileName && *this->SizingFileName)
+      {
+        addSizing(mesh, this->SizingFileName, path);
       }
       addFileName(mesh, path);
       output->ShallowCopy(mesh);
@@ -369,5 +648,7 @@ void vtkSurfaceMeshReader::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "FileName: " << (this->FileName ? this->FileName : "(none)") << "\n";
   os << indent
      << "LandmarkFileName: " << (this->LandmarkFileName ? this->LandmarkFileName : "(none)")
+     << "\n";
+  os << indent << "SizingFileName: " << (this->SizingFileName ? this->SizingFileName : "(none)")
      << "\n";
 }

@@ -12,16 +12,33 @@
  * becomes "CornerTCoords"). STL points are merged. VTP and legacy VTK files
  * go through VTK's own readers.
  *
- * With LandmarkFileName set, the landmark file (one 0-based vertex index per
- * line, optionally prefixed `lk `, or SHREC `.vts` lines `index x y z`) becomes
- * the int point array "Landmarks": the k-th listed vertex gets id k, all others
- * -1. A VTP file may carry a "Landmarks" array itself.
+ * With LandmarkFileName set, the landmark file becomes the int point array
+ * "Landmarks" (landmark id at landmark vertices, -1 elsewhere). Formats, by
+ * extension: one 0-based vertex index per line, optionally prefixed `lk `
+ * (`.pinned`, `.txt`), SHREC `.vts` lines `index x y z` (the index is used) or
+ * `x y z` / `-1 x y z` (a point: the index is missing); `.csv` lines `x,y,z`
+ * or `x,y,z,id` (or columns named by a header line); 3D Slicer markups
+ * `.fcsv` (columns id,x,y,z,...) and `.mrk.json`
+ * (markups[0].controlPoints[i].position, optional id and label). The k-th
+ * landmark gets id k unless the file gives integer ids. A landmark given as a
+ * point becomes the closest vertex (vtkStaticPointLocator); the field data
+ * then holds, per such landmark in file order, "LandmarkSnapId",
+ * "LandmarkSnapVertex" and "LandmarkSnapDistance" (input units), and a
+ * warning (vtkWarningMacro) names each point farther than 1 % of the
+ * bounding-box diagonal from its vertex. A VTP file may carry a "Landmarks"
+ * array itself.
+ *
+ * With SizingFileName set, the sizing file (one target edge length per
+ * vertex per line, in the mesh's units; finite, positive, exactly one per
+ * vertex) becomes the double point array "Sizing" that vtkSurfaceMapFilter
+ * uses instead of curvature.
  *
  * The output's field data holds the string array "FileName" so later filters
  * can name the mesh in their messages.
  *
  * Errors (missing, empty, truncated or malformed files, landmark indices out
- * of range) are reported with vtkErrorMacro naming the file, the line where
+ * of range, sizing files with the wrong count or a value that is not a
+ * positive length) are reported with vtkErrorMacro naming the file, the line where
  * known, and the defect; the output is then empty. The reader does not judge
  * whether the mesh is a valid SurfaceMaps input: see vtkSurfaceMeshValidator.
  *
@@ -52,10 +69,20 @@ public:
 
   ///@{
   /**
-   * Optional landmark file (`.pinned`, `.txt`, `.vts`). Default: none.
+   * Optional landmark file (`.pinned`, `.txt`, `.vts`, `.csv`, `.fcsv`,
+   * `.mrk.json`). Default: none.
    */
   vtkSetStringMacro(LandmarkFileName);
   vtkGetStringMacro(LandmarkFileName);
+  ///@}
+
+  ///@{
+  /**
+   * Optional sizing file (one target edge length per vertex per line).
+   * Default: none.
+   */
+  vtkSetStringMacro(SizingFileName);
+  vtkGetStringMacro(SizingFileName);
   ///@}
 
   /**
@@ -76,6 +103,7 @@ protected:
 
   char* FileName = nullptr;
   char* LandmarkFileName = nullptr;
+  char* SizingFileName = nullptr;
 
 private:
   vtkSurfaceMeshReader(const vtkSurfaceMeshReader&) = delete;

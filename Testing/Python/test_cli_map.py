@@ -3,6 +3,7 @@
 import json
 import os
 
+import pytest
 
 from cli import SHORT, data, read_vtp, run
 
@@ -275,3 +276,97 @@ def test_help_and_report_hold_every_setting(tmp_path):
             assert abs(settings[key] - expected) <= 1e-9 * abs(expected), key
         else:
             assert settings[key] == expected, key
+
+
+def test_point_landmarks_are_snapped_and_recorded_in_the_report(tmp_path):
+    # blob.vts's landmarks as a Slicer .fcsv of points, 0.001 off their vertices.
+    rows = [line.split() for line in open(data("blob.vts"))]
+    fcsv = tmp_path / "blob.fcsv"
+    fcsv.write_text("# columns = id,x,y,z,ow,ox,oy,oz,vis,sel,lock,label,desc,associatedNodeID\n" + "".join(
+        f"n{k},{float(x) + 1e-3!r},{y},{z},0,0,0,1,1,1,0,F-{k},,\n" for k, (_, x, y, z) in enumerate(rows)))
+    out = tmp_path / "out"
+    r = run("map", data("ellipsoid.obj"), data("blob.off"), "--landmarks", data("ellipsoid.pinned"), fcsv,
+            *SHORT, "--output-dir", out)
+    assert r.returncode == 0, r.stderr
+    assert f"landmarks of {fcsv}: 4 points snapped to the closest vertex" in r.stdout
+    report = json.loads((out / "report.json").read_text())
+    assert report["inputs"][0]["landmark_snap"] is None  # vertex indices: nothing snapped
+    snap = report["inputs"][1]["landmark_snap"]
+    assert [s["id"] for s in snap] == [0, 1, 2, 3]
+    assert [s["vertex"] for s in snap] == [int(row[0]) for row in rows]
+    assert all(abs(s["distance"] - 1e-3) < 1e-6 and 0 < s["percent_of_diagonal"] < 0.1 for s in snap)
+    assert report["landmark_error"] < 1e-9
+
+
+def sizing_sources(tmp_path, small):
+    """Input 0 (ellipsoid.obj) as a .vtp with the point array "EdgeLength": `small` where x > 0.5, 1 elsewhere;
+    input 1 (blob.off): a sizing file of 1 per vertex. Returns the paths and the number of input-0 vertices."""
+    from vtkmodules.vtkCommonCore import vtkDoubleArray
+    from vtkmodules.vtkIOXML import vtkXMLPolyDataWriter
+    mesh = surfacemaps_read(data("ellipsoid.obj"))
+    lengths = vtkDoubleArray()
+    lengths.SetName("EdgeLength")
+    for v in range(mesh.GetNumberOfPoints()):
+        lengths.InsertNextValue(small if mesh.GetPoint(v)[0] > 0.5 else 1.0)
+    mesh.GetPointData().AddArray(lengths)
+    vtp = tmp_path / "ellipsoid_sized.vtp"
+    writer = vtkXMLPolyDataWriter()
+    writer.SetInputData(mesh)
+    writer.SetFileName(str(vtp))
+    assert writer.Write() == 1
+    sizing = tmp_path / "blob_sizing.txt"
+    sizing.write_text("# one target edge length per vertex\n" + "1\n" * 642)
+    return vtp, sizing
+
+
+def vertices_in_region(path):
+    """T vertices (common_0: T on input 0) with x > 0.5."""
+    common = read_vtp(path)
+    return sum(common.GetPoint(v)[0] > 0.5 for v in range(common.GetNumberOfPoints()))
+
+
+def test_sizing_makes_T_finer_where_it_is_small(tmp_path):
+    vtp, sizing = sizing_sources(tmp_path, 0.03)
+    plain, sized = tmp_path / "plain", tmp_path / "sized"
+    r = run("map", vtp, data("blob.off"), *SHORT, "--output-dir", plain)
+    assert r.returncode == 0, r.stderr
+    r = run("map", vtp, data("blob.off"), "--sizing", "EdgeLength", sizing, *SHORT, "--output-dir", sized)
+    assert r.returncode == 0, r.stderr
+    report = json.loads((sized / "report.json").read_text())
+    assert [i["sizing"] for i in report["inputs"]] == ["point array EdgeLength", str(sizing)]
+    without, with_sizing = vertices_in_region(plain / "common_0.vtp"), vertices_in_region(sized / "common_0.vtp")
+    assert with_sizing > 1.5 * without, (without, with_sizing)
+
+
+@pytest.mark.parametrize("content,message", [
+    ("1\n" * 641, "the file ends after 641 values, but the mesh has 642 vertices"),
+    ("1\n" * 643, ":643: more values than the mesh's 642 vertices"),
+    ("1\n1\n-0.5\n" + "1\n" * 639, ":3: the target edge length '-0.5' (vertex 2) is not a finite positive number"),
+    ("1\nnan\n" + "1\n" * 640, ":2: the target edge length 'nan' (vertex 1)"),
+    ("1\n1 1\n" + "1\n" * 640, ":2: expected one value per line"),
+])
+def test_malformed_sizing_files_are_rejected(tmp_path, content, message):
+    sizing = tmp_path / "sizing.txt"
+    sizing.write_text(content)
+    r = run("map", data("ellipsoid.obj"), data("blob.off"), "--sizing", sizing, sizing, *SHORT,
+            "--output-dir", tmp_path / "out")
+    assert r.returncode == 2, (r.stdout, r.stderr)
+    assert f"surfacemap: error: {sizing}" in r.stderr and message in r.stderr, r.stderr
+    assert "sizing of " + data("ellipsoid.obj") in r.stderr
+    assert not (tmp_path / "out").exists()
+
+
+def test_sizing_arrays_and_counts_are_checked(tmp_path):
+    out = tmp_path / "out"
+    # blob.vtp's Landmarks array is -1 off the landmarks: not a length.
+    r = run("map", data("blob.vtp"), data("blob.vtp"), "--sizing", "Landmarks", "Landmarks", *SHORT,
+            "--output-dir", out)
+    assert r.returncode == 2
+    assert "--sizing Landmarks: the point array of " + data("blob.vtp") + " has -1 at vertex 0" in r.stderr
+    r = run("map", data("blob.vtp"), data("blob.vtp"), "--sizing", "Nothing", "Nothing", *SHORT,
+            "--output-dir", out)
+    assert r.returncode == 2 and "--sizing Nothing: no such file, and " in r.stderr
+    r = run("map", data("blob.vtp"), data("blob.vtp"), "--sizing", "Landmarks", "--output-dir", out)
+    assert r.returncode == 2 and "--sizing needs one file or array name per mesh (2 meshes, 1 sizing" in r.stderr
+    assert not out.exists()
+    assert "--sizing SA SB" in run("map", "--help").stdout

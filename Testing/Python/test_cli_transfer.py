@@ -269,3 +269,59 @@ def test_unknown_arrays_and_usage(map_dir, tmp_path):
     assert r.returncode == 0 and "embedding_I.vtp" in r.stdout and "--arrays" in r.stdout
     assert "transfer" in run("--help").stdout
     assert not [p for p in os.listdir(tmp_path) if ".tmp." in p]
+
+
+def test_source_data_carries_a_new_array(map_dir, tmp_path):
+    import surfacemaps
+    from vtkmodules.vtkCommonCore import vtkDoubleArray
+    # Input 1's mesh as read from its own file, with an array the map never saw.
+    blob = surfacemaps.read_mesh(data("blob.off"))
+    temperature = vtkDoubleArray()
+    temperature.SetName("Temperature")
+    for v in range(blob.GetNumberOfPoints()):
+        temperature.InsertNextValue(blob.GetPoint(v)[0])
+    blob.GetPointData().AddArray(temperature)
+    write_vtp(blob, tmp_path / "blob_temperature.vtp")
+    out = tmp_path / "temperature_on_ellipsoid.vtp"
+    r = run("transfer", map_dir, "--from", "1", "--to", "0", "--source-data", tmp_path / "blob_temperature.vtp",
+            "-o", out)
+    assert r.returncode == 0, r.stderr
+    assert "Temperature (continuous)" in r.stdout
+    result = read_vtp(out).GetPointData()
+    names = {result.GetArrayName(a) for a in range(result.GetNumberOfArrays())}
+    assert names == {"Temperature", "SourceCellId", "SourceBarycentric"}  # not the map-time Label, Mask
+    # The same values as input 1's own x coordinates carried by the same map.
+    plain = tmp_path / "coordinates_on_ellipsoid.vtp"
+    r = run("transfer", map_dir, "--from", "1", "--to", "0", "--arrays", "Coordinates", "-o", plain)
+    assert r.returncode == 0, r.stderr
+    coordinates = read_vtp(plain).GetPointData().GetArray("Coordinates")
+    values = result.GetArray("Temperature")
+    assert values.GetNumberOfTuples() == 642
+    for v in range(642):
+        assert values.GetValue(v) == pytest.approx(coordinates.GetTuple3(v)[0], abs=1e-12)
+
+
+def test_source_data_must_have_the_inputs_connectivity(map_dir, tmp_path):
+    import surfacemaps
+    out = tmp_path / "out.vtp"
+    r = run("transfer", map_dir, "--from", "1", "--to", "0", "--source-data", data("ellipsoid_coarse.stl"),
+            "-o", out)
+    assert r.returncode == 2
+    assert (f"--source-data {data('ellipsoid_coarse.stl')} has 162 vertices, input 1 (embedding_1.vtp) has 642: "
+            "not the connectivity of input 1") in r.stderr
+    # One triangle turned round: same vertex count, other triangles.
+    from vtkmodules.vtkCommonCore import vtkIdList
+    blob = surfacemaps.read_mesh(data("blob.off"))
+    ids = vtkIdList()
+    blob.GetCellPoints(5, ids)
+    a, b, c = (ids.GetId(k) for k in range(3))
+    blob.ReplaceCell(5, 3, [a, c, b])
+    write_vtp(blob, tmp_path / "turned.vtp")
+    r = run("transfer", map_dir, "--from", "1", "--to", "0", "--source-data", tmp_path / "turned.vtp", "-o", out)
+    assert r.returncode == 2
+    assert (f"--source-data {tmp_path / 'turned.vtp'}: triangle 5 is ({a}, {c}, {b}), in input 1 "
+            f"(embedding_1.vtp) it is ({a}, {b}, {c})") in r.stderr
+    r = run("transfer", map_dir, "--from", "1", "--to", "0", "--source-data", tmp_path / "missing.vtp", "-o", out)
+    assert r.returncode == 2 and "missing.vtp" in r.stderr
+    assert not out.exists()
+    assert "--source-data MESH" in run("transfer", "--help").stdout

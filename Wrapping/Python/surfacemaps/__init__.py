@@ -7,8 +7,10 @@ The VTK classes of the module are available directly from this package::
 
 Helpers:
 
-``read_mesh(path, landmarks=None)``
-    Read a mesh (and optional landmark file) into a vtkPolyData; raises
+``read_mesh(path, landmarks=None, sizing=None)``
+    Read a mesh (and optional landmark and sizing files) into a vtkPolyData;
+    landmarks given as points are snapped to the closest vertex (distances in
+    the field data, a warning above 1 % of the bounding-box diagonal); raises
     ``surfacemaps.InputError`` with the reader's message on failure.
 ``validate(*meshes)``
     Validate one or more vtkPolyData as SurfaceMaps inputs; returns a list of
@@ -147,13 +149,23 @@ _SUMMARY = ("SymmetricDirichlet", "AreaBelow1.5", "AreaBelow2", "MaxDistortion",
             "NonPositiveTriangles")
 
 
-def read_mesh(path, landmarks=None):
-    """Read a mesh file (OBJ, OFF, PLY, STL, VTP, VTK) and optionally a landmark file."""
+def read_mesh(path, landmarks=None, sizing=None):
+    """Read a mesh file (OBJ, OFF, PLY, STL, VTP, VTK), optionally with a landmark file and a sizing file.
+
+    Landmarks: vertex indices (.pinned, .txt, SHREC .vts) or points (.vts without index, .csv x,y,z[,id],
+    3D Slicer .fcsv and .mrk.json), each point snapped to the closest vertex; the mesh's field data then
+    holds LandmarkSnapId, LandmarkSnapVertex and LandmarkSnapDistance, and a point farther than 1 % of
+    the bounding-box diagonal from its vertex raises a UserWarning. Sizing: one target edge length per
+    vertex per line, read into the point array "Sizing" (used by map_surfaces instead of curvature).
+    """
     reader = vtkSurfaceMeshReader()
     errors = _collect_errors(reader)
     reader.SetFileName(str(path))
     if landmarks is not None:
         reader.SetLandmarkFileName(str(landmarks))
+    if sizing is not None:
+        reader.SetSizingFileName(str(sizing))
+    # The reader's warnings (e.g. a landmark point far from its vertex) become SurfaceMapsWarnings.
     _update(reader, errors)
     message = reader.GetLastErrorMessage() or "; ".join(errors)
     if message:

@@ -13,7 +13,11 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstdio>
+#include <sstream>
+#include <unistd.h>
+#include <vector>
 #include <fstream>
 #include <string>
 
@@ -255,4 +259,188 @@ TEST(SurfaceMeshReader, CanReadFile)
   EXPECT_FALSE(vtkSurfaceMeshReader::CanReadFile("x.vtu"));
   EXPECT_FALSE(vtkSurfaceMeshReader::CanReadFile("dir.obj/noext"));
   EXPECT_FALSE(vtkSurfaceMeshReader::CanReadFile(nullptr));
+}
+
+namespace
+{
+// blob.vts: "index x y z" per line.
+struct VtsLine
+{
+  int Index;
+  double X, Y, Z;
+};
+
+std::vector<VtsLine> blobLandmarks()
+{
+  std::ifstream in(Data + "/blob.vts");
+  std::vector<VtsLine> lines;
+  VtsLine l;
+  while (in >> l.Index >> l.X >> l.Y >> l.Z)
+  {
+    lines.push_back(l);
+  }
+  return lines;
+}
+
+// A file in the working directory (the build tree), removed on destruction.
+struct ScratchFile
+{
+  ScratchFile(const std::string& name, const std::string& content)
+    : Path("surfacemeshreader_" + std::to_string(getpid()) + "_" + name)
+  {
+    std::ofstream(this->Path) << content;
+  }
+  ~ScratchFile() { std::remove(this->Path.c_str()); }
+  std::string Path;
+};
+
+struct WarningCount
+{
+  std::vector<std::string> Messages;
+};
+
+ReadResult readWithWarnings(const std::string& file, const std::string& landmarks, WarningCount& w)
+{
+  vtkNew<vtkSurfaceMeshReader> reader;
+  ReadResult result;
+  vtkNew<vtkCallbackCommand> counter;
+  counter->SetClientData(&w);
+  counter->SetCallback([](vtkObject*, unsigned long, void* self, void* text)
+    { static_cast<WarningCount*>(self)->Messages.push_back(static_cast<const char*>(text)); });
+  reader->AddObserver(vtkCommand::WarningEvent, counter);
+  reader->SetFileName(file.c_str());
+  reader->SetLandmarkFileName(landmarks.c_str());
+  reader->Update();
+  result.Output = reader->GetOutput();
+  result.Error = reader->GetLastErrorMessage();
+  return result;
+}
+} // namespace
+
+TEST(SurfaceMeshReader, LandmarkPointsSnapToTheClosestVertex)
+{
+  const std::vector<VtsLine> blob = blobLandmarks();
+  ASSERT_EQ(blob.size(), 4u);
+  // Every point 0.001 off its vertex along x (blob's diagonal is about 3.5).
+  const double offset = 1e-3;
+  std::ostringstream vts, csv, fcsv, json;
+  for (std::ostream* s : { &vts, &csv, &fcsv, &json })
+  {
+    s->precision(17);
+  }
+  fcsv << "# Markups fiducial file version = 4.11\n# CoordinateSystem = LPS\n"
+          "# columns = id,x,y,z,ow,ox,oy,oz,vis,sel,lock,label,desc,associatedNodeID\n";
+  json << "{\"@schema\": \"https://raw.githubusercontent.com/slicer/slicer/master/Modules/"
+          "Loadable/Markups/Resources/Schema/markups-schema-v1.0.3.json#\",\n \"markups\": [{\n"
+          "  \"type\": \"Fiducial\", \"coordinateSystem\": \"LPS\",\n  \"controlPoints\": [\n";
+  for (std::size_t k = 0; k < blob.size(); ++k)
+  {
+    const double x = blob[k].X + offset;
+    vts << x << " " << blob[k].Y << " " << blob[k].Z << "\n";
+    csv << x << "," << blob[k].Y << "," << blob[k].Z << "\n";
+    fcsv << "vtkMRMLMarkupsFiducialNode_" << k << "," << x << "," << blob[k].Y << ","
+         << blob[k].Z << ",0,0,0,1,1,1,0,F-" << k + 1 << ",,\n";
+    json << (k ? ",\n" : "") << "   {\"id\": \"" << k + 1 << "\", \"label\": \"F-" << k + 1
+         << "\", \"position\": [" << x << ", " << blob[k].Y << ", " << blob[k].Z
+         << "], \"positionStatus\": \"defined\"}";
+  }
+  json << "\n  ]\n }]\n}\n";
+  const ScratchFile files[] = { { "points.vts", vts.str() },
+    { "points.csv", csv.str() },
+    { "points.fcsv", fcsv.str() },
+    { "points.mrk.json", json.str() } };
+  for (const ScratchFile& file : files)
+  {
+    WarningCount warnings;
+    const ReadResult r = readWithWarnings(Data + "/blob.off", file.Path, warnings);
+    ASSERT_EQ(r.Error, "") << file.Path;
+    EXPECT_TRUE(warnings.Messages.empty()) << file.Path;
+    vtkDataArray* landmarks = r.Output->GetPointData()->GetArray("Landmarks");
+    ASSERT_NE(landmarks, nullptr) << file.Path;
+    // The JSON's ids are Slicer's "1".."4"; the other files number in file order.
+    const int firstId = file.Path.find(".json") != std::string::npos ? 1 : 0;
+    for (std::size_t k = 0; k < blob.size(); ++k)
+    {
+      EXPECT_EQ(landmarks->GetTuple1(blob[k].Index), firstId + static_cast<int>(k)) << file.Path;
+    }
+    vtkDataArray* distances = r.Output->GetFieldData()->GetArray("LandmarkSnapDistance");
+    vtkDataArray* vertices = r.Output->GetFieldData()->GetArray("LandmarkSnapVertex");
+    ASSERT_NE(distances, nullptr) << file.Path;
+    ASSERT_NE(vertices, nullptr) << file.Path;
+    ASSERT_EQ(distances->GetNumberOfTuples(), 4) << file.Path;
+    for (std::size_t k = 0; k < blob.size(); ++k)
+    {
+      EXPECT_NEAR(distances->GetTuple1(k), offset, 1e-6) << file.Path;
+      EXPECT_EQ(vertices->GetTuple1(k), blob[k].Index) << file.Path;
+    }
+  }
+
+  // A point far from the surface still snaps, with a warning naming the file and line.
+  std::ostringstream far;
+  far.precision(17);
+  far << blob[0].X << " " << blob[0].Y << " " << blob[0].Z << "\n"
+      << blob[1].X * 1.5 << " " << blob[1].Y << " " << blob[1].Z << "\n";
+  const ScratchFile farFile("far.vts", far.str());
+  WarningCount warnings;
+  const ReadResult r = readWithWarnings(Data + "/blob.off", farFile.Path, warnings);
+  ASSERT_EQ(r.Error, "");
+  ASSERT_EQ(warnings.Messages.size(), 1u);
+  EXPECT_NE(warnings.Messages[0].find(farFile.Path + ":2: landmark 1 lies"), std::string::npos)
+    << warnings.Messages[0];
+  EXPECT_NE(warnings.Messages[0].find("more than 1 %"), std::string::npos) << warnings.Messages[0];
+  EXPECT_EQ(r.Output->GetFieldData()->GetArray("LandmarkSnapDistance")->GetTuple1(0), 0.0);
+}
+
+TEST(SurfaceMeshReader, MalformedMarkupsJsonNamesTheLine)
+{
+  struct Case
+  {
+    const char* Text;
+    const char* Message;
+  };
+  for (const Case& c : {
+         Case{ "{\"markups\": [{\"controlPoints\": [\n{\"position\": [1, 2]}]}]}", ":2: control point 0 has no \"position\" of three numbers" },
+         Case{ "{\"markups\": [{\"controlPoints\": [\n{\"position\": [0,0,0]},\n{\"position\": [1, \"a\", 2]}]}]}", ":3: control point 1 has a position that is not three finite numbers" },
+         Case{ "{\"markups\": [{\"controlPoints\": [\n{\"position\": [1,2,3], \"positionStatus\": \"undefined\"}]}]}", ":2: control point 0 has no position (positionStatus \"undefined\")" },
+         Case{ "{\"markups\": []}", ":1: not a Slicer markups file" },
+         Case{ "{\"markups\": [{\"controlPoints\": []}]}", ": the landmark file lists no landmarks" },
+         Case{ "{\n\"markups\": [\n", ":3: not valid JSON" },
+       })
+  {
+    const ScratchFile file("bad.mrk.json", c.Text);
+    const ReadResult r = read(Data + "/blob.off", file.Path);
+    EXPECT_NE(r.Error.find(file.Path + c.Message), std::string::npos) << c.Text << ": " << r.Error;
+    EXPECT_EQ(r.Output->GetNumberOfPoints(), 0);
+  }
+}
+
+TEST(SurfaceMeshReader, SizingFileBecomesTheSizingArray)
+{
+  std::ostringstream lengths;
+  for (int v = 0; v < 642; ++v)
+  {
+    lengths << 0.01 * (v + 1) << "\n";
+  }
+  const ScratchFile good("sizing.txt", lengths.str());
+  vtkNew<vtkSurfaceMeshReader> reader;
+  reader->SetFileName((Data + "/blob.off").c_str());
+  reader->SetSizingFileName(good.Path.c_str());
+  reader->Update();
+  ASSERT_STREQ(reader->GetLastErrorMessage(), "");
+  vtkDataArray* sizing = reader->GetOutput()->GetPointData()->GetArray("Sizing");
+  ASSERT_NE(sizing, nullptr);
+  EXPECT_EQ(sizing->GetNumberOfTuples(), 642);
+  EXPECT_DOUBLE_EQ(sizing->GetTuple1(641), 6.42);
+
+  const ScratchFile shortFile("short.txt", "0.1\n0.2\n");
+  vtkNew<vtkCallbackCommand> sink;
+  reader->AddObserver(vtkCommand::ErrorEvent, sink);
+  reader->SetSizingFileName(shortFile.Path.c_str());
+  reader->Update();
+  const std::string error = reader->GetLastErrorMessage();
+  EXPECT_NE(error.find(shortFile.Path + ":2: the file ends after 2 values, but the mesh has 642"),
+    std::string::npos)
+    << error;
+  EXPECT_NE(error.find("sizing of " + Data + "/blob.off"), std::string::npos) << error;
+  EXPECT_EQ(reader->GetOutput()->GetNumberOfPoints(), 0);
 }

@@ -1,5 +1,5 @@
 // Deterministic mutation fuzzing of every mesh reader and the landmark
-// readers, in process (one process would cost a VTK start-up per input).
+// readers (indices and points: .pinned, .vts, .csv, .fcsv, .mrk.json), in process (one process would cost a VTK start-up per input).
 //
 // Seeds are the files in Data/ plus encodings derived from them here (binary
 // PLY in both byte orders, binary STL, VTP ascii / appended raw / zlib,
@@ -14,7 +14,7 @@
 //
 // usage: SurfaceMapsReaderFuzz DATA_DIR SCRATCH_DIR [--mutants N] [--seed S]
 //                              [--seconds T] [--emit DIR --every K]
-//   --mutants N   mutants per seed file (default 250: 17 seeds, 4 267 inputs)
+//   --mutants N   mutants per seed file (default 250: 21 seeds, 5 271 inputs)
 //   --seconds T   bound on the time of one input (default 20)
 //   --verbose 1   name every input before reading it (to find a crash)
 //   --only EXT    only the seeds whose name ends with EXT (e.g. .vtp); the
@@ -52,6 +52,7 @@
 #include <sstream>
 #include <string>
 #include <unistd.h>
+#include <utility>
 #include <vector>
 
 #if defined(__SANITIZE_ADDRESS__)
@@ -444,6 +445,41 @@ Bytes objWithCorners(vtkPolyData* mesh)
   return out.str();
 }
 
+// blob.vts's landmarks ("index x y z" lines) as points, in the formats that
+// give landmarks by coordinates: .vts without index, .csv, Slicer .fcsv and
+// .mrk.json.
+std::vector<std::pair<std::string, Bytes>> landmarkPointSeeds(const Bytes& vts)
+{
+  std::istringstream in(vts);
+  std::ostringstream points, csv, fcsv, json;
+  for (std::ostream* out : { static_cast<std::ostream*>(&points), static_cast<std::ostream*>(&csv),
+         static_cast<std::ostream*>(&fcsv), static_cast<std::ostream*>(&json) })
+  {
+    out->precision(17);
+  }
+  fcsv << "# Markups fiducial file version = 4.11\n# CoordinateSystem = LPS\n"
+          "# columns = id,x,y,z,ow,ox,oy,oz,vis,sel,lock,label,desc,associatedNodeID\n";
+  json << "{\"markups\": [{\"type\": \"Fiducial\", \"coordinateSystem\": \"LPS\",\n"
+          "  \"controlPoints\": [\n";
+  int index, k = 0;
+  double x, y, z;
+  for (; in >> index >> x >> y >> z; ++k)
+  {
+    points << x << " " << y << " " << z << "\n";
+    csv << x << "," << y << "," << z << "," << k << "\n";
+    fcsv << "vtkMRMLMarkupsFiducialNode_" << k << "," << x << "," << y << "," << z
+         << ",0,0,0,1,1,1,0,F-" << k + 1 << ",,\n";
+    json << (k ? ",\n" : "") << "    {\"id\": \"" << k + 1 << "\", \"label\": \"F-" << k + 1
+         << "\", \"position\": [" << x << ", " << y << ", " << z
+         << "], \"positionStatus\": \"defined\"}";
+  }
+  json << "\n  ]\n}]}\n";
+  return { { "derived_points.vts", points.str() },
+    { "derived_points.csv", csv.str() },
+    { "derived_points.fcsv", fcsv.str() },
+    { "derived_points.mrk.json", json.str() } };
+}
+
 // What a VTK writer (legacy or XML) wrote to `path`.
 template <typename Writer>
 Bytes writtenByVTK(Writer* writer, const std::string& path)
@@ -499,6 +535,7 @@ bool checkOne(const std::string& meshPath, const std::string& landmarkPath, Tall
   vtkNew<vtkSurfaceMeshReader> reader;
   vtkNew<vtkCallbackCommand> sink; // the message is read back below
   reader->AddObserver(vtkCommand::ErrorEvent, sink);
+  reader->AddObserver(vtkCommand::WarningEvent, sink); // landmark points far from the mesh
   reader->GetExecutive()->AddObserver(vtkCommand::ErrorEvent, sink);
   reader->SetFileName(meshPath.c_str());
   if (!landmarkPath.empty())
@@ -616,6 +653,14 @@ std::vector<Seed> makeSeeds(const std::string& data, const std::string& scratch)
   }
   std::remove((scratchFile + ".vtp").c_str());
   std::remove((scratchFile + ".vtk").c_str());
+
+  // Landmarks as points (blob.vts's vertices, by coordinates) in every point
+  // format; last, so the mutants of the seeds above stay as they were.
+  const Bytes blobMesh = readFile(data + "/blob.off");
+  for (const auto& [name, content] : landmarkPointSeeds(readFile(data + "/blob.vts")))
+  {
+    seeds.push_back({ name, content, "blob.off", blobMesh });
+  }
   return seeds;
 }
 

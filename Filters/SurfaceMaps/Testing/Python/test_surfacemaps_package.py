@@ -85,3 +85,30 @@ def test_embed_and_evaluate_helpers():
         surfacemaps.evaluate_map(mesh, surfacemaps.read_mesh(data("limbs.ply")))
     with pytest.raises(TypeError):
         surfacemaps.embed_on_sphere(mesh, NoSuchSetting=1)
+
+
+def test_read_mesh_snaps_point_landmarks_and_reads_sizing(tmp_path):
+    import warnings
+    rows = [line.split() for line in open(data("blob.vts"))]
+    csv = tmp_path / "points.csv"
+    # Ids given in the file (in reverse); the last point 0.3 off its vertex.
+    lines = [f"{x},{y},{z},{3 - k}" for k, (_, x, y, z) in enumerate(rows)]
+    _, x, y, z = rows[3]
+    lines[3] = f"{x},{y},{float(z) + 0.3},0"
+    csv.write_text("\n".join(lines) + "\n")
+    sizing = tmp_path / "sizing.txt"
+    sizing.write_text("0.25\n" * 642)
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")
+        mesh = surfacemaps.read_mesh(data("blob.off"), landmarks=csv, sizing=sizing)
+    assert len(caught) == 1 and f"{csv}:4: landmark 0 lies" in str(caught[0].message)
+    landmarks = mesh.GetPointData().GetArray("Landmarks")
+    assert [landmarks.GetValue(int(row[0])) for row in rows] == [3, 2, 1, 0]
+    distances = mesh.GetFieldData().GetArray("LandmarkSnapDistance")
+    assert [round(distances.GetValue(k), 6) for k in range(4)][:3] == [0.0, 0.0, 0.0]
+    assert abs(distances.GetValue(3) - 0.3) < 1e-6
+    assert mesh.GetPointData().GetArray("Sizing").GetValue(641) == 0.25
+    bad = tmp_path / "bad.csv"
+    bad.write_text("1,2,3\n1,2\n")
+    with pytest.raises(surfacemaps.InputError, match="bad.csv:2: expected x,y,z or x,y,z,id"):
+        surfacemaps.read_mesh(data("blob.off"), landmarks=bad)
