@@ -406,9 +406,10 @@ def surface_pictures(keyframes, pattern, source, times, statistics, directory):
     render.render_point_scalars(statistics.mean, paths[-1], "StandardDeviation", 0.0, top, size=(640, 480),
                                 title="standard deviation")
     shapes = [statistics.shape(1, c) for c in (-2.0, 0.0, 2.0)]
-    mesh, size = grid(shapes, {"Pattern": pattern}, elevation=60.0, columns=len(shapes))
+    # One row seen from the side (the grid's rows run down the screen, so one row needs no raise).
+    mesh, size = grid(shapes, {"Pattern": pattern}, elevation=15.0, columns=len(shapes))
     paths.append(os.path.join(directory, "mode_1.png"))
-    render.render_checkerboard(mesh, paths[-1], "Pattern", squares=6, size=size, azimuth=0.0, elevation=60.0)
+    render.render_checkerboard(mesh, paths[-1], "Pattern", squares=6, size=size, azimuth=0.0, elevation=15.0)
     return paths
 
 

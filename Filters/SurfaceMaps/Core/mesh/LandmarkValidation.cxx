@@ -2,6 +2,7 @@
 
 #include <Eigen/Geometry>
 
+#include <algorithm>
 #include <cmath>
 #include <map>
 #include <set>
@@ -125,7 +126,12 @@ std::vector<int> tripleSigns(const PolygonMesh& mesh, const std::vector<int>& ve
         const Eigen::Vector3d pb = mesh.points[vertices[b]] - o;
         const Eigen::Vector3d pc = mesh.points[vertices[c]] - o;
         const double det = pa.dot(pb.cross(pc));
-        signs.push_back(!(std::abs(det) >= threshold) ? 0 : (det > 0 ? 1 : -1));
+        // Decisive only when the triple is far from a plane through the
+        // centroid, relative to its own size too: landmarks along a symmetry
+        // plane (tips and a midline point of a tube) turn either way with
+        // noise and are no evidence of a mirror image.
+        const double relative = 0.1 * pa.norm() * pb.norm() * pc.norm();
+        signs.push_back(!(std::abs(det) >= std::max(threshold, relative)) ? 0 : (det > 0 ? 1 : -1));
       }
     }
   }

@@ -87,3 +87,43 @@ TEST(LandmarkValidation, MirroredLandmarksAreFound)
   EXPECT_NE(warnings[0].find("the landmarks of input 2 are the mirror image of those of input 0"),
     std::string::npos);
 }
+
+// Landmarks close to a plane through the centroid (both tips and a midline
+// point of a tube) turn either way with noise: no evidence, no warning. Here
+// the third landmark sits a little above or below the plane of the first two
+// and the centroid (z = 0), on two copies of one sphere.
+TEST(LandmarkValidation, NearlyPlanarTriplesDoNotVote)
+{
+  const PolygonMesh sphere = makeIcosphere(3);
+  auto nearest = [&](const Eigen::Vector3d& target)
+  {
+    int best = 0;
+    for (std::size_t v = 0; v < sphere.points.size(); ++v)
+    {
+      if ((sphere.points[v] - target).norm() < (sphere.points[best] - target).norm())
+      {
+        best = static_cast<int>(v);
+      }
+    }
+    return best;
+  };
+  auto landmarks = [&](double lift)
+  {
+    std::vector<int> ids(sphere.points.size(), -1);
+    ids[nearest(Eigen::Vector3d(1, 0, 0))] = 0;
+    ids[nearest(Eigen::Vector3d(0, 1, 0))] = 1;
+    ids[nearest(Eigen::Vector3d(-0.7, -0.7, lift).normalized())] = 2;
+    return ids;
+  };
+  const std::vector<int> above = landmarks(0.06);
+  const std::vector<int> below = landmarks(-0.06);
+  const LandmarkOrientation o = compareLandmarkOrientation(sphere, above, sphere, below);
+  EXPECT_EQ(o.triples, 0);
+  EXPECT_TRUE(
+    checkLandmarkMirroring({ &sphere, &sphere }, { above, below }, { "input 0", "input 1" }).empty());
+  // Well off the plane the same triple decides, and the two sides disagree.
+  const LandmarkOrientation far =
+    compareLandmarkOrientation(sphere, landmarks(0.8), sphere, landmarks(-0.8));
+  EXPECT_EQ(far.triples, 1);
+  EXPECT_EQ(far.opposite, 1);
+}
