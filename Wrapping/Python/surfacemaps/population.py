@@ -31,7 +31,8 @@ rank 0 then takes over the cores of the finished ranks on its host. Without
 mpi4py, outside mpirun or with ``--no-mpi`` it runs serially.
 
 Outputs in OUT: stages/<stage>.vtp (the stage mean on the stage's common
-triangulation, with "StandardDeviation" and "Landmarks"), keyframes/
+triangulation, with "StandardDeviation", "Landmarks" and the stage map's
+"SpherePosition" on sphere 0), keyframes/
 keyframe_KK.vtp (the stage means on the final common triangulation),
 series/surface.pvd (the interpolated series), statistics/ (mean.vtp with
 "StandardDeviation" and the modes, mode_<m>.pvd: mean + c sqrt(variance)
@@ -409,7 +410,9 @@ def surface_pictures(keyframes, pattern, source, times, statistics, directory):
     # One row seen from the side (the grid's rows run down the screen, so one row needs no raise).
     mesh, size = grid(shapes, {"Pattern": pattern}, elevation=15.0, columns=len(shapes))
     paths.append(os.path.join(directory, "mode_1.png"))
-    render.render_checkerboard(mesh, paths[-1], "Pattern", squares=6, size=size, azimuth=0.0, elevation=15.0)
+    # ResetCamera fits the row's bounding sphere into the window's height: zoom to fill its width.
+    render.render_checkerboard(mesh, paths[-1], "Pattern", squares=6, size=size, azimuth=0.0, elevation=15.0,
+                               zoom=2.5)
     return paths
 
 
@@ -497,10 +500,14 @@ def run(args, comm):
         raise surfacemaps.InputError(f"the stage times must increase: {times}")
     from vtkmodules.util.numpy_support import vtk_to_numpy
     out = args.output_dir
+    # The means as the final map's inputs; written with the stage map's sphere positions too (which
+    # the final map would take for a precomputed embedding of the mean, so they stay out of its input).
     means = [polydata(r["points"], r["triangles"], landmarks=r["landmarks"],
                       point_arrays={"StandardDeviation": r["spread"]}, time=t) for r, t in zip(stages, times)]
-    for r, mean in zip(stages, means):
-        surfacemaps.write_mesh(mean, os.path.join(out, "stages", r["name"] + ".vtp"))
+    for r, t in zip(stages, times):
+        surfacemaps.write_mesh(polydata(r["points"], r["triangles"], landmarks=r["landmarks"], time=t,
+                                        point_arrays={"StandardDeviation": r["spread"], "SpherePosition": r["sphere"]}),
+                               os.path.join(out, "stages", r["name"] + ".vtp"))
 
     # One stage: its map is the common triangulation already (no final map, no series).
     step = time.perf_counter()

@@ -35,7 +35,7 @@ from vtkmodules.vtkRenderingCore import (vtkActor, vtkPolyDataMapper, vtkRendere
                                          vtkWindowToImageFilter)
 
 
-def _render(mesh, path, configure_mapper, size=(800, 600), azimuth=30.0, elevation=20.0, title=None):
+def _render(mesh, path, configure_mapper, size=(800, 600), azimuth=30.0, elevation=20.0, title=None, zoom=1.0):
     mapper = vtkPolyDataMapper()
     mapper.SetInputData(mesh)
     configure_mapper(mapper)
@@ -61,6 +61,7 @@ def _render(mesh, path, configure_mapper, size=(800, 600), azimuth=30.0, elevati
     camera = renderer.GetActiveCamera()
     camera.Azimuth(azimuth)
     camera.Elevation(elevation)
+    camera.Zoom(zoom)
     renderer.ResetCameraClippingRange()
     window = vtkRenderWindow()
     window.SetOffScreenRendering(1)
