@@ -14,25 +14,16 @@ vtkSurfaceAverageBlocksFilter::~vtkSurfaceAverageBlocksFilter() = default;
 
 int vtkSurfaceAverageBlocksFilter::FillInputPortInformation(int, vtkInformation* info)
 {
-  info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkPolyData");
-  info->Append(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkCompositeDataSet");
-  info->Set(vtkAlgorithm::INPUT_IS_REPEATABLE(), 1);
-  return 1;
+  return vtkSurfaceMapsBlockList::FillRepeatableBlocksPort(info);
 }
 
 int vtkSurfaceAverageBlocksFilter::RequestData(vtkInformation* request,
   vtkInformationVector** inputVector,
   vtkInformationVector* outputVector)
 {
-  vtkNew<vtkInformationVector> inputs;
-  std::vector<std::string> names;
-  if (!vtkSurfaceMapsBlockList::Flatten(this, inputVector[0], inputs, names))
-  {
-    vtkPolyData::GetData(outputVector, 0)->Initialize();
-    return 0;
-  }
-  vtkInformationVector* flatInputs[1] = { inputs };
-  return this->Superclass::RequestData(request, flatInputs, outputVector);
+  return vtkSurfaceMapsBlockList::RequestFlattened(this, inputVector[0], outputVector,
+    [&](vtkInformationVector** flat)
+    { return this->Superclass::RequestData(request, flat, outputVector); });
 }
 
 void vtkSurfaceAverageBlocksFilter::PrintSelf(ostream& os, vtkIndent indent)

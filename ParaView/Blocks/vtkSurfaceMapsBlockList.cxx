@@ -57,6 +57,30 @@ bool append(vtkAlgorithm* self,
 }
 } // namespace
 
+int vtkSurfaceMapsBlockList::FillRepeatableBlocksPort(vtkInformation* info)
+{
+  info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkPolyData");
+  info->Append(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkCompositeDataSet");
+  info->Set(vtkAlgorithm::INPUT_IS_REPEATABLE(), 1);
+  return 1;
+}
+
+int vtkSurfaceMapsBlockList::RequestFlattened(vtkAlgorithm* self,
+  vtkInformationVector* port,
+  vtkInformationVector* output,
+  const std::function<int(vtkInformationVector**)>& run)
+{
+  vtkNew<vtkInformationVector> inputs;
+  std::vector<std::string> names;
+  if (!Flatten(self, port, inputs, names))
+  {
+    vtkDataObject::GetData(output, 0)->Initialize();
+    return 0;
+  }
+  vtkInformationVector* flatInputs[1] = { inputs };
+  return run(flatInputs);
+}
+
 bool vtkSurfaceMapsBlockList::Flatten(vtkAlgorithm* self,
   vtkInformationVector* port,
   vtkInformationVector* flat,

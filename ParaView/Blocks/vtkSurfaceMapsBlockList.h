@@ -15,6 +15,7 @@
 
 #include "vtkSmartPointer.h"
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -39,6 +40,22 @@ public:
     vtkInformationVector* port,
     vtkInformationVector* flat,
     std::vector<std::string>& names);
+
+  /**
+   * The input port of a one-port adapter: repeatable, each connection a
+   * vtkPolyData or a composite of them. Returns 1.
+   */
+  static int FillRepeatableBlocksPort(vtkInformation* info);
+
+  /**
+   * RequestData of a one-port adapter: flattens `port` (Flatten) and calls
+   * `run` with the flat list as the wrapped filter's input vectors (the
+   * superclass's RequestData); on a bad block empties output 0 and returns 0.
+   */
+  static int RequestFlattened(vtkAlgorithm* self,
+    vtkInformationVector* port,
+    vtkInformationVector* output,
+    const std::function<int(vtkInformationVector**)>& run);
 
   /**
    * The number of surfaces the connection `info` will carry, known before

@@ -14,10 +14,7 @@ vtkSurfaceSequenceInterpolatorBlocksFilter::~vtkSurfaceSequenceInterpolatorBlock
 
 int vtkSurfaceSequenceInterpolatorBlocksFilter::FillInputPortInformation(int, vtkInformation* info)
 {
-  info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkPolyData");
-  info->Append(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkCompositeDataSet");
-  info->Set(vtkAlgorithm::INPUT_IS_REPEATABLE(), 1);
-  return 1;
+  return vtkSurfaceMapsBlockList::FillRepeatableBlocksPort(info);
 }
 
 int vtkSurfaceSequenceInterpolatorBlocksFilter::RequestInformation(vtkInformation* request,
@@ -45,15 +42,9 @@ int vtkSurfaceSequenceInterpolatorBlocksFilter::RequestData(vtkInformation* requ
   vtkInformationVector** inputVector,
   vtkInformationVector* outputVector)
 {
-  vtkNew<vtkInformationVector> inputs;
-  std::vector<std::string> names;
-  if (!vtkSurfaceMapsBlockList::Flatten(this, inputVector[0], inputs, names))
-  {
-    vtkPolyData::GetData(outputVector, 0)->Initialize();
-    return 0;
-  }
-  vtkInformationVector* flatInputs[1] = { inputs };
-  return this->Superclass::RequestData(request, flatInputs, outputVector);
+  return vtkSurfaceMapsBlockList::RequestFlattened(this, inputVector[0], outputVector,
+    [&](vtkInformationVector** flat)
+    { return this->Superclass::RequestData(request, flat, outputVector); });
 }
 
 void vtkSurfaceSequenceInterpolatorBlocksFilter::PrintSelf(ostream& os, vtkIndent indent)
