@@ -32,7 +32,10 @@ struct ReadResult
   int ErrorEvents = 0;
 };
 
-ReadResult read(const std::string& file, const std::string& landmarks = "")
+// `warnings`, when given, collects the reader's warning messages.
+ReadResult read(const std::string& file,
+  const std::string& landmarks = "",
+  std::vector<std::string>* warnings = nullptr)
 {
   vtkNew<vtkSurfaceMeshReader> reader;
   ReadResult result;
@@ -41,6 +44,14 @@ ReadResult read(const std::string& file, const std::string& landmarks = "")
   counter->SetCallback(
     [](vtkObject*, unsigned long, void* count, void*) { ++*static_cast<int*>(count); });
   reader->AddObserver(vtkCommand::ErrorEvent, counter);
+  vtkNew<vtkCallbackCommand> collector;
+  if (warnings)
+  {
+    collector->SetClientData(warnings);
+    collector->SetCallback([](vtkObject*, unsigned long, void* messages, void* text)
+      { static_cast<std::vector<std::string>*>(messages)->push_back(static_cast<const char*>(text)); });
+    reader->AddObserver(vtkCommand::WarningEvent, collector);
+  }
   reader->SetFileName(file.c_str());
   if (!landmarks.empty())
   {
@@ -294,27 +305,6 @@ struct ScratchFile
   std::string Path;
 };
 
-struct WarningCount
-{
-  std::vector<std::string> Messages;
-};
-
-ReadResult readWithWarnings(const std::string& file, const std::string& landmarks, WarningCount& w)
-{
-  vtkNew<vtkSurfaceMeshReader> reader;
-  ReadResult result;
-  vtkNew<vtkCallbackCommand> counter;
-  counter->SetClientData(&w);
-  counter->SetCallback([](vtkObject*, unsigned long, void* self, void* text)
-    { static_cast<WarningCount*>(self)->Messages.push_back(static_cast<const char*>(text)); });
-  reader->AddObserver(vtkCommand::WarningEvent, counter);
-  reader->SetFileName(file.c_str());
-  reader->SetLandmarkFileName(landmarks.c_str());
-  reader->Update();
-  result.Output = reader->GetOutput();
-  result.Error = reader->GetLastErrorMessage();
-  return result;
-}
 } // namespace
 
 TEST(SurfaceMeshReader, LandmarkPointsSnapToTheClosestVertex)
@@ -351,10 +341,10 @@ TEST(SurfaceMeshReader, LandmarkPointsSnapToTheClosestVertex)
     { "points.mrk.json", json.str() } };
   for (const ScratchFile& file : files)
   {
-    WarningCount warnings;
-    const ReadResult r = readWithWarnings(Data + "/blob.off", file.Path, warnings);
+    std::vector<std::string> warnings;
+    const ReadResult r = read(Data + "/blob.off", file.Path, &warnings);
     ASSERT_EQ(r.Error, "") << file.Path;
-    EXPECT_TRUE(warnings.Messages.empty()) << file.Path;
+    EXPECT_TRUE(warnings.empty()) << file.Path;
     vtkDataArray* landmarks = r.Output->GetPointData()->GetArray("Landmarks");
     ASSERT_NE(landmarks, nullptr) << file.Path;
     // The JSON's ids are Slicer's "1".."4"; the other files number in file order.
@@ -381,13 +371,13 @@ TEST(SurfaceMeshReader, LandmarkPointsSnapToTheClosestVertex)
   far << blob[0].X << " " << blob[0].Y << " " << blob[0].Z << "\n"
       << blob[1].X * 1.5 << " " << blob[1].Y << " " << blob[1].Z << "\n";
   const ScratchFile farFile("far.vts", far.str());
-  WarningCount warnings;
-  const ReadResult r = readWithWarnings(Data + "/blob.off", farFile.Path, warnings);
+  std::vector<std::string> warnings;
+  const ReadResult r = read(Data + "/blob.off", farFile.Path, &warnings);
   ASSERT_EQ(r.Error, "");
-  ASSERT_EQ(warnings.Messages.size(), 1u);
-  EXPECT_NE(warnings.Messages[0].find(farFile.Path + ":2: landmark 1 lies"), std::string::npos)
-    << warnings.Messages[0];
-  EXPECT_NE(warnings.Messages[0].find("more than 1 %"), std::string::npos) << warnings.Messages[0];
+  ASSERT_EQ(warnings.size(), 1u);
+  EXPECT_NE(warnings[0].find(farFile.Path + ":2: landmark 1 lies"), std::string::npos)
+    << warnings[0];
+  EXPECT_NE(warnings[0].find("more than 1 %"), std::string::npos) << warnings[0];
   EXPECT_EQ(r.Output->GetFieldData()->GetArray("LandmarkSnapDistance")->GetTuple1(0), 0.0);
 }
 
