@@ -61,11 +61,15 @@
  *
  * Texture coordinates (both modes above): when input i carries per-corner
  * texture coordinates (the 6-component cell array "CornerTCoords" of
- * vtkSurfaceMeshReader), output i gets the point array "TCoords" (active
- * texture coordinates): the corner values of the input triangle the point
- * lies in ("SourceCellId"), interpolated with "SourceBarycentric", so texture
- * seams stay sharp. Active point texture coordinates of an input are
- * carried like any point array (the corner ones take precedence).
+ * vtkSurfaceMeshReader), output i gets them per corner too: the cell array
+ * "CornerTCoords" (replacing input k's own in MappedInput mode), in which no
+ * triangle spans a texture seam (surfacemaps::transferCornerValues), and the
+ * point array "TCoords" (active texture coordinates): the corner values of
+ * the input triangle the point lies in ("SourceCellId"), interpolated with
+ * "SourceBarycentric". One value per point cannot hold a seam: to render the
+ * texture, split the output with vtkSurfaceTextureSeamSplitter. Active point
+ * texture coordinates of an input are carried like any point array (the
+ * corner ones take precedence).
  *
  * OutputMode INPUT_EMBEDDINGS: output i is input i unchanged (points, cells,
  * point and cell data) with the point array "SpherePosition" set to its sphere

@@ -279,7 +279,7 @@ void vtkSurfaceMapOutputs::CommonTriangulation(const std::vector<vtkPolyData*>& 
     setGeometry(output, map.lifted[i], map.triangles);
     setSourcePointData(output, this->Inputs[i], input.mesh, map.sourcePoints[i], this->ArrayModes);
     vtkSurfaceMapsConversion::SetCornerTCoords(
-      output->GetPointData(), input.mesh.cornerTexCoords, map.sourcePoints[i]);
+      output, input.mesh, map.triangles, map.sourcePoints[i]);
     output->GetPointData()->AddArray(vectorArray(SpherePositionName, map.spherePositions[i]));
     setLandmarks(output, map.landmarks);
     setDistortion(output,
@@ -312,10 +312,10 @@ void vtkSurfaceMapOutputs::MappedInput(const std::vector<vtkPolyData*>& outputs,
     const surfacemaps::MapInput& input = this->MapInputs[i];
     setGeometry(output, points[i], triangles);
     setSourcePointData(output, this->Inputs[i], input.mesh, sources[i], this->ArrayModes);
-    vtkSurfaceMapsConversion::SetCornerTCoords(
-      output->GetPointData(), input.mesh.cornerTexCoords, sources[i]);
     setLandmarks(output, this->MapInputs[k].landmarks);
     output->GetCellData()->PassData(this->Inputs[k]->GetCellData());
+    // After the cells of input k: input i's texture replaces k's own.
+    vtkSurfaceMapsConversion::SetCornerTCoords(output, input.mesh, triangles, sources[i]);
     setDistortion(output,
       i == k ? std::vector<double>(triangles.size(), 1.0)
              : distortionPerTriangle(points[k], points[i], triangles));

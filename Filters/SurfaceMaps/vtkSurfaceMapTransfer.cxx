@@ -280,6 +280,7 @@ std::vector<surfacemaps::SurfacePoint> mapTargetVertices(const Ports& ports,
 // mode `modes` gives it.
 void sampleOntoTarget(vtkPolyData* output,
   vtkPolyData* target,
+  const std::vector<std::array<int, 3>>& targetTriangles,
   vtkPolyData* source,
   const PortMesh& sourcePort,
   const std::vector<vtkAbstractArray*>& arrays,
@@ -302,7 +303,7 @@ void sampleOntoTarget(vtkPolyData* output,
   vtkSurfaceMapsPointDataTransfer::SampleArrays(
     from, transferred, to, sourcePort.triangles, points, modes);
   vtkSurfaceMapsConversion::AddSourcePoints(to, points);
-  vtkSurfaceMapsConversion::SetCornerTCoords(to, sourcePort.mesh.cornerTexCoords, points);
+  vtkSurfaceMapsConversion::SetCornerTCoords(output, sourcePort.mesh, targetTriangles, points);
 }
 
 } // namespace
@@ -397,7 +398,8 @@ int vtkSurfaceMapTransfer::RequestData(vtkInformation*,
 
       this->SetProgressText("Sampling the source's point data");
       this->UpdateProgress(0.8);
-      sampleOntoTarget(output, target, source, ports.Source, arrays, points, this);
+      sampleOntoTarget(
+        output, target, ports.Target.triangles, source, ports.Source, arrays, points, this);
       this->UpdateProgress(1.0);
       return 1;
     },

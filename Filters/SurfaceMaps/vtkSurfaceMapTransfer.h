@@ -43,9 +43,13 @@
  * - "TCoords" (active texture coordinates) when the source carries per-corner
  *   texture coordinates (the 6-component cell array "CornerTCoords" of
  *   vtkSurfaceMeshReader): the corners of that source triangle interpolated
- *   with those barycentric coordinates, so seams stay sharp; otherwise the
- *   source's active point texture coordinates, if any, are transferred (also
- *   when not named).
+ *   with those barycentric coordinates; otherwise the source's active point
+ *   texture coordinates, if any, are transferred (also when not named).
+ * With per-corner texture coordinates on the source, the cell array
+ * "CornerTCoords" (6 components) replaces the target's own: per triangle
+ * corner, so that no triangle spans a texture seam
+ * (surfacemaps::transferCornerValues). Render the texture through
+ * vtkSurfaceTextureSeamSplitter, which gives each corner value its own point.
  * The target's own point arrays are not kept.
  *
  * Checks (errors name the port, the file from the "FileName" field data where

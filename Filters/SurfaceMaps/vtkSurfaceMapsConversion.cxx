@@ -346,10 +346,12 @@ void vtkSurfaceMapsConversion::AddSourcePoints(vtkPointData* pointData,
   pointData->AddArray(barycentric);
 }
 
-void vtkSurfaceMapsConversion::SetCornerTCoords(vtkPointData* pointData,
-  const std::vector<Eigen::Vector2d>& corners,
+void vtkSurfaceMapsConversion::SetCornerTCoords(vtkPolyData* output,
+  const surfacemaps::PolygonMesh& source,
+  const std::vector<std::array<int, 3>>& triangles,
   const std::vector<surfacemaps::SurfacePoint>& points)
 {
+  const std::vector<Eigen::Vector2d>& corners = source.cornerTexCoords;
   if (corners.empty())
   {
     return;
@@ -363,7 +365,19 @@ void vtkSurfaceMapsConversion::SetCornerTCoords(vtkPointData* pointData,
     const Eigen::Vector2d t = surfacemaps::evaluateCornerValues(corners, points[v]);
     array->SetTypedTuple(static_cast<vtkIdType>(v), t.data());
   }
-  pointData->SetTCoords(array);
+  output->GetPointData()->SetTCoords(array);
+
+  const std::vector<Eigen::Vector2d> values = surfacemaps::transferCornerValues(
+    source.points, source.triangles(), corners, triangles, points);
+  auto cornerArray = vtkSmartPointer<vtkDoubleArray>::New();
+  cornerArray->SetName(CornerTCoordsName);
+  cornerArray->SetNumberOfComponents(6);
+  cornerArray->SetNumberOfTuples(static_cast<vtkIdType>(triangles.size()));
+  for (std::size_t t = 0; t < triangles.size(); ++t)
+  {
+    cornerArray->SetTypedTuple(static_cast<vtkIdType>(t), values[3 * t].data());
+  }
+  output->GetCellData()->AddArray(cornerArray);
 }
 
 surfacemaps::Logger vtkSurfaceMapsConversion::EngineLog()

@@ -18,6 +18,7 @@
 
 #include "vtkSmartPointer.h"
 
+#include <array>
 #include <string>
 #include <vector>
 
@@ -75,11 +76,20 @@ public:
   static void AddSourcePoints(vtkPointData* pointData,
     const std::vector<surfacemaps::SurfacePoint>& points);
 
-  /// Sets "TCoords", the active texture coordinates: per-corner values
-  /// (three per input triangle) evaluated at every surface point inside its
-  /// triangle, so seams stay sharp. Nothing when `corners` is empty.
-  static void SetCornerTCoords(vtkPointData* pointData,
-    const std::vector<Eigen::Vector2d>& corners,
+  /// Texture coordinates of `output`, whose vertex v lies at `points[v]` on
+  /// `source` and whose triangles (`triangles`, in the order of its polys)
+  /// receive the source's per-corner texture coordinates
+  /// (PolygonMesh::cornerTexCoords):
+  /// - the cell array "CornerTCoords" (6 components, u and v of each corner,
+  ///   as vtkSurfaceMeshReader writes it), from
+  ///   surfacemaps::transferCornerValues: no triangle spans a texture seam;
+  /// - the point array "TCoords", the active texture coordinates: the corners
+  ///   of each point's source triangle evaluated there. One value per vertex
+  ///   cannot hold a seam: render through vtkSurfaceTextureSeamSplitter.
+  /// Nothing when the source has no per-corner texture coordinates.
+  static void SetCornerTCoords(vtkPolyData* output,
+    const surfacemaps::PolygonMesh& source,
+    const std::vector<std::array<int, 3>>& triangles,
     const std::vector<surfacemaps::SurfacePoint>& points);
 
   /// The vtkPolyData of every information object of `vector` (null where

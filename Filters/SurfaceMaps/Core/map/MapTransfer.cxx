@@ -2,8 +2,14 @@
 
 #include "geometry/SphereLocator.h"
 
+#include <algorithm>
+#include <complex>
+#include <cstdint>
+#include <limits>
+#include <numeric>
 #include <stdexcept>
 #include <string>
+#include <unordered_map>
 
 namespace surfacemaps
 {
@@ -32,7 +38,338 @@ void checkTriangles(const std::vector<std::array<int, 3>>& triangles,
   }
 }
 
+// Per source triangle, its texture chart (a representative triangle): the
+// components of the triangles joined across edges whose two vertices have
+// equal corner values on both sides.
+std::vector<int> textureCharts(const std::vector<std::array<int, 3>>& triangles,
+  const std::vector<Eigen::Vector2d>& cornerValues)
+{
+  std::vector<int> parent(triangles.size());
+  std::iota(parent.begin(), parent.end(), 0);
+  auto find = [&parent](int t)
+  {
+    while (parent[t] != t)
+    {
+      parent[t] = parent[parent[t]];
+      t = parent[t];
+    }
+    return t;
+  };
+  // Undirected edge -> the first triangle seen with it.
+  std::unordered_map<std::uint64_t, int> edges;
+  edges.reserve(3 * triangles.size());
+  for (int t = 0; t < static_cast<int>(triangles.size()); ++t)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      const int a = triangles[t][k], b = triangles[t][(k + 1) % 3];
+      const std::uint64_t key = (static_cast<std::uint64_t>(std::min(a, b)) << 32) |
+        static_cast<std::uint32_t>(std::max(a, b));
+      const auto found = edges.emplace(key, t);
+      if (found.second)
+      {
+        continue;
+      }
+      const int u = found.first->second;
+      // The cornerValues entries of vertex `v` in triangle `s`.
+      auto value = [&](int s, int v) -> const Eigen::Vector2d&
+      {
+        const int c = triangles[s][0] == v ? 0 : (triangles[s][1] == v ? 1 : 2);
+        return cornerValues[3 * static_cast<std::size_t>(s) + c];
+      };
+      if (value(t, a) == value(u, a) && value(t, b) == value(u, b))
+      {
+        parent[find(t)] = find(u);
+      }
+    }
+  }
+  for (int t = 0; t < static_cast<int>(triangles.size()); ++t)
+  {
+    parent[t] = find(t);
+  }
+  return parent;
+}
+
+// The triangles around each vertex (compressed rows).
+class VertexTriangles
+{
+public:
+  VertexTriangles(const std::vector<std::array<int, 3>>& triangles, std::size_t vertices)
+    : Offsets(vertices + 1, 0)
+  {
+    for (const auto& t : triangles)
+    {
+      for (int v : t)
+      {
+        ++this->Offsets[v + 1];
+      }
+    }
+    for (std::size_t v = 0; v < vertices; ++v)
+    {
+      this->Offsets[v + 1] += this->Offsets[v];
+    }
+    this->Triangles.resize(this->Offsets.back());
+    std::vector<int> next(this->Offsets.begin(), this->Offsets.end() - 1);
+    for (int t = 0; t < static_cast<int>(triangles.size()); ++t)
+    {
+      for (int v : triangles[t])
+      {
+        this->Triangles[next[v]++] = t;
+      }
+    }
+  }
+
+  struct Range
+  {
+    const int* first;
+    const int* last;
+    const int* begin() const { return this->first; }
+    const int* end() const { return this->last; }
+  };
+  Range of(int v) const
+  {
+    return { this->Triangles.data() + this->Offsets[v],
+      this->Triangles.data() + this->Offsets[v + 1] };
+  }
+
+private:
+  std::vector<int> Offsets;
+  std::vector<int> Triangles;
+};
+
+// The value the affine map of source triangle `s` (its corner values) gives
+// to `x` projected onto the triangle's plane; `fallback` when s is degenerate.
+Eigen::Vector2d extrapolateCornerValues(const std::vector<Eigen::Vector3d>& points,
+  const std::array<int, 3>& s,
+  const Eigen::Vector2d* values,
+  const Eigen::Vector3d& x,
+  const Eigen::Vector2d& fallback)
+{
+  const Eigen::Vector3d e1 = points[s[1]] - points[s[0]], e2 = points[s[2]] - points[s[0]];
+  const Eigen::Vector3d d = x - points[s[0]];
+  const double a = e1.dot(e1), b = e1.dot(e2), c = e2.dot(e2);
+  const double det = a * c - b * b;
+  if (!(det > 1e-24 * a * c))
+  {
+    return fallback;
+  }
+  const double w1 = (c * e1.dot(d) - b * e2.dot(d)) / det;
+  const double w2 = (a * e2.dot(d) - b * e1.dot(d)) / det;
+  return values[0] + w1 * (values[1] - values[0]) + w2 * (values[2] - values[0]);
+}
+
 } // namespace
+
+std::vector<Eigen::Vector2d> transferCornerValues(const std::vector<Eigen::Vector3d>& sourcePoints,
+  const std::vector<std::array<int, 3>>& sourceTriangles,
+  const std::vector<Eigen::Vector2d>& cornerValues,
+  const std::vector<std::array<int, 3>>& triangles,
+  const std::vector<SurfacePoint>& points)
+{
+  checkTriangles(sourceTriangles, sourcePoints.size(), "the source");
+  checkTriangles(triangles, points.size(), "the mesh");
+  if (cornerValues.size() != 3 * sourceTriangles.size())
+  {
+    throw std::invalid_argument("corner values: " + std::to_string(cornerValues.size()) +
+      " for " + std::to_string(sourceTriangles.size()) + " source triangles");
+  }
+  for (const SurfacePoint& p : points)
+  {
+    if (p.triangle < 0 || static_cast<std::size_t>(p.triangle) >= sourceTriangles.size())
+    {
+      throw std::invalid_argument(
+        "a point lies in source triangle " + std::to_string(p.triangle) + " of " +
+        std::to_string(sourceTriangles.size()));
+    }
+  }
+  const std::vector<int> chart = textureCharts(sourceTriangles, cornerValues);
+  const VertexTriangles around(sourceTriangles, sourcePoints.size());
+  // The triangle of chart `home` whose affine map best continues the chart
+  // to x, the position of point p: the one nearest to x among the triangles
+  // around p's triangle's corners (where p lies just across a seam), else
+  // the triangle of the home corner nearest to x.
+  auto homeTriangleNear = [&](const SurfacePoint& p,
+                            const Eigen::Vector3d& x,
+                            int home,
+                            const std::array<const SurfacePoint*, 3>& corners,
+                            const std::array<int, 3>& charts,
+                            const std::array<Eigen::Vector3d, 3>& positions)
+  {
+    int best = -1;
+    double nearest = 0.0;
+    auto consider = [&](int s)
+    {
+      const std::array<int, 3>& v = sourceTriangles[s];
+      const double d =
+        ((sourcePoints[v[0]] + sourcePoints[v[1]] + sourcePoints[v[2]]) / 3.0 - x).squaredNorm();
+      if (best < 0 || d < nearest)
+      {
+        best = s;
+        nearest = d;
+      }
+    };
+    for (int v : sourceTriangles[p.triangle])
+    {
+      for (int s : around.of(v))
+      {
+        if (chart[s] == home)
+        {
+          consider(s);
+        }
+      }
+    }
+    if (best >= 0)
+    {
+      return best;
+    }
+    for (int j = 0; j < 3; ++j)
+    {
+      if (charts[j] == home &&
+        (best < 0 || (positions[j] - x).squaredNorm() < nearest))
+      {
+        best = corners[j]->triangle;
+        nearest = (positions[j] - x).squaredNorm();
+      }
+    }
+    return best;
+  };
+  // Value `value` of point p (at x, in another chart than `home`) carried
+  // into chart `home` across the seam edge between the two charts nearest to
+  // x among the edges at p's triangle's corners: the similarity (a mirror
+  // too, where the charts' orientations differ) that takes the edge's two
+  // values on p's side to those on the home side: exact on the seam, and the
+  // charts' own scale nearby. False (value untouched) when no such edge is
+  // there: p lies deeper in its chart.
+  auto acrossSeam = [&](const SurfacePoint& p, const Eigen::Vector3d& x, int home,
+                      Eigen::Vector2d& value)
+  {
+    using Complex = std::complex<double>;
+    auto at = [&](int s, int v)
+    {
+      const std::array<int, 3>& t = sourceTriangles[s];
+      const Eigen::Vector2d& c =
+        cornerValues[3 * static_cast<std::size_t>(s) + (t[0] == v ? 0 : (t[1] == v ? 1 : 2))];
+      return Complex(c.x(), c.y());
+    };
+    auto signedArea = [&](int s)
+    {
+      const std::array<int, 3>& t = sourceTriangles[s];
+      const Complex e1 = at(s, t[1]) - at(s, t[0]), e2 = at(s, t[2]) - at(s, t[0]);
+      return std::imag(std::conj(e1) * e2);
+    };
+    const int side = chart[p.triangle];
+    bool found = false;
+    double nearest = 0.0;
+    Complex carried;
+    const Complex z(value.x(), value.y());
+    for (int a : sourceTriangles[p.triangle])
+    {
+      for (int u : around.of(a))
+      {
+        if (chart[u] != home)
+        {
+          continue;
+        }
+        for (int w : around.of(a))
+        {
+          if (chart[w] != side)
+          {
+            continue;
+          }
+          for (int b : sourceTriangles[w])
+          {
+            const auto& tu = sourceTriangles[u];
+            if (b == a || (tu[0] != b && tu[1] != b && tu[2] != b))
+            {
+              continue;
+            }
+            const double d = ((sourcePoints[a] + sourcePoints[b]) / 2.0 - x).squaredNorm();
+            const Complex wa = at(w, a), wb = at(w, b), ua = at(u, a), ub = at(u, b);
+            if ((found && d >= nearest) || wb == wa)
+            {
+              continue;
+            }
+            const bool mirrored = (signedArea(u) > 0) != (signedArea(w) > 0);
+            carried = mirrored ? ua + (ub - ua) / std::conj(wb - wa) * std::conj(z - wa)
+                               : ua + (ub - ua) / (wb - wa) * (z - wa);
+            found = true;
+            nearest = d;
+          }
+        }
+      }
+    }
+    if (found)
+    {
+      value = Eigen::Vector2d(carried.real(), carried.imag());
+    }
+    return found;
+  };
+  std::vector<Eigen::Vector2d> result(3 * triangles.size());
+  for (std::size_t t = 0; t < triangles.size(); ++t)
+  {
+    std::array<const SurfacePoint*, 3> corner;
+    std::array<int, 3> charts;
+    for (int k = 0; k < 3; ++k)
+    {
+      corner[k] = &points[triangles[t][k]];
+      charts[k] = chart[corner[k]->triangle];
+      result[3 * t + k] = evaluateCornerValues(cornerValues, *corner[k]);
+    }
+    if (charts[0] == charts[1] && charts[1] == charts[2])
+    {
+      continue;
+    }
+    std::array<Eigen::Vector3d, 3> x;
+    for (int k = 0; k < 3; ++k)
+    {
+      x[k] = evaluateSurfacePoint(sourcePoints, sourceTriangles, *corner[k]);
+    }
+    // The triangle's values in chart `home`: the corners of other charts
+    // carried into it.
+    auto inChart = [&](int home)
+    {
+      std::array<Eigen::Vector2d, 3> values;
+      for (int k = 0; k < 3; ++k)
+      {
+        values[k] = result[3 * t + k];
+        if (charts[k] != home && !acrossSeam(*corner[k], x[k], home, values[k]))
+        {
+          const int s = homeTriangleNear(*corner[k], x[k], home, corner, charts, x);
+          values[k] = extrapolateCornerValues(sourcePoints, sourceTriangles[s],
+            &cornerValues[3 * static_cast<std::size_t>(s)], x[k], values[k]);
+        }
+      }
+      return values;
+    };
+    // Of the corners' charts, the one the triangle is least stretched in.
+    double best = std::numeric_limits<double>::infinity();
+    std::array<Eigen::Vector2d, 3> chosen;
+    for (int k = 0; k < 3; ++k)
+    {
+      if (k > 0 && (charts[k] == charts[0] || (k == 2 && charts[2] == charts[1])))
+      {
+        continue;
+      }
+      const std::array<Eigen::Vector2d, 3> values = inChart(charts[k]);
+      const Eigen::Vector2d lo = values[0].cwiseMin(values[1]).cwiseMin(values[2]);
+      const Eigen::Vector2d hi = values[0].cwiseMax(values[1]).cwiseMax(values[2]);
+      const double span = (hi - lo).maxCoeff();
+      if (span < best)
+      {
+        best = span;
+        chosen = values;
+      }
+    }
+    if (best < std::numeric_limits<double>::infinity())
+    {
+      for (int k = 0; k < 3; ++k)
+      {
+        result[3 * t + k] = chosen[k];
+      }
+    }
+  }
+  return result;
+}
 
 SurfacePoint locateSurfacePoint(const SphereLocator& locator,
   const std::vector<Eigen::Vector3d>& sphere,

@@ -71,4 +71,28 @@ Eigen::Vector3d evaluateSurfacePoint(const std::vector<Eigen::Vector3d>& points,
 Eigen::Vector2d evaluateCornerValues(const std::vector<Eigen::Vector2d>& cornerValues,
   const SurfacePoint& p);
 
+/// Per-corner values (texture coordinates) of a mesh whose vertices lie on a
+/// source mesh: three per triangle of `triangles`, whose vertex v lies at
+/// `points[v]` on the source (`sourcePoints`, `sourceTriangles`, with
+/// `cornerValues` three per source triangle).
+///
+/// The source's values split it into charts: triangles joined across an edge
+/// whose two vertices have the same values on both sides (exactly equal, as a
+/// shared OBJ `vt` index gives). A triangle whose corners lie in one chart gets
+/// each corner's value evaluated where it lies, so triangles of one chart
+/// agree at shared vertices. A triangle that straddles a seam takes the chart
+/// of most of its corners (of its first corner when all differ), and each
+/// corner outside that chart gets the value the chart's affine map would give
+/// it: the corner's position projected onto the plane of a triangle of that
+/// chart holding another corner of the triangle, with that triangle's values
+/// extrapolated. So no triangle spans a seam in texture space (where a value
+/// per vertex stretches it across the whole atlas); a seam-straddling
+/// triangle shows the strip of texture just beyond its chart's border.
+/// Throws std::invalid_argument when sizes or indices do not fit together.
+std::vector<Eigen::Vector2d> transferCornerValues(const std::vector<Eigen::Vector3d>& sourcePoints,
+  const std::vector<std::array<int, 3>>& sourceTriangles,
+  const std::vector<Eigen::Vector2d>& cornerValues,
+  const std::vector<std::array<int, 3>>& triangles,
+  const std::vector<SurfacePoint>& points);
+
 } // namespace surfacemaps

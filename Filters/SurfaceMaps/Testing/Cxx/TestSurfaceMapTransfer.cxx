@@ -5,9 +5,11 @@
 #include "vtkSurfaceMapTransfer.h"
 #include "vtkSurfaceMapsConversion.h"
 #include "vtkSurfaceMeshReader.h"
+#include "vtkSurfaceTextureSeamSplitter.h"
 
 #include "geometry/SphereLocator.h"
 #include "geometry/SphericalTriangulation.h"
+#include "map/MapTransfer.h"
 #include "mesh/Primitives.h"
 
 #include "vtkCallbackCommand.h"
@@ -18,6 +20,7 @@
 #include "vtkDoubleArray.h"
 #include "vtkFieldData.h"
 #include "vtkFloatArray.h"
+#include "vtkIdTypeArray.h"
 #include "vtkIntArray.h"
 #include "vtkNew.h"
 #include "vtkPointData.h"
@@ -31,6 +34,7 @@
 #include <algorithm>
 #include <cmath>
 #include <functional>
+#include <map>
 #include <random>
 #include <set>
 #include <sstream>
@@ -353,6 +357,68 @@ TEST(SurfaceMapTransfer, InputEmbeddingsAreInTheFrameOfTheCommonTriangulation)
   }
 }
 
+// The largest extent, in u or v, of one triangle's texture coordinates.
+double textureSpan(const double corners[6])
+{
+  double span = 0.0;
+  for (int d = 0; d < 2; ++d)
+  {
+    const double lo = std::min({ corners[d], corners[2 + d], corners[4 + d] });
+    const double hi = std::max({ corners[d], corners[2 + d], corners[4 + d] });
+    span = std::max(span, hi - lo);
+  }
+  return span;
+}
+
+double largestTextureSpan(vtkDataArray* cornerTCoords)
+{
+  double span = 0.0;
+  for (vtkIdType c = 0; c < cornerTCoords->GetNumberOfTuples(); ++c)
+  {
+    double t[6];
+    cornerTCoords->GetTuple(c, t);
+    span = std::max(span, textureSpan(t));
+  }
+  return span;
+}
+
+// Per corner, no triangle of `mesh` spans a texture seam, where one value per
+// point stretches triangles across spot's atlas. (The meshes here are coarser
+// than spot, so their triangles may span more than one of spot's; the bound
+// of the issue, the largest span of a source triangle, is checked on a finer
+// mesh below.)
+void expectNoTriangleSpansASeam(vtkPolyData* mesh, const char* what)
+{
+  vtkDataArray* corners = mesh->GetCellData()->GetArray("CornerTCoords");
+  ASSERT_NE(corners, nullptr) << what;
+  ASSERT_EQ(corners->GetNumberOfComponents(), 6) << what;
+  ASSERT_EQ(corners->GetNumberOfTuples(), mesh->GetNumberOfPolys()) << what;
+  vtkDataArray* perPoint = mesh->GetPointData()->GetTCoords();
+  ASSERT_NE(perPoint, nullptr) << what;
+  const auto tri = triangles(mesh);
+  double perCorner = 0.0, stretched = 0.0;
+  int straddlers = 0;
+  for (std::size_t t = 0; t < tri.size(); ++t)
+  {
+    double c[6], p[6];
+    corners->GetTuple(static_cast<vtkIdType>(t), c);
+    bool samePerPoint = true;
+    for (int k = 0; k < 3; ++k)
+    {
+      p[2 * k] = perPoint->GetComponent(tri[t][k], 0);
+      p[2 * k + 1] = perPoint->GetComponent(tri[t][k], 1);
+      samePerPoint = samePerPoint && p[2 * k] == c[2 * k] && p[2 * k + 1] == c[2 * k + 1];
+    }
+    perCorner = std::max(perCorner, textureSpan(c));
+    stretched = std::max(stretched, textureSpan(p));
+    straddlers += !samePerPoint;
+  }
+  EXPECT_GT(stretched, 0.5) << what; // across the atlas
+  EXPECT_LT(perCorner, 0.2 * stretched) << what;
+  EXPECT_GT(straddlers, 0) << what; // only triangles at seams differ
+  EXPECT_LT(straddlers, static_cast<int>(tri.size()) / 3) << what;
+}
+
 // The issue's test: per-corner texture coordinates transferred through the
 // map land where the map says, evaluated in the containing source triangle.
 TEST(SurfaceMapTransfer, CornerTexCoordsLandWhereTheMapSays)
@@ -419,6 +485,146 @@ TEST(SurfaceMapTransfer, CornerTexCoordsLandWhereTheMapSays)
     ASSERT_EQ(transferred->GetComponent(v, 0), tcoords->GetComponent(v, 0));
     ASSERT_EQ(transferred->GetComponent(v, 1), tcoords->GetComponent(v, 1));
   }
+
+  // Per corner, no output triangle spans a seam: T on spot, the ellipsoid's
+  // triangles on spot, and the transfer's output.
+  expectNoTriangleSpansASeam(m.common[1], "T on spot");
+  expectNoTriangleSpansASeam(onSpot, "the ellipsoid on spot");
+  expectNoTriangleSpansASeam(out, "the transfer's output");
+  EXPECT_EQ(m.mapped[0]->GetCellData()->GetArray("CornerTCoords"), nullptr);
+}
+
+// Spot subdivided once (each triangle into four), its vertices given as
+// points of spot whose triangle is chosen arbitrarily among those around them
+// (as point location does at seams): every new triangle lies inside one
+// triangle of spot, so its corner values are that triangle's, interpolated,
+// whichever chart its corners were located in.
+TEST(SurfaceMapTransfer, CornerValuesOfASubdivisionAreTheirParentTriangles)
+{
+  vtkSmartPointer<vtkPolyData> spot = read("spot.obj");
+  const std::vector<Eigen::Vector3d> spotPoints = points(spot);
+  const auto spotTriangles = triangles(spot);
+  vtkDataArray* cornerTCoords = spot->GetCellData()->GetArray("CornerTCoords");
+  std::vector<Eigen::Vector2d> values(3 * spotTriangles.size());
+  for (std::size_t t = 0; t < spotTriangles.size(); ++t)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      values[3 * t + k] = Eigen::Vector2d(cornerTCoords->GetComponent(static_cast<vtkIdType>(t), 2 * k),
+        cornerTCoords->GetComponent(static_cast<vtkIdType>(t), 2 * k + 1));
+    }
+  }
+  // Vertices: spot's, in the last triangle around each; edge midpoints, in
+  // the last triangle along each edge.
+  std::vector<surfacemaps::SurfacePoint> located(spotPoints.size());
+  std::map<std::pair<int, int>, int> midpoint;
+  auto corner = [](int k) { Eigen::Vector3d b = Eigen::Vector3d::Zero(); b[k] = 1.0; return b; };
+  for (int t = 0; t < static_cast<int>(spotTriangles.size()); ++t)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      located[spotTriangles[t][k]] = { t, corner(k) };
+      const int a = spotTriangles[t][k], b = spotTriangles[t][(k + 1) % 3];
+      const auto key = std::minmax(a, b);
+      auto [it, added] = midpoint.emplace(key, static_cast<int>(located.size()));
+      if (added)
+      {
+        located.emplace_back();
+      }
+      located[it->second] = { t, (corner(k) + corner((k + 1) % 3)) / 2.0 };
+    }
+  }
+  std::vector<std::array<int, 3>> fine;
+  std::vector<Eigen::Vector2d> expected;
+  for (std::size_t t = 0; t < spotTriangles.size(); ++t)
+  {
+    const auto& v = spotTriangles[t];
+    const Eigen::Vector2d* c = &values[3 * t];
+    int m[3];
+    Eigen::Vector2d mid[3];
+    for (int k = 0; k < 3; ++k)
+    {
+      m[k] = midpoint.at(std::minmax(v[k], v[(k + 1) % 3]));
+      mid[k] = (c[k] + c[(k + 1) % 3]) / 2.0;
+    }
+    fine.push_back({ v[0], m[0], m[2] });
+    fine.push_back({ m[0], v[1], m[1] });
+    fine.push_back({ m[2], m[1], v[2] });
+    fine.push_back({ m[0], m[1], m[2] });
+    for (const Eigen::Vector2d& e : { c[0], mid[0], mid[2], mid[0], c[1], mid[1], mid[2], mid[1],
+           c[2], mid[0], mid[1], mid[2] })
+    {
+      expected.push_back(e);
+    }
+  }
+  const std::vector<Eigen::Vector2d> result =
+    surfacemaps::transferCornerValues(spotPoints, spotTriangles, values, fine, located);
+  ASSERT_EQ(result.size(), expected.size());
+  const double limit = largestTextureSpan(cornerTCoords);
+  int exact = 0, perPointDiffers = 0;
+  for (std::size_t t = 0; t < fine.size(); ++t)
+  {
+    double c[6], p[6];
+    bool same = true;
+    for (int k = 0; k < 3; ++k)
+    {
+      const Eigen::Vector2d own = surfacemaps::evaluateCornerValues(values, located[fine[t][k]]);
+      c[2 * k] = result[3 * t + k].x();
+      c[2 * k + 1] = result[3 * t + k].y();
+      p[2 * k] = own.x();
+      p[2 * k + 1] = own.y();
+      same = same && (result[3 * t + k] - expected[3 * t + k]).norm() < 1e-9;
+      perPointDiffers += (own - expected[3 * t + k]).norm() > 1e-9;
+    }
+    EXPECT_LE(textureSpan(c), limit) << "triangle " << t;
+    exact += same;
+  }
+  EXPECT_GT(perPointDiffers, 1000); // the located points' own values break at seams
+  // Most get their parent's values exactly; the others are expressed in the
+  // chart of a neighbour of the parent (where that stretches them least).
+  EXPECT_GE(exact, 0.95 * fine.size());
+}
+
+// Splitting spot's seams: every triangle corner's point carries the corner's
+// own texture coordinates, each point copies an input point.
+TEST(SurfaceMapTransfer, SeamSplitterGivesEveryCornerItsOwnPoint)
+{
+  vtkSmartPointer<vtkPolyData> spot = read("spot.obj");
+  vtkNew<vtkSurfaceTextureSeamSplitter> splitter;
+  splitter->SetInputData(spot);
+  splitter->Update();
+  vtkPolyData* out = splitter->GetOutput();
+  ASSERT_EQ(out->GetNumberOfPolys(), spot->GetNumberOfPolys());
+  EXPECT_GT(out->GetNumberOfPoints(), spot->GetNumberOfPoints()); // spot has seams
+  auto* original = vtkIdTypeArray::SafeDownCast(out->GetPointData()->GetArray("OriginalPointId"));
+  ASSERT_NE(original, nullptr);
+  vtkDataArray* tcoords = out->GetPointData()->GetTCoords();
+  ASSERT_NE(tcoords, nullptr);
+  vtkDataArray* corners = spot->GetCellData()->GetArray("CornerTCoords");
+  const auto before = triangles(spot), after = triangles(out);
+  std::set<std::pair<vtkIdType, std::pair<double, double>>> distinct;
+  for (std::size_t t = 0; t < before.size(); ++t)
+  {
+    double c[6];
+    corners->GetTuple(static_cast<vtkIdType>(t), c);
+    for (int k = 0; k < 3; ++k)
+    {
+      const int p = after[t][k];
+      ASSERT_EQ(original->GetValue(p), before[t][k]) << "triangle " << t;
+      ASSERT_EQ(tcoords->GetComponent(p, 0), c[2 * k]) << "triangle " << t;
+      ASSERT_EQ(tcoords->GetComponent(p, 1), c[2 * k + 1]) << "triangle " << t;
+      ASSERT_EQ(point(out, p), point(spot, before[t][k]));
+      distinct.insert({ before[t][k], { c[2 * k], c[2 * k + 1] } });
+    }
+  }
+  // One point per distinct (vertex, corner value): no more copies than needed.
+  EXPECT_EQ(static_cast<std::size_t>(out->GetNumberOfPoints()), distinct.size());
+  // Without per-corner coordinates the mesh passes through.
+  vtkSmartPointer<vtkPolyData> plain = read("ellipsoid.obj");
+  splitter->SetInputData(plain);
+  splitter->Update();
+  EXPECT_EQ(splitter->GetOutput()->GetNumberOfPoints(), plain->GetNumberOfPoints());
+  EXPECT_NE(splitter->GetOutput()->GetPointData()->GetArray("OriginalPointId"), nullptr);
 }
 
 TEST(SurfaceMapTransfer, ChosenArraysAreInterpolatedWithTheirRoles)
