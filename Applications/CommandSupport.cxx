@@ -4,6 +4,9 @@
 
 #include "vtkAlgorithm.h"
 #include "vtkCallbackCommand.h"
+#include "vtkCellArray.h"
+#include "vtkCellArrayIterator.h"
+#include "vtkCellData.h"
 #include "vtkCommand.h"
 #include "vtkDataArray.h"
 #include "vtkFieldData.h"
@@ -24,6 +27,8 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <array>
+#include <cctype>
 #include <atomic>
 #include <csignal>
 
@@ -37,6 +42,7 @@
 #include <iomanip>
 #include <iostream>
 #include <limits>
+#include <map>
 #include <sstream>
 #include <stdexcept>
 #include <system_error>
@@ -757,6 +763,86 @@ void writePolyDataAtomically(vtkPolyData* data, const std::string& path)
         : errors.messages().front());
   }
   writeFileAtomically(path, writer->GetOutputString());
+}
+
+void writeObjAtomically(vtkPolyData* data, const std::string& path)
+{
+  std::ostringstream obj;
+  obj.precision(17);
+  obj << "# written by surfacemap\n";
+  for (vtkIdType p = 0; p < data->GetNumberOfPoints(); ++p)
+  {
+    const double* x = data->GetPoint(p);
+    obj << "v " << x[0] << ' ' << x[1] << ' ' << x[2] << '\n';
+  }
+  vtkDataArray* corners = data->GetCellData()->GetArray("CornerTCoords");
+  if (corners && corners->GetNumberOfComponents() != 6)
+  {
+    corners = nullptr;
+  }
+  // One vt per distinct value, numbered in order of appearance.
+  std::map<std::pair<double, double>, long long> texture;
+  std::vector<std::array<long long, 3>> faceTexture;
+  std::vector<std::array<vtkIdType, 3>> faces;
+  auto cells = vtk::TakeSmartPointer(data->GetPolys()->NewIterator());
+  vtkIdType cell = data->GetNumberOfVerts() + data->GetNumberOfLines();
+  for (cells->GoToFirstCell(); !cells->IsDoneWithTraversal(); cells->GoToNextCell(), ++cell)
+  {
+    vtkIdType size;
+    const vtkIdType* ids;
+    cells->GetCurrentCell(size, ids);
+    if (size != 3)
+    {
+      writeFailed(path, "polygon " + std::to_string(cells->GetCurrentCellId()) + " is not a triangle");
+    }
+    faces.push_back({ ids[0], ids[1], ids[2] });
+    if (corners)
+    {
+      double t[6];
+      corners->GetTuple(cell, t);
+      std::array<long long, 3> vt;
+      for (int k = 0; k < 3; ++k)
+      {
+        const auto added = texture.emplace(std::make_pair(t[2 * k], t[2 * k + 1]),
+          static_cast<long long>(texture.size()) + 1);
+        if (added.second)
+        {
+          obj << "vt " << t[2 * k] << ' ' << t[2 * k + 1] << '\n';
+        }
+        vt[k] = added.first->second;
+      }
+      faceTexture.push_back(vt);
+    }
+  }
+  for (std::size_t f = 0; f < faces.size(); ++f)
+  {
+    obj << 'f';
+    for (int k = 0; k < 3; ++k)
+    {
+      obj << ' ' << faces[f][k] + 1;
+      if (corners)
+      {
+        obj << '/' << faceTexture[f][k];
+      }
+    }
+    obj << '\n';
+  }
+  writeFileAtomically(path, obj.str());
+}
+
+void writeMeshAtomically(vtkPolyData* data, const std::string& path)
+{
+  std::string extension = std::filesystem::path(path).extension().string();
+  std::transform(extension.begin(), extension.end(), extension.begin(),
+    [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  if (extension == ".obj")
+  {
+    writeObjAtomically(data, path);
+  }
+  else
+  {
+    writePolyDataAtomically(data, path);
+  }
 }
 
 vtkSmartPointer<vtkPolyData> measureMap(vtkPolyData* source,

@@ -223,4 +223,15 @@ void writeFileAtomically(const std::string& path, const std::string& content);
 /// a half-written file. Throws std::runtime_error naming the file on failure.
 void writePolyDataAtomically(vtkPolyData* data, const std::string& path);
 
+/// Writes the triangles of `data` as Wavefront OBJ through
+/// writeFileAtomically: `v` per point, and, when `data` has the cell array
+/// "CornerTCoords" (6 components), one `vt` per distinct corner value and
+/// faces `f v/vt`, so texture seams stay exact; otherwise faces `f v`. OBJ
+/// holds no other data: point and cell arrays are not written.
+void writeObjAtomically(vtkPolyData* data, const std::string& path);
+
+/// writeObjAtomically for a path ending in .obj (any case), else
+/// writePolyDataAtomically.
+void writeMeshAtomically(vtkPolyData* data, const std::string& path);
+
 } // namespace surfacemap

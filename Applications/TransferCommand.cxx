@@ -5,6 +5,7 @@
 #include "MapDirectory.h"
 
 #include "vtkSurfaceMapTransfer.h"
+#include "vtkSurfaceTextureSeamSplitter.h"
 
 #include "vtkAbstractArray.h"
 #include "vtkCellArray.h"
@@ -32,7 +33,8 @@ namespace
 const char* const TransferHelpIntro =
   "usage: surfacemap transfer MAPDIR --from I --to J [--arrays NAME ...]\n"
   "                           [--source-data MESH] [--categorical NAME]\n"
-  "                           [--continuous NAME] -o OUT.vtp\n"
+  "                           [--continuous NAME] [--split-seams]\n"
+  "                           -o OUT.vtp|OUT.obj\n"
   "\n"
   "Carries the point data of input I of a map onto the vertices of input J\n"
   "through the exact map that 'surfacemap map' computed (no optimisation runs):\n"
@@ -52,6 +54,9 @@ const char* const TransferHelpIntro =
   "  SourceBarycentric  its barycentric coordinates there\n"
   "  TCoords            I's per-corner texture coordinates (OBJ 'vt')\n"
   "                     evaluated there, or I's point texture coordinates\n"
+  "and, when input I has per-corner texture coordinates, the cell array\n"
+  "  CornerTCoords      per triangle corner, so that no triangle spans a\n"
+  "                     texture seam (one value per vertex cannot hold a seam)\n"
   "\n"
   "  --from I           the input whose data is carried (0-based, in the order\n"
   "                     given to 'surfacemap map')\n"
@@ -63,7 +68,14 @@ const char* const TransferHelpIntro =
   "                     connectivity (the same vertex count and the same\n"
   "                     triangles in the same order, as a copy of input I with\n"
   "                     new arrays has), else exit code 2 naming the mismatch\n"
-  "  -o, --output FILE  the output .vtp (checked for writing before computing)\n";
+  "  --split-seams      give every distinct corner texture coordinate its own\n"
+  "                     point (copies of J's vertices along the seams, with\n"
+  "                     the point array OriginalPointId), so that TCoords\n"
+  "                     renders the texture without seam artifacts\n"
+  "  -o, --output FILE  the output (checked for writing before computing):\n"
+  "                     .vtp with every array above; .obj with the points,\n"
+  "                     the triangles and, with CornerTCoords, 'vt' per corner\n"
+  "                     (OBJ holds no other data)\n";
 
 const char* const TransferExitCodes =
   "\n"
@@ -103,6 +115,7 @@ struct TransferArguments
 {
   std::string directory, output, sourceData;
   int from = -1, to = -1;
+  bool splitSeams = false;
   std::vector<std::string> arrays;
 };
 
@@ -129,6 +142,10 @@ TransferArguments parseArguments(const std::vector<std::string>& args,
     else if (a == "-o" || a == "--output")
     {
       parsed.output = optionValue(args, i);
+    }
+    else if (a == "--split-seams")
+    {
+      parsed.splitSeams = true;
     }
     else if (a == "--source-data")
     {
@@ -418,8 +435,15 @@ int runTransfer(const std::vector<std::string>& args)
   {
     return computed;
   }
-  vtkPolyData* result = transfer->GetOutput();
-  if (!succeeds([&] { writePolyDataAtomically(result, arguments.output); }))
+  vtkSmartPointer<vtkPolyData> result = transfer->GetOutput();
+  if (arguments.splitSeams)
+  {
+    vtkNew<vtkSurfaceTextureSeamSplitter> splitter;
+    splitter->SetInputData(result);
+    splitter->Update();
+    result = splitter->GetOutput();
+  }
+  if (!succeeds([&] { writeMeshAtomically(result, arguments.output); }))
   {
     return ExitBadInput;
   }

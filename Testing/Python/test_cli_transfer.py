@@ -126,6 +126,42 @@ def test_coordinates_of_input_0_land_on_input_0(map_dir, tmp_path):
         assert tcoords.GetTuple2(v) == pytest.approx((t / 1000.0, 0.5 * w[1] + w[2]), abs=1e-12)
 
 
+def corner_tcoords(mesh):
+    array = mesh.GetCellData().GetArray("CornerTCoords")
+    assert array is not None and array.GetNumberOfComponents() == 6
+    return [array.GetTuple(c) for c in range(array.GetNumberOfTuples())]
+
+
+def test_corner_texture_coordinates_as_obj_and_split(map_dir, tmp_path):
+    import surfacemaps
+    vtp, obj, split = tmp_path / "on_blob.vtp", tmp_path / "on_blob.obj", tmp_path / "split.vtp"
+    for out, extra in ((vtp, ()), (obj, ()), (split, ("--split-seams",))):
+        r = run("transfer", map_dir, "--from", "0", "--to", "1", *extra, "-o", out)
+        assert r.returncode == 0, r.stderr
+    result = read_vtp(vtp)
+    corners = corner_tcoords(result)
+    assert len(corners) == result.GetNumberOfPolys() == 1280
+    # The OBJ holds the same points, triangles and per-corner coordinates ('vt' per corner).
+    text = obj.read_text()
+    assert text.count("\nv ") == 642 and text.count("\nf ") == 1280 and "\nvt " in text
+    back = surfacemaps.read_mesh(obj)
+    assert [back.GetPoint(v) for v in range(642)] == [result.GetPoint(v) for v in range(642)]
+    assert corner_tcoords(back) == corners
+    # Split: each corner's value on a point of its own, copies of the blob's vertices.
+    parted = read_vtp(split)
+    original = parted.GetPointData().GetArray("OriginalPointId")
+    tcoords = parted.GetPointData().GetTCoords()
+    assert parted.GetNumberOfPoints() > 642 and parted.GetNumberOfPolys() == 1280
+    for c in range(1280):
+        ids = parted.GetCell(c).GetPointIds()
+        before = result.GetCell(c).GetPointIds()
+        for k in range(3):
+            p = ids.GetId(k)
+            assert int(original.GetTuple1(p)) == before.GetId(k)
+            assert parted.GetPoint(p) == result.GetPoint(before.GetId(k))
+            assert tcoords.GetTuple2(p) == corners[c][2 * k:2 * k + 2]
+
+
 def test_transfer_is_the_map_of_the_mapped_outputs(map_dir, tmp_path):
     # mapped_1 is input 0 carried onto input 1 by the exact map: carrying input 1's coordinates
     # back onto input 0's vertices gives the same points.
