@@ -336,6 +336,18 @@ int main(int argc, char* argv[])
     check(embedded && embedded->GetPointData()->GetArray("SpherePosition"),
       "the embedding has SpherePosition");
 
+    // Spot's per-corner texture coordinates split at the seams.
+    auto spot = read(pipeline, data + "spot.obj", "");
+    auto splitter = pipeline.New("filters", "SurfaceTextureSeamSplitter");
+    vtkSMPropertyHelper(splitter, "Input").Set(spot, 0);
+    pipeline.Apply(splitter, "split");
+    splitter->UpdatePipeline();
+    auto* split = outputOf<vtkPolyData>(splitter);
+    auto* spotData = outputOf<vtkPolyData>(spot);
+    check(split && spotData && split->GetNumberOfPoints() > spotData->GetNumberOfPoints() &&
+        split->GetPointData()->GetArray("OriginalPointId") && split->GetPointData()->GetTCoords(),
+      "the seam splitter copies spot's seam vertices and sets TCoords");
+
     // The map of two surfaces, a short schedule: one composite output, one
     // certified block per input.
     auto map = pipeline.New("filters", "SurfaceMap");

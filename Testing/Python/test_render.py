@@ -62,3 +62,26 @@ def test_map_checkerboard_on_both_sides(tmp_path):
     r = render(out / "approximating_1.vtp", "--points-from", data("limbs.ply"), "-o", tmp_path / "x.png")
     assert r.returncode == 2 and "limbs.ply has 2562 points" in r.stderr
     assert not (tmp_path / "x.png").exists()
+
+
+def test_texture_pictures(tmp_path):
+    # Spot's per-corner coordinates, split at their seams, with the bundled checkerboard and
+    # with an image file; a mesh without texture coordinates is an error.
+    from vtkmodules.vtkIOImage import vtkPNGWriter
+    from surfacemaps.render import checkerboard_texture
+    writer = vtkPNGWriter()
+    writer.SetInputData(checkerboard_texture(squares=4, size=64))
+    writer.SetFileName(str(tmp_path / "image.png"))
+    writer.Write()
+    r = render(data("spot.obj"), "--texture", "-o", tmp_path / "checker.png")
+    assert r.returncode == 0, r.stderr
+    r = render(data("spot.obj"), "--texture", tmp_path / "image.png", "-o", tmp_path / "image_on_spot.png")
+    assert r.returncode == 0, r.stderr
+    for name in ("checker.png", "image_on_spot.png"):
+        assert (tmp_path / name).read_bytes()[:8] == PNG
+        assert distinct_colours(tmp_path / name) > 20, f"{name} looks empty"
+    r = render(data("ellipsoid.obj"), "--texture", "-o", tmp_path / "none.png")
+    assert r.returncode == 2 and "no texture coordinates" in r.stderr
+    r = render(data("spot.obj"), "--texture", tmp_path / "missing.png", "-o", tmp_path / "none.png")
+    assert r.returncode == 2 and "not an image file" in r.stderr
+    assert not (tmp_path / "none.png").exists()

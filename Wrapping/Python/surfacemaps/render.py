@@ -7,6 +7,12 @@ draws a checkerboard of the mesh's "SpherePosition" (or given) coordinates,
 so a map's effect on a regular pattern can be seen on any surface that
 carries the same coordinates. ``render_point_scalars(mesh, path, array, lo, hi)``
 is a heat map of a point array (e.g. a population's "StandardDeviation").
+``render_texture(mesh, path, image=None)`` draws the mesh textured by its
+texture coordinates (per corner, "CornerTCoords", split at the seams with
+vtkSurfaceTextureSeamSplitter; or the active point texture coordinates) with
+an image file, or with ``checkerboard_texture()``: the package's generated
+checkerboard, whose squares vary in hue with u and in brightness with v so that
+stretch, flips and seams show.
 
 Rendering needs a display; on a headless machine run the script under
 ``xvfb-run -a`` (Debian package xvfb, installed by .ci/install-deps.sh).
@@ -35,12 +41,15 @@ from vtkmodules.vtkRenderingCore import (vtkActor, vtkPolyDataMapper, vtkRendere
                                          vtkWindowToImageFilter)
 
 
-def _render(mesh, path, configure_mapper, size=(800, 600), azimuth=30.0, elevation=20.0, title=None, zoom=1.0):
+def _render(mesh, path, configure_mapper, size=(800, 600), azimuth=30.0, elevation=20.0, title=None, zoom=1.0,
+            texture=None):
     mapper = vtkPolyDataMapper()
     mapper.SetInputData(mesh)
     configure_mapper(mapper)
     actor = vtkActor()
     actor.SetMapper(mapper)
+    if texture is not None:
+        actor.SetTexture(texture)
     renderer = vtkRenderer()
     renderer.AddActor(actor)
     if title is not None:  # a colour legend of the mapper's lookup table
@@ -162,15 +171,82 @@ def render_checkerboard(mesh, path, coordinates="SpherePosition", squares=8, **v
     _render(copy, path, configure, **view)
 
 
+def checkerboard_texture(squares=16, size=512):
+    """A ``size`` x ``size`` RGB vtkImageData: ``squares`` x ``squares`` checks whose colour runs
+    through the hues along u and from dark to light along v, alternating with white."""
+    import colorsys
+    from vtkmodules.vtkCommonCore import vtkUnsignedCharArray
+    from vtkmodules.vtkCommonDataModel import vtkImageData
+    image = vtkImageData()
+    image.SetDimensions(size, size, 1)
+    colours = vtkUnsignedCharArray()
+    colours.SetName("Colours")
+    colours.SetNumberOfComponents(3)
+    colours.SetNumberOfTuples(size * size)
+    cell = size / squares
+    for y in range(size):
+        j = int(y / cell)
+        for x in range(size):
+            i = int(x / cell)
+            if (i + j) % 2:
+                rgb = (245, 245, 240)
+            else:
+                r, g, b = colorsys.hsv_to_rgb(i / squares, 0.75, 0.35 + 0.6 * j / max(squares - 1, 1))
+                rgb = (int(255 * r), int(255 * g), int(255 * b))
+            colours.SetTuple3(y * size + x, *rgb)
+    image.GetPointData().SetScalars(colours)
+    return image
+
+
+def _read_image(path):
+    from vtkmodules.vtkIOImage import vtkImageReader2Factory
+    reader = vtkImageReader2Factory.CreateImageReader2(str(path))
+    if reader is None or not os.path.isfile(str(path)):
+        raise ValueError(f"{path}: not an image file VTK can read (PNG, JPEG, BMP, TIFF, PNM)")
+    reader.SetFileName(str(path))
+    reader.Update()
+    return reader.GetOutput()
+
+
+def render_texture(mesh, path, image=None, squares=16, **view):
+    """PNG of `mesh` textured with `image` (a file name; None: checkerboard_texture(squares)).
+
+    Per-corner texture coordinates ("CornerTCoords", e.g. of an OBJ or of a transfer's output)
+    are split at their seams first, so no triangle is stretched across the texture; otherwise
+    the mesh's active point texture coordinates are used. ValueError when it has neither."""
+    from vtkmodules.vtkRenderingCore import vtkTexture
+    from . import vtkSurfaceTextureSeamSplitter
+    if mesh.GetCellData().GetArray("CornerTCoords") is not None:
+        splitter = vtkSurfaceTextureSeamSplitter()
+        splitter.SetInputData(mesh)
+        splitter.Update()
+        mesh = splitter.GetOutput()
+    if mesh.GetPointData().GetTCoords() is None:
+        raise ValueError("the mesh has no texture coordinates (neither CornerTCoords nor point TCoords)")
+    texture = vtkTexture()
+    texture.SetInputData(checkerboard_texture(squares) if image is None else _read_image(image))
+    texture.InterpolateOn()
+    texture.RepeatOff()
+    texture.EdgeClampOn()
+
+    def configure(mapper):
+        mapper.ScalarVisibilityOff()
+
+    _render(mesh, path, configure, texture=texture, **view)
+
+
 def main(argv=None):
     from . import read_mesh
 
     parser = argparse.ArgumentParser(prog="python3 -m surfacemaps.render",
-                                     description="Render a mesh to PNG: distortion heat map or checkerboard.")
+                                     description="Render a mesh to PNG: distortion heat map, checkerboard or texture.")
     parser.add_argument("mesh", help="mesh file (e.g. the output of vtkSurfaceMapEvaluation saved as .vtp)")
     parser.add_argument("-o", "--output", required=True, help="PNG file")
     parser.add_argument("--checkerboard", metavar="ARRAY", nargs="?", const="SpherePosition",
                         help="draw a checkerboard of this point array instead of the distortion")
+    parser.add_argument("--texture", metavar="IMAGE", nargs="?", const="",
+                        help="draw the mesh textured by its texture coordinates with IMAGE (PNG, JPEG, ...; "
+                             "without IMAGE: the package's checkerboard)")
     parser.add_argument("--max", type=float, default=3.0, help="distortion shown darkest (default 3)")
     parser.add_argument("--points-from", metavar="MESH",
                         help="draw at the points of MESH instead (same points in the same order), e.g. "
@@ -187,7 +263,9 @@ def main(argv=None):
             moved.ShallowCopy(mesh)
             moved.SetPoints(other.GetPoints())
             mesh = moved
-        if args.checkerboard:
+        if args.texture is not None:
+            render_texture(mesh, args.output, args.texture or None)
+        elif args.checkerboard:
             render_checkerboard(mesh, args.output, args.checkerboard)
         else:
             render_distortion(mesh, args.output, args.max)
