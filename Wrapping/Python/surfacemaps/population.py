@@ -258,15 +258,16 @@ def stage_result(directory, k, args, threads):
     loaded = time.perf_counter()
     lifted = surfacemaps.map_surfaces(meshes, pairs="star", NumberOfThreads=threads, **map_settings(args))
     mapped = time.perf_counter()
-    mean = surfacemaps.average_surfaces(lifted, align=args.align)
-    result = portable(mean)
-    if result["landmarks"] is None:  # same connectivity as the lifted meshes: take theirs
-        result["landmarks"] = portable(lifted[0])["landmarks"]
     if len(lifted) > 1:
+        # One alignment for both: the statistics' mean is average_surfaces' order-free mean.
         spread = surfacemaps.shape_statistics(lifted, modes=1, align=args.align)
+        result = portable(spread.mean)
         result["spread"], result["spread_rms"] = spread.standard_deviation, math.sqrt(spread.total_variance)
     else:
+        result = portable(surfacemaps.average_surfaces(lifted, align=args.align))
         result["spread"], result["spread_rms"] = np.zeros(len(result["points"])), 0.0
+    if result["landmarks"] is None:  # same connectivity as the lifted meshes: take theirs
+        result["landmarks"] = portable(lifted[0])["landmarks"]
     result["lifted"] = [portable(m)["points"] for m in lifted]
     result["sphere"] = vtk_to_numpy(lifted[0].GetPointData().GetArray("SpherePosition")).copy()
     averaged = time.perf_counter()
