@@ -158,6 +158,207 @@ Eigen::Vector2d extrapolateCornerValues(const std::vector<Eigen::Vector3d>& poin
   return values[0] + w1 * (values[1] - values[0]) + w2 * (values[2] - values[0]);
 }
 
+// Per-corner values of a source mesh, carried onto the triangles of another
+// mesh whose vertices lie on it (transferCornerValues).
+class CornerValueCarrier
+{
+public:
+  CornerValueCarrier(const std::vector<Eigen::Vector3d>& points,
+    const std::vector<std::array<int, 3>>& triangles,
+    const std::vector<Eigen::Vector2d>& values)
+    : Points(points)
+    , Triangles(triangles)
+    , Values(values)
+    , Chart(textureCharts(triangles, values))
+    , Around(triangles, points.size())
+  {
+  }
+
+  /// The three corner values of a triangle whose corners lie at `corners`.
+  std::array<Eigen::Vector2d, 3> triangle(const std::array<SurfacePoint, 3>& corners) const
+  {
+    std::array<Eigen::Vector2d, 3> own;
+    std::array<int, 3> charts;
+    for (int k = 0; k < 3; ++k)
+    {
+      own[k] = evaluateCornerValues(this->Values, corners[k]);
+      charts[k] = this->Chart[corners[k].triangle];
+    }
+    if (charts[0] == charts[1] && charts[1] == charts[2])
+    {
+      return own;
+    }
+    std::array<Eigen::Vector3d, 3> x;
+    for (int k = 0; k < 3; ++k)
+    {
+      x[k] = evaluateSurfacePoint(this->Points, this->Triangles, corners[k]);
+    }
+    // Of the corners' charts, the one the triangle is least stretched in.
+    double best = std::numeric_limits<double>::infinity();
+    std::array<Eigen::Vector2d, 3> chosen = own;
+    for (int k = 0; k < 3; ++k)
+    {
+      if (k > 0 && (charts[k] == charts[0] || (k == 2 && charts[2] == charts[1])))
+      {
+        continue;
+      }
+      const std::array<Eigen::Vector2d, 3> values = this->inChart(charts[k], corners, own, x);
+      const Eigen::Vector2d lo = values[0].cwiseMin(values[1]).cwiseMin(values[2]);
+      const Eigen::Vector2d hi = values[0].cwiseMax(values[1]).cwiseMax(values[2]);
+      if ((hi - lo).maxCoeff() < best)
+      {
+        best = (hi - lo).maxCoeff();
+        chosen = values;
+      }
+    }
+    return chosen;
+  }
+
+private:
+  // The triangle's values in chart `home`: the corners of other charts
+  // carried into it, across a seam edge where there is one near the corner,
+  // else by the affine map of a nearby triangle of the chart.
+  std::array<Eigen::Vector2d, 3> inChart(int home,
+    const std::array<SurfacePoint, 3>& corners,
+    const std::array<Eigen::Vector2d, 3>& own,
+    const std::array<Eigen::Vector3d, 3>& x) const
+  {
+    std::array<Eigen::Vector2d, 3> values = own;
+    for (int k = 0; k < 3; ++k)
+    {
+      if (this->Chart[corners[k].triangle] == home ||
+        this->acrossSeam(corners[k], x[k], home, values[k]))
+      {
+        continue;
+      }
+      const int s = this->homeTriangleNear(corners[k], x[k], home, corners, x);
+      values[k] = extrapolateCornerValues(this->Points, this->Triangles[s],
+        &this->Values[3 * static_cast<std::size_t>(s)], x[k], values[k]);
+    }
+    return values;
+  }
+
+  std::complex<double> at(int s, int v) const
+  {
+    const std::array<int, 3>& t = this->Triangles[s];
+    const Eigen::Vector2d& c =
+      this->Values[3 * static_cast<std::size_t>(s) + (t[0] == v ? 0 : (t[1] == v ? 1 : 2))];
+    return { c.x(), c.y() };
+  }
+
+  bool positiveInTexture(int s) const
+  {
+    const std::array<int, 3>& t = this->Triangles[s];
+    const std::complex<double> e1 = this->at(s, t[1]) - this->at(s, t[0]);
+    const std::complex<double> e2 = this->at(s, t[2]) - this->at(s, t[0]);
+    return std::imag(std::conj(e1) * e2) > 0.0;
+  }
+
+  // `value` of point p (at x, in another chart than `home`) carried into
+  // chart `home` across the seam edge between the two charts nearest to x
+  // among the edges at p's triangle's corners: the similarity (with a mirror
+  // where the charts' orientations differ) that takes the edge's two values
+  // on p's side to those on the home side, exact on the seam and at the
+  // charts' own scale nearby. False (value untouched) when there is no such
+  // edge: p lies deeper in its chart.
+  bool acrossSeam(const SurfacePoint& p, const Eigen::Vector3d& x, int home,
+    Eigen::Vector2d& value) const
+  {
+    using Complex = std::complex<double>;
+    const int side = this->Chart[p.triangle];
+    const Complex z(value.x(), value.y());
+    bool found = false;
+    double nearest = 0.0;
+    Complex carried;
+    for (int a : this->Triangles[p.triangle])
+    {
+      for (int u : this->Around.of(a))
+      {
+        for (int w : this->Around.of(a))
+        {
+          if (this->Chart[u] != home || this->Chart[w] != side)
+          {
+            continue;
+          }
+          for (int b : this->Triangles[w])
+          {
+            const std::array<int, 3>& tu = this->Triangles[u];
+            if (b == a || (tu[0] != b && tu[1] != b && tu[2] != b))
+            {
+              continue;
+            }
+            const double d = ((this->Points[a] + this->Points[b]) / 2.0 - x).squaredNorm();
+            const Complex wa = this->at(w, a), wb = this->at(w, b);
+            const Complex ua = this->at(u, a), ub = this->at(u, b);
+            if ((found && d >= nearest) || wb == wa)
+            {
+              continue;
+            }
+            carried = this->positiveInTexture(u) != this->positiveInTexture(w)
+              ? ua + (ub - ua) / std::conj(wb - wa) * std::conj(z - wa)
+              : ua + (ub - ua) / (wb - wa) * (z - wa);
+            found = true;
+            nearest = d;
+          }
+        }
+      }
+    }
+    if (found)
+    {
+      value = Eigen::Vector2d(carried.real(), carried.imag());
+    }
+    return found;
+  }
+
+  // The triangle of chart `home` whose affine map best continues the chart
+  // to x, the position of point p: the one nearest to x among the triangles
+  // around p's triangle's corners, else the triangle of the triangle's
+  // corner in `home` nearest to x.
+  int homeTriangleNear(const SurfacePoint& p,
+    const Eigen::Vector3d& x,
+    int home,
+    const std::array<SurfacePoint, 3>& corners,
+    const std::array<Eigen::Vector3d, 3>& positions) const
+  {
+    int best = -1;
+    double nearest = 0.0;
+    auto consider = [&](int s, const Eigen::Vector3d& at)
+    {
+      if (best < 0 || (at - x).squaredNorm() < nearest)
+      {
+        best = s;
+        nearest = (at - x).squaredNorm();
+      }
+    };
+    for (int v : this->Triangles[p.triangle])
+    {
+      for (int s : this->Around.of(v))
+      {
+        const std::array<int, 3>& t = this->Triangles[s];
+        if (this->Chart[s] == home)
+        {
+          consider(s, (this->Points[t[0]] + this->Points[t[1]] + this->Points[t[2]]) / 3.0);
+        }
+      }
+    }
+    const int nearestAround = best;
+    for (int k = 0; k < 3 && nearestAround < 0; ++k)
+    {
+      if (this->Chart[corners[k].triangle] == home)
+      {
+        consider(corners[k].triangle, positions[k]);
+      }
+    }
+    return best;
+  }
+
+  const std::vector<Eigen::Vector3d>& Points;
+  const std::vector<std::array<int, 3>>& Triangles;
+  const std::vector<Eigen::Vector2d>& Values;
+  const std::vector<int> Chart;
+  const VertexTriangles Around;
+};
+
 } // namespace
 
 std::vector<Eigen::Vector2d> transferCornerValues(const std::vector<Eigen::Vector3d>& sourcePoints,
@@ -177,196 +378,17 @@ std::vector<Eigen::Vector2d> transferCornerValues(const std::vector<Eigen::Vecto
   {
     if (p.triangle < 0 || static_cast<std::size_t>(p.triangle) >= sourceTriangles.size())
     {
-      throw std::invalid_argument(
-        "a point lies in source triangle " + std::to_string(p.triangle) + " of " +
-        std::to_string(sourceTriangles.size()));
+      throw std::invalid_argument("a point lies in source triangle " +
+        std::to_string(p.triangle) + " of " + std::to_string(sourceTriangles.size()));
     }
   }
-  const std::vector<int> chart = textureCharts(sourceTriangles, cornerValues);
-  const VertexTriangles around(sourceTriangles, sourcePoints.size());
-  // The triangle of chart `home` whose affine map best continues the chart
-  // to x, the position of point p: the one nearest to x among the triangles
-  // around p's triangle's corners (where p lies just across a seam), else
-  // the triangle of the home corner nearest to x.
-  auto homeTriangleNear = [&](const SurfacePoint& p,
-                            const Eigen::Vector3d& x,
-                            int home,
-                            const std::array<const SurfacePoint*, 3>& corners,
-                            const std::array<int, 3>& charts,
-                            const std::array<Eigen::Vector3d, 3>& positions)
-  {
-    int best = -1;
-    double nearest = 0.0;
-    auto consider = [&](int s)
-    {
-      const std::array<int, 3>& v = sourceTriangles[s];
-      const double d =
-        ((sourcePoints[v[0]] + sourcePoints[v[1]] + sourcePoints[v[2]]) / 3.0 - x).squaredNorm();
-      if (best < 0 || d < nearest)
-      {
-        best = s;
-        nearest = d;
-      }
-    };
-    for (int v : sourceTriangles[p.triangle])
-    {
-      for (int s : around.of(v))
-      {
-        if (chart[s] == home)
-        {
-          consider(s);
-        }
-      }
-    }
-    if (best >= 0)
-    {
-      return best;
-    }
-    for (int j = 0; j < 3; ++j)
-    {
-      if (charts[j] == home &&
-        (best < 0 || (positions[j] - x).squaredNorm() < nearest))
-      {
-        best = corners[j]->triangle;
-        nearest = (positions[j] - x).squaredNorm();
-      }
-    }
-    return best;
-  };
-  // Value `value` of point p (at x, in another chart than `home`) carried
-  // into chart `home` across the seam edge between the two charts nearest to
-  // x among the edges at p's triangle's corners: the similarity (a mirror
-  // too, where the charts' orientations differ) that takes the edge's two
-  // values on p's side to those on the home side: exact on the seam, and the
-  // charts' own scale nearby. False (value untouched) when no such edge is
-  // there: p lies deeper in its chart.
-  auto acrossSeam = [&](const SurfacePoint& p, const Eigen::Vector3d& x, int home,
-                      Eigen::Vector2d& value)
-  {
-    using Complex = std::complex<double>;
-    auto at = [&](int s, int v)
-    {
-      const std::array<int, 3>& t = sourceTriangles[s];
-      const Eigen::Vector2d& c =
-        cornerValues[3 * static_cast<std::size_t>(s) + (t[0] == v ? 0 : (t[1] == v ? 1 : 2))];
-      return Complex(c.x(), c.y());
-    };
-    auto signedArea = [&](int s)
-    {
-      const std::array<int, 3>& t = sourceTriangles[s];
-      const Complex e1 = at(s, t[1]) - at(s, t[0]), e2 = at(s, t[2]) - at(s, t[0]);
-      return std::imag(std::conj(e1) * e2);
-    };
-    const int side = chart[p.triangle];
-    bool found = false;
-    double nearest = 0.0;
-    Complex carried;
-    const Complex z(value.x(), value.y());
-    for (int a : sourceTriangles[p.triangle])
-    {
-      for (int u : around.of(a))
-      {
-        if (chart[u] != home)
-        {
-          continue;
-        }
-        for (int w : around.of(a))
-        {
-          if (chart[w] != side)
-          {
-            continue;
-          }
-          for (int b : sourceTriangles[w])
-          {
-            const auto& tu = sourceTriangles[u];
-            if (b == a || (tu[0] != b && tu[1] != b && tu[2] != b))
-            {
-              continue;
-            }
-            const double d = ((sourcePoints[a] + sourcePoints[b]) / 2.0 - x).squaredNorm();
-            const Complex wa = at(w, a), wb = at(w, b), ua = at(u, a), ub = at(u, b);
-            if ((found && d >= nearest) || wb == wa)
-            {
-              continue;
-            }
-            const bool mirrored = (signedArea(u) > 0) != (signedArea(w) > 0);
-            carried = mirrored ? ua + (ub - ua) / std::conj(wb - wa) * std::conj(z - wa)
-                               : ua + (ub - ua) / (wb - wa) * (z - wa);
-            found = true;
-            nearest = d;
-          }
-        }
-      }
-    }
-    if (found)
-    {
-      value = Eigen::Vector2d(carried.real(), carried.imag());
-    }
-    return found;
-  };
+  const CornerValueCarrier carrier(sourcePoints, sourceTriangles, cornerValues);
   std::vector<Eigen::Vector2d> result(3 * triangles.size());
   for (std::size_t t = 0; t < triangles.size(); ++t)
   {
-    std::array<const SurfacePoint*, 3> corner;
-    std::array<int, 3> charts;
-    for (int k = 0; k < 3; ++k)
-    {
-      corner[k] = &points[triangles[t][k]];
-      charts[k] = chart[corner[k]->triangle];
-      result[3 * t + k] = evaluateCornerValues(cornerValues, *corner[k]);
-    }
-    if (charts[0] == charts[1] && charts[1] == charts[2])
-    {
-      continue;
-    }
-    std::array<Eigen::Vector3d, 3> x;
-    for (int k = 0; k < 3; ++k)
-    {
-      x[k] = evaluateSurfacePoint(sourcePoints, sourceTriangles, *corner[k]);
-    }
-    // The triangle's values in chart `home`: the corners of other charts
-    // carried into it.
-    auto inChart = [&](int home)
-    {
-      std::array<Eigen::Vector2d, 3> values;
-      for (int k = 0; k < 3; ++k)
-      {
-        values[k] = result[3 * t + k];
-        if (charts[k] != home && !acrossSeam(*corner[k], x[k], home, values[k]))
-        {
-          const int s = homeTriangleNear(*corner[k], x[k], home, corner, charts, x);
-          values[k] = extrapolateCornerValues(sourcePoints, sourceTriangles[s],
-            &cornerValues[3 * static_cast<std::size_t>(s)], x[k], values[k]);
-        }
-      }
-      return values;
-    };
-    // Of the corners' charts, the one the triangle is least stretched in.
-    double best = std::numeric_limits<double>::infinity();
-    std::array<Eigen::Vector2d, 3> chosen;
-    for (int k = 0; k < 3; ++k)
-    {
-      if (k > 0 && (charts[k] == charts[0] || (k == 2 && charts[2] == charts[1])))
-      {
-        continue;
-      }
-      const std::array<Eigen::Vector2d, 3> values = inChart(charts[k]);
-      const Eigen::Vector2d lo = values[0].cwiseMin(values[1]).cwiseMin(values[2]);
-      const Eigen::Vector2d hi = values[0].cwiseMax(values[1]).cwiseMax(values[2]);
-      const double span = (hi - lo).maxCoeff();
-      if (span < best)
-      {
-        best = span;
-        chosen = values;
-      }
-    }
-    if (best < std::numeric_limits<double>::infinity())
-    {
-      for (int k = 0; k < 3; ++k)
-      {
-        result[3 * t + k] = chosen[k];
-      }
-    }
+    const std::array<Eigen::Vector2d, 3> values = carrier.triangle(
+      { points[triangles[t][0]], points[triangles[t][1]], points[triangles[t][2]] });
+    std::copy(values.begin(), values.end(), result.begin() + 3 * t);
   }
   return result;
 }
