@@ -388,6 +388,14 @@ def test_in_memory_transfer_restores_the_filters_mode(map_dir):
         surfacemaps.transfer(common, 0, 2)
     with pytest.raises(TypeError, match="not int"):
         surfacemaps.transfer(3, 0, 1)
+    # A map that fails: its error, and the mode stays the user's.
+    bad = surfacemaps.vtkSurfaceMapFilter()
+    bad.AddInputData(surfacemaps.read_mesh(data("ellipsoid.obj")))
+    bad.AddInputData(surfacemaps.read_mesh(data("bad/hemisphere.obj")))
+    bad.SetOutputModeToMappedFirstInput()
+    with pytest.raises(surfacemaps.InputError, match="input 1 .*is not closed"):
+        surfacemaps.transfer(bad, 0, 1)
+    assert bad.GetOutputMode() == bad.MAPPED_INPUT
 
 
 def blob_arrays():

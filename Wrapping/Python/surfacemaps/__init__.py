@@ -23,7 +23,8 @@ Helpers:
 ``map_surfaces(meshes, landmarks=None, target_error=None, pairs=None, keep_landmarks=None, **settings)``
     Certified bijective map between meshes (vtkSurfaceMapFilter); returns one
     output per mesh (the common triangulation lifted onto each), or with
-    ``mapped=True`` also the first mesh mapped onto each; raises InputError or
+    ``mapped=True`` also the first mesh mapped onto each, as a MapResult (a
+    list that also holds the map, for transfer); raises InputError or
     MapError.
 ``transfer(mapping, source, target, arrays=None, source_data=None, as_numpy=False)``
     Point data (and texture coordinates) of input `source` of a map carried
@@ -574,12 +575,14 @@ def _filter_ports(f, source, target):
     # The filter's own mode last: nothing to restore when it is one of the two.
     kinds = sorted((f.INPUT_EMBEDDINGS, f.COMMON_TRIANGULATION), key=lambda kind: kind == mode)
     copies = {}
-    for kind in kinds:
-        f.SetOutputMode(kind)
-        _update_map(f)
-        copies[kind] = [_shallow_copy(f.GetOutput(i)) for i in (target, source)]
+    try:
+        for kind in kinds:
+            f.SetOutputMode(kind)
+            _update_map(f)
+            copies[kind] = [_shallow_copy(f.GetOutput(i)) for i in (target, source)]
+    finally:
+        f.SetOutputMode(mode)  # also when the map fails: the user's setting stays
     if mode not in kinds:
-        f.SetOutputMode(mode)
         _update_map(f)
     return copies[f.INPUT_EMBEDDINGS] + copies[f.COMMON_TRIANGULATION]
 
