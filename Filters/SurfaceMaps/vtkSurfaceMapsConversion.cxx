@@ -29,6 +29,62 @@
 namespace
 {
 const char* const CornerTCoordsName = "CornerTCoords";
+const char* const CornerNormalsName = "CornerNormals";
+
+// The cell array `name` of D values per corner (3 D components) as one vector
+// per corner; empty unless it fits: pure triangle data (with other cells in
+// front of the polygons the cell ids would not line up), one tuple per face.
+template<int D>
+std::vector<Eigen::Matrix<double, D, 1>> ReadCornerArray(vtkPolyData* input,
+  const char* name,
+  const surfacemaps::PolygonMesh& mesh)
+{
+  std::vector<Eigen::Matrix<double, D, 1>> corners;
+  vtkDataArray* array = input->GetCellData()->GetArray(name);
+  const std::size_t nf = mesh.numberOfFaces();
+  if (!array || array->GetNumberOfComponents() != 3 * D || mesh.nonPolygonCells != 0 ||
+    array->GetNumberOfTuples() != static_cast<vtkIdType>(nf) || mesh.faceVertices.size() != 3 * nf)
+  {
+    return corners;
+  }
+  corners.resize(3 * nf);
+  for (std::size_t c = 0; c < corners.size(); ++c)
+  {
+    for (int d = 0; d < D; ++d)
+    {
+      corners[c][d] = array->GetComponent(static_cast<vtkIdType>(c / 3), D * (c % 3) + d);
+    }
+  }
+  return corners;
+}
+
+// Per-corner vectors (one per entry of faceVertices) added to `output` as the
+// double cell array `name` with 3 D components per triangle; nothing when
+// there are none or a face is not a triangle.
+template<int D>
+void AddCornerArray(vtkPolyData* output,
+  const char* name,
+  const std::vector<Eigen::Matrix<double, D, 1>>& corners,
+  const surfacemaps::PolygonMesh& mesh)
+{
+  const std::size_t nf = mesh.numberOfFaces();
+  if (corners.empty() || mesh.faceVertices.size() != 3 * nf || corners.size() != 3 * nf)
+  {
+    return;
+  }
+  auto array = vtkSmartPointer<vtkDoubleArray>::New();
+  array->SetName(name);
+  array->SetNumberOfComponents(3 * D);
+  array->SetNumberOfTuples(static_cast<vtkIdType>(nf));
+  for (std::size_t c = 0; c < corners.size(); ++c)
+  {
+    for (int d = 0; d < D; ++d)
+    {
+      array->SetComponent(static_cast<vtkIdType>(c / 3), D * (c % 3) + d, corners[c][d]);
+    }
+  }
+  output->GetCellData()->AddArray(array);
+}
 }
 
 surfacemaps::PolygonMesh vtkSurfaceMapsConversion::ToPolygonMesh(vtkPolyData* input)
@@ -83,24 +139,8 @@ surfacemaps::PolygonMesh vtkSurfaceMapsConversion::ToPolygonMesh(vtkPolyData* in
     }
   }
 
-  // Per-corner texture coordinates belong to polygons; with other cells in
-  // front of them the cell ids would not line up, so only pure polygon data.
-  vtkDataArray* tc = input->GetCellData()->GetArray(CornerTCoordsName);
-  if (tc && tc->GetNumberOfComponents() == 6 && mesh.nonPolygonCells == 0 &&
-    tc->GetNumberOfTuples() == static_cast<vtkIdType>(mesh.numberOfFaces()) &&
-    mesh.faceVertices.size() == 3 * mesh.numberOfFaces())
-  {
-    mesh.cornerTexCoords.resize(mesh.faceVertices.size());
-    double t[6];
-    for (std::size_t f = 0; f < mesh.numberOfFaces(); ++f)
-    {
-      tc->GetTuple(static_cast<vtkIdType>(f), t);
-      for (int k = 0; k < 3; ++k)
-      {
-        mesh.cornerTexCoords[3 * f + k] = Eigen::Vector2d(t[2 * k], t[2 * k + 1]);
-      }
-    }
-  }
+  mesh.cornerTexCoords = ReadCornerArray<2>(input, CornerTCoordsName, mesh);
+  mesh.cornerNormals = ReadCornerArray<3>(input, CornerNormalsName, mesh);
   return mesh;
 }
 
@@ -134,24 +174,8 @@ vtkSmartPointer<vtkPolyData> vtkSurfaceMapsConversion::ToPolyData(
   output->SetPoints(points);
   output->SetPolys(polys);
 
-  const std::size_t nf = mesh.numberOfFaces();
-  if (!mesh.cornerTexCoords.empty() && mesh.faceVertices.size() == 3 * nf &&
-    mesh.cornerTexCoords.size() == mesh.faceVertices.size())
-  {
-    auto tc = vtkSmartPointer<vtkDoubleArray>::New();
-    tc->SetName(CornerTCoordsName);
-    tc->SetNumberOfComponents(6);
-    tc->SetNumberOfTuples(static_cast<vtkIdType>(nf));
-    for (std::size_t f = 0; f < nf; ++f)
-    {
-      for (int k = 0; k < 3; ++k)
-      {
-        tc->SetComponent(static_cast<vtkIdType>(f), 2 * k, mesh.cornerTexCoords[3 * f + k].x());
-        tc->SetComponent(static_cast<vtkIdType>(f), 2 * k + 1, mesh.cornerTexCoords[3 * f + k].y());
-      }
-    }
-    output->GetCellData()->AddArray(tc);
-  }
+  AddCornerArray<2>(output, CornerTCoordsName, mesh.cornerTexCoords, mesh);
+  AddCornerArray<3>(output, CornerNormalsName, mesh.cornerNormals, mesh);
   AddPointArrays(output, mesh);
   return output;
 }

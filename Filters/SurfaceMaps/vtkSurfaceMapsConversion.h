@@ -4,7 +4,9 @@
  *
  * The one place where VTK data meets the engine (private to the module).
  * Per-corner texture coordinates travel as the 6-component cell-data array
- * "CornerTCoords" (u0 v0 u1 v1 u2 v2 per triangle); landmarks as the int
+ * "CornerTCoords" (u0 v0 u1 v1 u2 v2 per triangle), per-corner normals (OBJ
+ * `vn`) as the 9-component "CornerNormals" (x0 y0 z0 x1 ... z2 per triangle;
+ * NaN at corners without one); landmarks as the int
  * point-data array "Landmarks" (-1 none).
  */
 #ifndef vtkSurfaceMapsConversion_h
@@ -30,9 +32,11 @@ class vtkSurfaceMapsConversion
 {
 public:
   /// Every polygon of `input` (vertices, lines and strips are counted as
-  /// non-polygon cells), with per-corner texture coordinates if present.
+  /// non-polygon cells), with per-corner texture coordinates and normals if
+  /// present ("CornerTCoords", "CornerNormals" on pure triangle data).
   static surfacemaps::PolygonMesh ToPolygonMesh(vtkPolyData* input);
-  /// Points and polygons (and "CornerTCoords" when every face is a triangle),
+  /// Points and polygons (and "CornerTCoords", "CornerNormals" when every face
+  /// is a triangle and the mesh has per-corner values),
   /// with the mesh's point arrays (AddPointArrays).
   static vtkSmartPointer<vtkPolyData> ToPolyData(const surfacemaps::PolygonMesh& mesh);
   /// The mesh's point arrays as VTK arrays of their types on `output`'s point

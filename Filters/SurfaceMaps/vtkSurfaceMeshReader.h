@@ -7,7 +7,12 @@
  * `.vtk`. OBJ vertices follow the file's `v` lines (vtkOBJReader instead makes
  * one point per distinct v/vt/vn combination, which tears closed meshes open
  * along texture seams); per-corner texture coordinates are kept in the
- * 6-component cell array "CornerTCoords". OFF is read strictly (counts,
+ * 6-component cell array "CornerTCoords" (u0 v0 u1 v1 u2 v2 per triangle) and
+ * per-corner normals (`vn`, referenced as `f v/t/n` or `f v//n`) in the
+ * 9-component cell array "CornerNormals" (x0 y0 z0 x1 y1 z1 x2 y2 z2, as the
+ * file gives them, not normalised); a corner without one is NaN, and a file
+ * whose faces use no texture coordinates (normals) has no such array. Both
+ * need every face to be a triangle. OFF is read strictly (counts,
  * indices, numbers), and so is PLY (ASCII and binary; a face "texcoord" list
  * becomes "CornerTCoords"). STL points are merged. VTP and legacy VTK files
  * go through VTK's own readers.

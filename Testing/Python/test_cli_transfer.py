@@ -361,3 +361,167 @@ def test_source_data_must_have_the_inputs_connectivity(map_dir, tmp_path):
     assert r.returncode == 2 and "missing.vtp" in r.stderr
     assert not out.exists()
     assert "--source-data MESH" in run("transfer", "--help").stdout
+
+
+# ---- surfacemaps.transfer in memory and with source_data
+
+SHORT_SETTINGS = dict(LandmarkIterations=10, CoarseIterations=3, FineIterations=3)  # as SHORT
+
+
+@pytest.fixture(scope="module")
+def in_memory(map_dir):
+    """map_surfaces on the inputs of map_dir with the same settings: the same map, in memory."""
+    import surfacemaps
+    root = map_dir.parent
+    return surfacemaps.map_surfaces([str(root / "ellipsoid.vtp"), str(root / "blob.vtp")], **SHORT_SETTINGS)
+
+
+def assert_same_point_arrays(a, b):
+    import numpy as np
+    import surfacemaps
+    mine, theirs = surfacemaps.point_arrays(a), surfacemaps.point_arrays(b)
+    assert sorted(mine) == sorted(theirs)
+    for name in mine:
+        assert mine[name].dtype == theirs[name].dtype, name
+        assert np.allclose(mine[name], theirs[name], rtol=0, atol=1e-12), name
+
+
+def test_in_memory_transfer_equals_the_map_directory(map_dir, in_memory):
+    import numpy as np
+    import surfacemaps
+    from vtkmodules.util.numpy_support import vtk_to_numpy
+    # The premise: the CLI and map_surfaces computed the same map.
+    for i in (0, 1):
+        saved = vtk_to_numpy(read_vtp(map_dir / f"common_{i}.vtp").GetPoints().GetData())
+        assert np.array_equal(vtk_to_numpy(in_memory[i].GetPoints().GetData()), saved)
+    for source, target in ((1, 0), (0, 1)):
+        from_files = surfacemaps.transfer(map_dir, source, target)
+        for mapping in (in_memory, in_memory.filter):
+            result = surfacemaps.transfer(mapping, source, target)
+            assert result.GetNumberOfPoints() == from_files.GetNumberOfPoints() == 642
+            assert_same_point_arrays(result, from_files)
+    names = set(surfacemaps.point_arrays(surfacemaps.transfer(in_memory, 1, 0)))
+    assert {"Label", "Mask", "Coordinates", "SourceCellId", "SourceBarycentric"} <= names
+    # The filter is left in its mode, its outputs and the returned list untouched.
+    assert in_memory.filter.GetOutputMode() == surfacemaps.vtkSurfaceMapFilter.COMMON_TRIANGULATION
+    assert in_memory.filter.GetOutput(1).GetCellData().GetArray("Distortion") is not None
+    assert in_memory[1].GetNumberOfPoints() == in_memory.filter.GetOutput(1).GetNumberOfPoints()
+
+
+def test_in_memory_transfer_restores_the_filters_mode(map_dir):
+    import surfacemaps
+    root = map_dir.parent
+    common, mapped = surfacemaps.map_surfaces([str(root / "ellipsoid.vtp"), str(root / "blob.vtp")],
+                                              mapped=True, **SHORT_SETTINGS)
+    f = mapped.filter
+    result = surfacemaps.transfer(mapped, 1, 0, arrays=["Coordinates"])
+    assert_same_point_arrays(result, surfacemaps.transfer(map_dir, 1, 0, arrays=["Coordinates"]))
+    assert f.GetOutputMode() == f.MAPPED_INPUT
+    # Output 1 is input 0 mapped onto input 1 again (input 0's cells, with Distortion).
+    assert f.GetOutput(1).GetNumberOfCells() == 1280
+    assert f.GetOutput(1).GetCellData().GetArray("Distortion") is not None
+    with pytest.raises(surfacemaps.InputError, match="target is input 2, but the map has 2 inputs"):
+        surfacemaps.transfer(common, 0, 2)
+    with pytest.raises(TypeError, match="not int"):
+        surfacemaps.transfer(3, 0, 1)
+    # A map that fails: its error, and the mode stays the user's.
+    bad = surfacemaps.vtkSurfaceMapFilter()
+    bad.AddInputData(surfacemaps.read_mesh(data("ellipsoid.obj")))
+    bad.AddInputData(surfacemaps.read_mesh(data("bad/hemisphere.obj")))
+    bad.SetOutputModeToMappedFirstInput()
+    with pytest.raises(surfacemaps.InputError, match="input 1 .*is not closed"):
+        surfacemaps.transfer(bad, 0, 1)
+    assert bad.GetOutputMode() == bad.MAPPED_INPUT
+
+
+def blob_arrays():
+    """New data for input 1 (blob): its z coordinates (float) and random labels (int)."""
+    import numpy as np
+    import random
+    blob = read_vtp_points(data("blob.off"))
+    pick = random.Random(7)
+    labels = np.array([pick.choice(LABELS) for _ in range(len(blob))], dtype=np.int64)
+    return blob, {"Height": blob[:, 2].copy(), "Region": labels, "Pair": blob[:, :2].astype(np.float32)}
+
+
+def read_vtp_points(path):
+    import surfacemaps
+    from vtkmodules.util.numpy_support import vtk_to_numpy
+    return vtk_to_numpy(surfacemaps.read_mesh(path).GetPoints().GetData()).copy()
+
+
+@pytest.mark.parametrize("memory", [False, True], ids=["map_dir", "in_memory"])
+def test_numpy_source_data_replaces_the_arrays(map_dir, in_memory, memory):
+    import numpy as np
+    import surfacemaps
+    blob, arrays = blob_arrays()
+    mapping = in_memory if memory else map_dir
+    result = surfacemaps.transfer(mapping, 1, 0, source_data=arrays, as_numpy=True)
+    # Instead of the arrays input 1 had at map time (Label, Mask, Coordinates).
+    assert set(result) == {"Height", "Region", "Pair", "SourceCellId", "SourceBarycentric"}
+    # Continuous: the z of the blob point each ellipsoid vertex is sent to, as Coordinates says.
+    coordinates = surfacemaps.transfer(map_dir, 1, 0, arrays=["Coordinates"], as_numpy=True)["Coordinates"]
+    assert result["Height"].shape == (642,) and result["Height"].dtype == np.float64
+    assert np.allclose(result["Height"], coordinates[:, 2], rtol=0, atol=1e-12)
+    assert result["Pair"].shape == (642, 2) and result["Pair"].dtype == np.float32
+    assert np.allclose(result["Pair"], coordinates[:, :2], rtol=0, atol=1e-5)
+    # Integer labels stay integer, hence categorical: only values the source has.
+    assert result["Region"].dtype.kind == "i"
+    assert 2 < len(set(result["Region"])) and set(result["Region"]) <= set(arrays["Region"])
+    # Asked to interpolate them, labels are invented: the check above could fail.
+    blended = surfacemaps.transfer(mapping, 1, 0, source_data=arrays, continuous=["Region"], as_numpy=True)
+    assert not set(blended["Region"]) <= set(arrays["Region"])
+
+
+def test_numpy_source_data_is_checked(map_dir, in_memory):
+    import numpy as np
+    import surfacemaps
+    blob, arrays = blob_arrays()
+    with pytest.raises(surfacemaps.InputError, match=r"source_data array 'Height' has 641 rows, "
+                       r"input 1 \(embedding_1.vtp\) has 642 vertices: one row per vertex"):
+        surfacemaps.transfer(map_dir, 1, 0, source_data={"Height": arrays["Height"][:-1]})
+    with pytest.raises(surfacemaps.InputError, match="source_data array 'Height' has 643 rows, input 1 has 642"):
+        surfacemaps.transfer(in_memory, 1, 0, source_data={"Height": np.append(arrays["Height"], 0.0)})
+    with pytest.raises(surfacemaps.InputError, match="source_data array 'Name' has dtype <U1: not numeric"):
+        surfacemaps.transfer(map_dir, 1, 0, source_data={"Name": np.array(["a"] * 642)})
+    with pytest.raises(surfacemaps.InputError, match="source_data array 'Flag' has dtype bool: not numeric"):
+        surfacemaps.transfer(map_dir, 1, 0, source_data={"Flag": np.ones(642, dtype=bool)})
+    with pytest.raises(surfacemaps.InputError, match=r"source_data array 'Cube' has shape \(642, 2, 2\)"):
+        surfacemaps.transfer(map_dir, 1, 0, source_data={"Cube": np.zeros((642, 2, 2))})
+    with pytest.raises(surfacemaps.InputError, match="source_data has no point array 'Label'"):
+        surfacemaps.transfer(map_dir, 1, 0, source_data=arrays, categorical=["Label"])
+    with pytest.raises(surfacemaps.InputError, match="cannot replace 'SpherePosition'"):
+        surfacemaps.transfer(map_dir, 1, 0, source_data={"SpherePosition": blob})
+    with pytest.raises(TypeError, match="source_data is a dict"):
+        surfacemaps.transfer(map_dir, 1, 0, source_data=[arrays["Height"]])
+
+
+def test_polydata_source_data(map_dir, in_memory):
+    import numpy as np
+    import surfacemaps
+    from vtkmodules.vtkCommonCore import vtkIdList
+    from vtkmodules.util.numpy_support import numpy_to_vtk
+    blob, arrays = blob_arrays()
+    mesh = surfacemaps.read_mesh(data("blob.off"))  # input 1 with a new array
+    height = numpy_to_vtk(arrays["Height"], deep=True)
+    height.SetName("Height")
+    mesh.GetPointData().AddArray(height)
+    expected = surfacemaps.transfer(map_dir, 1, 0, source_data={"Height": arrays["Height"]}, as_numpy=True)
+    for mapping in (map_dir, in_memory):
+        result = surfacemaps.transfer(mapping, 1, 0, source_data=mesh, as_numpy=True)
+        assert set(result) == {"Height", "SourceCellId", "SourceBarycentric"}
+        assert np.array_equal(result["Height"], expected["Height"])
+    # Other vertex count, then one triangle turned round: named as the command line names them.
+    with pytest.raises(surfacemaps.InputError, match=r"source_data has 162 vertices, input 1 \(embedding_1.vtp\) "
+                       "has 642: not the connectivity of input 1"):
+        surfacemaps.transfer(map_dir, 1, 0, source_data=surfacemaps.read_mesh(data("ellipsoid_coarse.stl")))
+    ids = vtkIdList()
+    mesh.GetCellPoints(5, ids)
+    a, b, c = (ids.GetId(k) for k in range(3))
+    mesh.ReplaceCell(5, 3, [a, c, b])
+    with pytest.raises(surfacemaps.InputError, match=rf"source_data: triangle 5 is \({a}, {c}, {b}\), in input 1 "
+                       rf"it is \({a}, {b}, {c}\): not the connectivity of input 1"):
+        surfacemaps.transfer(in_memory, 1, 0, source_data=mesh)
+    # The same triangle starting at another corner is the same connectivity.
+    mesh.ReplaceCell(5, 3, [b, c, a])
+    assert surfacemaps.transfer(in_memory, 1, 0, source_data=mesh).GetNumberOfPoints() == 642

@@ -23,12 +23,18 @@ Helpers:
 ``map_surfaces(meshes, landmarks=None, target_error=None, pairs=None, keep_landmarks=None, **settings)``
     Certified bijective map between meshes (vtkSurfaceMapFilter); returns one
     output per mesh (the common triangulation lifted onto each), or with
-    ``mapped=True`` also the first mesh mapped onto each; raises InputError or
+    ``mapped=True`` also the first mesh mapped onto each, as a MapResult (a
+    list that also holds the map, for transfer); raises InputError or
     MapError.
-``transfer(map_dir, source, target, arrays=None)``
-    Point data (and texture coordinates) of input `source` of a saved map
-    (``surfacemap map``'s directory) carried onto input `target`'s vertices
-    (vtkSurfaceMapTransfer); raises InputError.
+``transfer(mapping, source, target, arrays=None, source_data=None, as_numpy=False)``
+    Point data (and texture coordinates) of input `source` of a map carried
+    onto input `target`'s vertices (vtkSurfaceMapTransfer): a saved map
+    (``surfacemap map``'s directory) or one in memory (what map_surfaces
+    returns, or a vtkSurfaceMapFilter); `source_data` carries new arrays (a
+    dict of numpy arrays, one row per source vertex, or a vtkPolyData of the
+    source's connectivity) instead of those the source had; raises InputError.
+``point_arrays(mesh)``
+    The point arrays of a vtkPolyData as a dict of numpy arrays.
 ``average_surfaces(meshes, weights=None, align="rigid")``
     Weighted mean shape of meshes with identical connectivity (e.g. the
     outputs of map_surfaces) after generalized Procrustes alignment; it does
@@ -356,7 +362,9 @@ def map_surfaces(meshes, landmarks=None, target_error=None, pairs=None, keep_lan
     "Distortion" and field data (energies,
     per-phase iterations and times, "Bijective"). With ``mapped=True`` returns
     ``(common, mapped)`` where ``mapped[j]`` is the first mesh mapped onto mesh
-    j by the exact map (its connectivity), computed from the same map.
+    j by the exact map (its connectivity), computed from the same map. Each
+    list is a MapResult, which also holds the map (``.filter``): pass it to
+    transfer() to carry data between the meshes without files.
 
     Raises InputError when a mesh or its landmarks cannot be used, MapError
     when no certified map is found, TypeError for an unknown setting or for
@@ -415,58 +423,272 @@ def map_surfaces(meshes, landmarks=None, target_error=None, pairs=None, keep_lan
             result.append(copy)
         return result
 
-    common = outputs()
+    common = MapResult(outputs(), f)
     if not mapped:
         return common
     f.SetOutputModeToMappedFirstInput()
-    return common, outputs()
+    return common, MapResult(outputs(), f)
 
 
-def transfer(map_dir, source, target, arrays=None, categorical=None, continuous=None):
-    """Carry the point data of input `source` of a saved map onto the vertices of input `target`.
+def transfer(mapping, source, target, arrays=None, categorical=None, continuous=None, source_data=None,
+             as_numpy=False):
+    """Carry the point data of input `source` of a map onto the vertices of input `target`.
 
-    `map_dir` is an output directory of ``surfacemap map`` (it reads
-    embedding_<i>.vtp and common_<i>.vtp of both inputs); `source` and `target`
-    are input indices. Runs vtkSurfaceMapTransfer: every vertex of the target
-    is sent onto the source by the map, where the source's point arrays are
-    read: continuous arrays interpolated, categorical ones (labels) taken from
-    the nearest corner of the source triangle, so the target never gets a
-    label the source does not have. By default integer arrays are categorical
-    and floating-point ones continuous; `categorical` and `continuous` (lists
-    of array names) choose per array. Returns the target mesh (vtkPolyData)
-    with those arrays (all but "SpherePosition", "Landmarks", "SourceCellId",
-    "SourceBarycentric", or the names in `arrays`), "SourceCellId",
-    "SourceBarycentric" (where on the source) and "TCoords" (the source's
-    per-corner or point texture coordinates evaluated there). Raises
-    InputError for missing files, files the map's report.json does not vouch
-    for (from another map, swapped, changed: as ``surfacemap transfer``),
-    unknown array names or files that do not fit together, ValueError for an
+    `mapping` is the map, saved or in memory:
+
+    - a directory written by ``surfacemap map`` (its embedding_<i>.vtp and
+      common_<i>.vtp of both inputs are read and checked against its
+      report.json: from another map, swapped or changed files are refused, as
+      ``surfacemap transfer`` does);
+    - what map_surfaces returned (a MapResult: its ``.filter``), or any
+      vtkSurfaceMapFilter with its inputs connected. The filter is brought up
+      to date (no computation when it already is) and its outputs are read in
+      the modes INPUT_EMBEDDINGS and COMMON_TRIANGULATION in turn: the map is
+      reused, not recomputed, and the filter is left in the OutputMode it had,
+      with its outputs updated in that mode again (downstream filters see it
+      modified and re-run).
+
+    `source` and `target` are input indices. Runs vtkSurfaceMapTransfer:
+    every vertex of the target is sent onto the source by the map, where the
+    source's point arrays are read: continuous arrays interpolated,
+    categorical ones (labels) taken from the nearest corner of the source
+    triangle, so the target never gets a label the source does not have. By
+    default integer arrays are categorical and floating-point ones
+    continuous; `categorical` and `continuous` (lists of array names) choose
+    per array.
+
+    `source_data` carries new data instead of the point arrays input `source`
+    had when the map was computed (as ``surfacemap transfer --source-data``):
+
+    - a dict {name: numpy array}, one row per vertex of input `source` (shape
+      (n,) or (n, k)), of an integer or floating-point dtype; the types are
+      kept, so integer arrays stay integer and are categorical by default.
+      These become the source's point arrays; its cell data (per-corner
+      texture coordinates "CornerTCoords") stays.
+    - a vtkPolyData with input `source`'s connectivity (same vertex count, the
+      same triangles in the same order; a triangle may start at another
+      corner), e.g. a copy of the input with new arrays: its point and cell
+      data replace the source's.
+
+    Returns the target mesh (vtkPolyData) with the source's arrays (all but
+    "SpherePosition", "Landmarks", "SourceCellId", "SourceBarycentric", or the
+    names in `arrays`), "SourceCellId", "SourceBarycentric" (where on the
+    source) and "TCoords" (the source's per-corner or point texture
+    coordinates evaluated there); with ``as_numpy=True`` instead a dict
+    {name: numpy array} of those point arrays (one row per target vertex).
+
+    Raises InputError for missing or unvouched map files, input indices the
+    map does not have, unknown array names, inputs that do not fit together,
+    `source_data` with the wrong number of rows (naming the array, its length
+    and the vertex count), a non-numeric dtype or another connectivity
+    (naming the first mismatch); MapError when an in-memory map cannot be
+    computed; TypeError for a `mapping` that is neither; ValueError for an
     array given both ways.
     """
-    import os
     for name, index in (("source", source), ("target", target)):
         if isinstance(index, bool) or not isinstance(index, int) or index < 0:
             raise TypeError(f"{name} is an input index (0, 1, ...), not {index!r}")
-    files = [os.path.join(str(map_dir), f"{kind}_{index}.vtp")
-             for kind, index in (("embedding", target), ("embedding", source), ("common", target), ("common", source))]
-    missing = sorted({os.path.basename(f) for f in files if not os.path.isfile(f)})
-    if missing:
-        raise InputError(f"{map_dir} has no {', '.join(missing)} (written by 'surfacemap map')")
-    _verify_map_files(str(map_dir), [os.path.basename(f) for f in files])
+    ports, source_name = _map_ports(mapping, source, target)
+    if source_data is not None:
+        ports[1] = _with_source_data(ports[1], source_data, source, source_name)
+        _check_array_names(ports[1], arrays, categorical, continuous)
     t = vtkSurfaceMapTransfer()
     _set_array_transfer_modes(t, categorical, continuous)
     errors = _collect_errors(t)
-    for port, path in enumerate(files):
-        t.SetInputDataObject(port, read_mesh(path))
+    for port, mesh in enumerate(ports):
+        t.SetInputDataObject(port, mesh)
     for name in arrays or ():
         t.AddArrayName(str(name))
     _update(t, errors)
     if errors or t.GetOutput().GetNumberOfPoints() == 0:
         message = "; ".join(errors) or "the transfer was aborted"
         raise (InputError if t.GetErrorCode() == vtkSurfaceMapTransfer.InvalidInputError else MapError)(message)
-    result = t.GetOutput().NewInstance()
-    result.ShallowCopy(t.GetOutput())
+    result = _shallow_copy(t.GetOutput())
+    return point_arrays(result) if as_numpy else result
+
+
+class MapResult(list):
+    """What map_surfaces returns: a list of vtkPolyData, one output per mesh, that also holds the map.
+
+    ``filter`` is the updated vtkSurfaceMapFilter, so that ``transfer(result,
+    source, target, ...)`` carries data between the meshes in memory; it keeps
+    the map (a few times the size of the outputs) alive while the list lives.
+    """
+
+    def __init__(self, outputs, algorithm):
+        super().__init__(outputs)
+        self.filter = algorithm
+
+
+def point_arrays(mesh):
+    """The point arrays of a vtkPolyData as a dict {name: numpy array}, copies (one row per point)."""
+    from vtkmodules.util.numpy_support import vtk_to_numpy
+    data = mesh.GetPointData()
+    result = {}
+    for a in range(data.GetNumberOfArrays()):
+        array = data.GetArray(a)  # None for string arrays: not numeric data
+        if array is not None and array.GetName():
+            result[array.GetName()] = vtk_to_numpy(array).copy()
     return result
+
+
+def _shallow_copy(mesh):
+    copy = mesh.NewInstance()
+    copy.ShallowCopy(mesh)
+    return copy
+
+
+def _map_ports(mapping, source, target):
+    """The four inputs of vtkSurfaceMapTransfer (target and source with their embeddings, T lifted
+    onto target and source) of a map directory or an in-memory map, and the source's name for
+    messages."""
+    algorithm = getattr(mapping, "filter", mapping)
+    if isinstance(algorithm, vtkSurfaceMapFilter):
+        return _filter_ports(algorithm, source, target), f"input {source}"
+    if isinstance(mapping, (str, os.PathLike)):
+        return _directory_ports(os.fspath(mapping), source, target), f"input {source} (embedding_{source}.vtp)"
+    raise TypeError("the map is a directory written by 'surfacemap map', a vtkSurfaceMapFilter or what "
+                    f"map_surfaces returns, not {type(mapping).__name__}")
+
+
+def _directory_ports(map_dir, source, target):
+    """The transfer's inputs read from a map directory, every file vouched for by its report.json."""
+    files = [os.path.join(map_dir, f"{kind}_{index}.vtp")
+             for kind, index in (("embedding", target), ("embedding", source), ("common", target), ("common", source))]
+    missing = sorted({os.path.basename(f) for f in files if not os.path.isfile(f)})
+    if missing:
+        raise InputError(f"{map_dir} has no {', '.join(missing)} (written by 'surfacemap map')")
+    _verify_map_files(map_dir, [os.path.basename(f) for f in files])
+    return [read_mesh(path) for path in files]
+
+
+def _filter_ports(f, source, target):
+    """The transfer's inputs from a vtkSurfaceMapFilter's outputs in the modes INPUT_EMBEDDINGS and
+    COMMON_TRIANGULATION. Switching only the mode reuses the map; the mode the filter had is
+    restored (and updated, so its outputs match it again) when the outputs are copied."""
+    inputs = f.GetNumberOfInputConnections(0)
+    for name, index in (("source", source), ("target", target)):
+        if index >= inputs:
+            raise InputError(f"{name} is input {index}, but the map has {inputs} input"
+                             f"{'' if inputs == 1 else 's'}")
+    mode = f.GetOutputMode()
+    # The filter's own mode last: nothing to restore when it is one of the two.
+    kinds = sorted((f.INPUT_EMBEDDINGS, f.COMMON_TRIANGULATION), key=lambda kind: kind == mode)
+    copies = {}
+    try:
+        for kind in kinds:
+            f.SetOutputMode(kind)
+            _update_map(f)
+            copies[kind] = [_shallow_copy(f.GetOutput(i)) for i in (target, source)]
+    finally:
+        f.SetOutputMode(mode)  # also when the map fails: the user's setting stays
+    if mode not in kinds:
+        _update_map(f)
+    return copies[f.INPUT_EMBEDDINGS] + copies[f.COMMON_TRIANGULATION]
+
+
+def _update_map(f):
+    """Updates a vtkSurfaceMapFilter; raises InputError or MapError with its messages on failure."""
+    messages, tag = _error_observer(f)
+    try:
+        _update(f, messages)
+    finally:
+        f.RemoveObserver(tag)
+    if messages or f.GetOutput(0).GetNumberOfPoints() == 0:
+        message = "; ".join(messages) or "the map was aborted"
+        raise (InputError if f.GetErrorCode() == vtkSurfaceMapFilter.InvalidInputError else MapError)(message)
+
+
+def _with_source_data(mesh, source_data, source, source_name):
+    """`mesh` (the source with "SpherePosition") carrying `source_data` (a dict of numpy arrays
+    or a vtkPolyData of the same connectivity) instead of its own point arrays."""
+    from collections.abc import Mapping
+    result = _shallow_copy(mesh)
+    sphere = mesh.GetPointData().GetArray("SpherePosition")
+    if isinstance(source_data, vtkPolyData):
+        _check_same_connectivity(source_data, mesh, source, source_name)
+        result.GetPointData().ShallowCopy(source_data.GetPointData())
+        result.GetPointData().RemoveArray("SpherePosition")
+        result.GetCellData().ShallowCopy(source_data.GetCellData())
+    elif isinstance(source_data, Mapping):
+        arrays = [_vtk_point_array(name, values, mesh.GetNumberOfPoints(), source_name)
+                  for name, values in source_data.items()]
+        result.GetPointData().Initialize()
+        for array in arrays:
+            result.GetPointData().AddArray(array)
+    else:
+        raise TypeError("source_data is a dict {name: numpy array} or a vtkPolyData, "
+                        f"not {type(source_data).__name__}")
+    result.GetPointData().AddArray(sphere)
+    return result
+
+
+def _vtk_point_array(name, values, vertices, source_name):
+    """One source_data entry as a VTK array of the same type (integers stay integer); raises
+    InputError naming it when it is not numeric or not one row per vertex."""
+    import numpy as np
+    from vtkmodules.util.numpy_support import numpy_to_vtk
+    if not isinstance(name, str) or not name:
+        raise TypeError(f"source_data names are non-empty strings, not {name!r}")
+    if name == "SpherePosition":
+        raise InputError("source_data cannot replace 'SpherePosition': it is the map's embedding of the source")
+    array = np.asarray(values)
+    if array.dtype.kind not in "iuf":
+        raise InputError(f"source_data array {name!r} has dtype {array.dtype}: not numeric "
+                         "(give integers for labels, floating point for continuous data)")
+    if array.ndim not in (1, 2) or array.ndim == 2 and array.shape[1] == 0:
+        raise InputError(f"source_data array {name!r} has shape {array.shape}: (n,) or (n, k) expected, "
+                         "one row per vertex")
+    if len(array) != vertices:
+        raise InputError(f"source_data array {name!r} has {len(array)} rows, {source_name} has {vertices} "
+                         "vertices: one row per vertex")
+    if array.dtype == np.float16:
+        array = array.astype(np.float32)  # VTK has no half-precision arrays
+    result = numpy_to_vtk(np.ascontiguousarray(array), deep=True)
+    result.SetName(name)
+    return result
+
+
+def _triangles(mesh):
+    """The polygons of a vtkPolyData as an (n, 3) numpy array; None unless all are triangles."""
+    import numpy as np
+    from vtkmodules.util.numpy_support import vtk_to_numpy
+    polys = mesh.GetPolys()
+    offsets = vtk_to_numpy(polys.GetOffsetsArray())
+    if mesh.GetNumberOfCells() != mesh.GetNumberOfPolys() or np.any(np.diff(offsets) != 3):
+        return None
+    return vtk_to_numpy(polys.GetConnectivityArray()).reshape(-1, 3)
+
+
+def _check_same_connectivity(given, mesh, source, source_name):
+    """Raises InputError naming the first difference between the vertex counts or triangles of
+    `given` (source_data) and `mesh` (input `source`), as ``surfacemap transfer --source-data``
+    does: the same triangles in the same order, each possibly starting at another corner."""
+    import numpy as np
+    tail = f": not the connectivity of input {source}"
+    if given.GetNumberOfPoints() != mesh.GetNumberOfPoints():
+        raise InputError(f"source_data has {given.GetNumberOfPoints()} vertices, {source_name} has "
+                         f"{mesh.GetNumberOfPoints()}{tail}")
+    mine, theirs = _triangles(given), _triangles(mesh)
+    if mine is None or len(mine) != len(theirs):
+        raise InputError(f"source_data has {given.GetNumberOfCells()} cells, {source_name} has "
+                         f"{len(theirs)} triangles{tail}")
+    same = np.zeros(len(mine), dtype=bool)
+    for shift in range(3):
+        same |= np.all(mine == np.roll(theirs, shift, axis=1), axis=1)
+    if not same.all():
+        t = int(np.argmin(same))
+        raise InputError(f"source_data: triangle {t} is {tuple(map(int, mine[t]))}, in {source_name} it is "
+                         f"{tuple(map(int, theirs[t]))}{tail}")
+
+
+def _check_array_names(mesh, arrays, categorical, continuous):
+    """Raises InputError for array names (arrays=, categorical=, continuous=) the source_data lacks."""
+    data = mesh.GetPointData()
+    for names in (arrays, categorical, continuous):
+        for name in [] if names is None or isinstance(names, (str, bytes)) else names:
+            if isinstance(name, str) and data.GetAbstractArray(name) is None:
+                raise InputError(f"source_data has no point array {name!r}")
 
 
 def map_file_stamp(path, name):

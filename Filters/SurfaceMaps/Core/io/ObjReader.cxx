@@ -26,8 +26,35 @@ long long resolveIndex(long long index, std::size_t count)
   return -1;
 }
 
+// Per-corner values: the file's list of values and, per corner read so far,
+// an index into it (-1 none).
+template<typename Value>
+struct CornerValues
+{
+  std::vector<Value> values;
+  std::vector<long long> corners;
+  bool any = false;
+
+  // One entry per corner, NaN where a corner has none; empty if no corner has one.
+  std::vector<Value> perCorner() const
+  {
+    std::vector<Value> result;
+    if (!this->any)
+    {
+      return result;
+    }
+    result.reserve(this->corners.size());
+    for (long long i : this->corners)
+    {
+      result.push_back(
+        i >= 0 ? this->values[i] : Value::Constant(std::numeric_limits<double>::quiet_NaN()));
+    }
+    return result;
+  }
+};
+
 // Reads an OBJ file line by line. Indices are resolved as they come: OBJ
-// refers only to vertices and texture coordinates defined before.
+// refers only to vertices, texture coordinates and normals defined before.
 class ObjParser
 {
 public:
@@ -48,17 +75,22 @@ private:
   int readNumbers(const char* what, double* values, int keep);
   void readVertex();
   void readTexCoord();
+  void readNormal();
   void readFace();
   void readCorner(std::string_view token);
+  template<typename Value>
+  void readCornerIndex(std::string_view part,
+    std::string_view token,
+    const char* what,
+    CornerValues<Value>& into);
   PolygonMesh finish();
 
   const std::string& Name;
   TextScanner Scanner;
   PolygonMesh Mesh;
-  std::vector<Eigen::Vector2d> TexCoords;
-  std::vector<long long> CornerTex; // index into TexCoords per corner, -1 none
+  CornerValues<Eigen::Vector2d> TexCoords;
+  CornerValues<Eigen::Vector3d> Normals;
   std::vector<int> Corners;
-  bool AnyTex = false;
 };
 
 PolygonMesh ObjParser::parse()
@@ -74,6 +106,10 @@ PolygonMesh ObjParser::parse()
     {
       this->readTexCoord();
     }
+    else if (keyword == "vn")
+    {
+      this->readNormal();
+    }
     else if (keyword == "f")
     {
       this->readFace();
@@ -82,7 +118,7 @@ PolygonMesh ObjParser::parse()
     {
       ++this->Mesh.nonPolygonCells;
     }
-    // Empty lines, vn, vp, o, g, s, usemtl, mtllib and others carry nothing we use.
+    // Empty lines, vp, o, g, s, usemtl, mtllib and others carry nothing we use.
   }
   return this->finish();
 }
@@ -131,7 +167,18 @@ void ObjParser::readTexCoord()
   {
     this->fail("texture coordinate has " + std::to_string(n) + " values");
   }
-  this->TexCoords.emplace_back(uv[0], uv[1]);
+  this->TexCoords.values.emplace_back(uv[0], uv[1]);
+}
+
+void ObjParser::readNormal()
+{
+  double xyz[3];
+  const int n = this->readNumbers("normal coordinate", xyz, 3);
+  if (n != 3)
+  {
+    this->fail("normal has " + std::to_string(n) + " coordinates (3 expected)");
+  }
+  this->Normals.values.emplace_back(xyz[0], xyz[1], xyz[2]);
 }
 
 void ObjParser::readFace()
@@ -156,7 +203,7 @@ void ObjParser::readFace()
   this->Mesh.addFace(this->Corners.begin(), this->Corners.end());
 }
 
-// One corner "v", "v/t", "v//n" or "v/t/n"; normals are ignored.
+// One corner "v", "v/t", "v//n" or "v/t/n".
 void ObjParser::readCorner(std::string_view token)
 {
   const std::size_t slash = token.find('/');
@@ -171,23 +218,40 @@ void ObjParser::readCorner(std::string_view token)
     this->fail("face refers to vertex " + std::to_string(v) + ", but " +
       std::to_string(this->Mesh.points.size()) + " vertices are defined before it");
   }
-  long long ti = -1;
+  std::string_view tex, normal;
   if (slash != std::string_view::npos)
   {
-    std::string_view rest = token.substr(slash + 1);
-    const std::string_view tex = rest.substr(0, rest.find('/'));
-    if (!tex.empty())
-    {
-      long long t;
-      if (!parseInt(tex, t) || (ti = resolveIndex(t, this->TexCoords.size())) < 0)
-      {
-        this->fail("bad texture index in face corner '" + std::string(token) + "'");
-      }
-      this->AnyTex = true;
-    }
+    const std::string_view rest = token.substr(slash + 1);
+    const std::size_t second = rest.find('/');
+    tex = rest.substr(0, second);
+    normal = second == std::string_view::npos ? std::string_view() : rest.substr(second + 1);
   }
+  this->readCornerIndex(tex, token, "texture", this->TexCoords);
+  this->readCornerIndex(normal, token, "normal", this->Normals);
   this->Corners.push_back(static_cast<int>(vi));
-  this->CornerTex.push_back(ti);
+}
+
+// The corner's index `part` (empty: none) into `into`, recorded for this
+// corner; an index that is not a number or refers to no value defined
+// before fails naming the corner.
+template<typename Value>
+void ObjParser::readCornerIndex(std::string_view part,
+  std::string_view token,
+  const char* what,
+  CornerValues<Value>& into)
+{
+  long long index = -1;
+  if (!part.empty())
+  {
+    long long i;
+    if (!parseInt(part, i) || (index = resolveIndex(i, into.values.size())) < 0)
+    {
+      this->fail(std::string("bad ") + what + " index in face corner '" + std::string(token) +
+        "' (" + std::to_string(into.values.size()) + " defined before it)");
+    }
+    into.any = true;
+  }
+  into.corners.push_back(index);
 }
 
 PolygonMesh ObjParser::finish()
@@ -198,15 +262,8 @@ PolygonMesh ObjParser::finish()
     throw InputError(
       this->Name + ": the file ends in the vertex list without faces; it looks truncated");
   }
-  if (this->AnyTex)
-  {
-    const double nan = std::numeric_limits<double>::quiet_NaN();
-    this->Mesh.cornerTexCoords.reserve(this->CornerTex.size());
-    for (long long t : this->CornerTex)
-    {
-      this->Mesh.cornerTexCoords.push_back(t >= 0 ? this->TexCoords[t] : Eigen::Vector2d(nan, nan));
-    }
-  }
+  this->Mesh.cornerTexCoords = this->TexCoords.perCorner();
+  this->Mesh.cornerNormals = this->Normals.perCorner();
   return std::move(this->Mesh);
 }
 

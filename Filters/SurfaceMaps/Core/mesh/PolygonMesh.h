@@ -32,7 +32,7 @@ struct PolygonMeshPointArray
   std::vector<double> values;
 };
 
-/// Indexed polygon mesh with optional per-corner texture coordinates. This is
+/// Indexed polygon mesh with optional per-corner texture coordinates and normals. This is
 /// what readers produce and what validation inspects; it may hold anything a
 /// file can contain (non-triangles, bad indices, non-manifold configurations).
 /// Once validated it is turned into a HalfedgeMesh for the algorithms.
@@ -44,6 +44,9 @@ struct PolygonMesh
   std::vector<int> faceVertices;
   /// Empty, or one entry per entry of faceVertices (NaN where a corner has none).
   std::vector<Eigen::Vector2d> cornerTexCoords;
+  /// Empty, or one entry per entry of faceVertices (NaN where a corner has
+  /// none): the file's per-corner normals (OBJ `vn`), as given (not normalised).
+  std::vector<Eigen::Vector3d> cornerNormals;
   /// Per-vertex arrays of the file, one tuple per entry of points.
   std::vector<PolygonMeshPointArray> pointArrays;
   /// Cells of the source that are not polygons (lines, vertices, strips).

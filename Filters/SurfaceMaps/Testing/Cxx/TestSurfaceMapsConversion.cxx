@@ -13,6 +13,9 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <limits>
+
 using namespace surfacemaps;
 
 TEST(SurfaceMapsConversion, PolyDataToHalfedgeMeshAndBack)
@@ -74,6 +77,33 @@ TEST(SurfaceMapsConversion, CornerTexCoordsSurviveTheRoundTrip)
   for (std::size_t i = 0; i < m.cornerTexCoords.size(); ++i)
   {
     EXPECT_EQ(back.cornerTexCoords[i], m.cornerTexCoords[i]);
+  }
+}
+
+TEST(SurfaceMapsConversion, CornerNormalsSurviveTheRoundTrip)
+{
+  PolygonMesh m = makeTetrahedron();
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  for (std::size_t i = 0; i < m.faceVertices.size(); ++i)
+  {
+    m.cornerNormals.push_back(i == 4 ? Eigen::Vector3d(nan, nan, nan)
+                                     : Eigen::Vector3d(0.1 * i, -1.0, 0.5 + i));
+  }
+  vtkSmartPointer<vtkPolyData> poly = vtkSurfaceMapsConversion::ToPolyData(m);
+  vtkDataArray* normals = poly->GetCellData()->GetArray("CornerNormals");
+  ASSERT_NE(normals, nullptr);
+  ASSERT_EQ(normals->GetNumberOfComponents(), 9);
+  EXPECT_EQ(poly->GetCellData()->GetArray("CornerTCoords"), nullptr);
+  EXPECT_EQ(normals->GetComponent(1, 0), 0.1 * 3); // face 1, corner 0 is corner 3
+  EXPECT_TRUE(std::isnan(normals->GetComponent(1, 3))); // corner 4 has none
+  EXPECT_EQ(normals->GetComponent(1, 8), 0.5 + 5);      // face 1, corner 2: z of corner 5
+  const PolygonMesh back = vtkSurfaceMapsConversion::ToPolygonMesh(poly);
+  ASSERT_EQ(back.cornerNormals.size(), m.cornerNormals.size());
+  for (std::size_t i = 0; i < m.cornerNormals.size(); ++i)
+  {
+    EXPECT_TRUE(i == 4 ? back.cornerNormals[i].array().isNaN().all()
+                       : back.cornerNormals[i] == m.cornerNormals[i])
+      << "corner " << i;
   }
 }
 

@@ -307,6 +307,75 @@ struct ScratchFile
 
 } // namespace
 
+TEST(SurfaceMeshReader, ObjNormalsBecomeCornerNormals)
+{
+  // A tetrahedron: faces `v/t/n`, `v//n`, `v/t` and `v` (no normals: NaN).
+  const std::string tetrahedron = "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nvt 0.25 0.5\n"
+                                  "vn 0 0 -1\nvn 0 -1 0\nvn -1 0 0\nvn 0.6 0.8 0\n";
+  const ScratchFile file("normals.obj",
+    tetrahedron + "f 1/1/1 3/1/1 2/1/1\nf 1//2 2//2 4//4\nf 1/1 4/1 3/1\nf 2 3 4\n");
+  const ReadResult r = read(file.Path);
+  ASSERT_EQ(r.Error, "");
+  ASSERT_EQ(r.Output->GetNumberOfPoints(), 4);
+  vtkDataArray* normals = r.Output->GetCellData()->GetArray("CornerNormals");
+  ASSERT_NE(normals, nullptr);
+  ASSERT_EQ(normals->GetNumberOfComponents(), 9);
+  ASSERT_EQ(normals->GetNumberOfTuples(), 4);
+  double n[9];
+  normals->GetTuple(0, n);
+  EXPECT_EQ(std::vector<double>(n, n + 9), std::vector<double>({ 0, 0, -1, 0, 0, -1, 0, 0, -1 }));
+  normals->GetTuple(1, n);
+  EXPECT_EQ(std::vector<double>(n, n + 9), std::vector<double>({ 0, -1, 0, 0, -1, 0, 0.6, 0.8, 0 }));
+  for (vtkIdType face : { 2, 3 })
+  {
+    normals->GetTuple(face, n);
+    for (double c : n)
+    {
+      EXPECT_TRUE(std::isnan(c)) << "face " << face;
+    }
+  }
+  EXPECT_NE(r.Output->GetCellData()->GetArray("CornerTCoords"), nullptr);
+
+  // Faces that refer to no normal: no array (declared `vn` lines alone do not make one).
+  const ScratchFile plain("plain.obj", tetrahedron + "f 1 3 2\nf 1 2 4\nf 1 4 3\nf 2 3 4\n");
+  const ReadResult p = read(plain.Path);
+  ASSERT_EQ(p.Error, "");
+  EXPECT_EQ(p.Output->GetCellData()->GetArray("CornerNormals"), nullptr);
+}
+
+TEST(SurfaceMeshReader, SpotKeepsItsNormalsPerCorner)
+{
+  // Face 1 of spot.obj is "f 4/4/4 3/5/3 2/6/2": its first corner has vn 4.
+  const ReadResult r = read(Data + "/spot.obj");
+  vtkDataArray* normals = r.Output->GetCellData()->GetArray("CornerNormals");
+  ASSERT_NE(normals, nullptr);
+  EXPECT_EQ(normals->GetNumberOfTuples(), 5856);
+  std::ifstream in(Data + "/spot.obj");
+  std::string line;
+  int vn = 0;
+  while (std::getline(in, line) && !(line.rfind("vn ", 0) == 0 && ++vn == 4))
+  {
+  }
+  double x, y, z;
+  ASSERT_EQ(std::sscanf(line.c_str(), "vn %lf %lf %lf", &x, &y, &z), 3);
+  EXPECT_EQ(normals->GetComponent(1, 0), x);
+  EXPECT_EQ(normals->GetComponent(1, 1), y);
+  EXPECT_EQ(normals->GetComponent(1, 2), z);
+}
+
+TEST(SurfaceMeshReader, BadObjNormalsNameFileAndLine)
+{
+  const ScratchFile line("bad_normal_line.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nvn 0 0\nf 1 2 3\n");
+  EXPECT_NE(read(line.Path).Error.find(line.Path + ":4: normal has 2 coordinates"), std::string::npos)
+    << read(line.Path).Error;
+  const ScratchFile index(
+    "bad_normal_index.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nvn 0 0 1\nf 1//1 2//3 3//1\n");
+  const ReadResult r = read(index.Path);
+  EXPECT_NE(r.Error.find(index.Path + ":5: bad normal index in face corner '2//3'"), std::string::npos)
+    << r.Error;
+  EXPECT_EQ(r.Output->GetNumberOfPoints(), 0);
+}
+
 TEST(SurfaceMeshReader, LandmarkPointsSnapToTheClosestVertex)
 {
   const std::vector<VtsLine> blob = blobLandmarks();
