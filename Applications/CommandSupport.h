@@ -224,10 +224,12 @@ void writeFileAtomically(const std::string& path, const std::string& content);
 void writePolyDataAtomically(vtkPolyData* data, const std::string& path);
 
 /// Writes the triangles of `data` as Wavefront OBJ through
-/// writeFileAtomically: `v` per point, and, when `data` has the cell array
-/// "CornerTCoords" (6 components), one `vt` per distinct corner value and
-/// faces `f v/vt`, so texture seams stay exact; otherwise faces `f v`. OBJ
-/// holds no other data: point and cell arrays are not written.
+/// writeFileAtomically: `v` per point, and, from the cell arrays
+/// "CornerTCoords" (6 components) and "CornerNormals" (9), one `vt` / `vn`
+/// per distinct corner value with faces `f v/vt/vn` (`v/vt`, `v//vn`, `v`),
+/// so texture seams and sharp normals stay exact; a face with a non-finite
+/// corner value goes without that attribute. OBJ holds no other data: other
+/// point and cell arrays are not written.
 void writeObjAtomically(vtkPolyData* data, const std::string& path);
 
 /// writeObjAtomically for a path ending in .obj (any case), else

@@ -46,7 +46,11 @@ const std::string EmbedHelpText = std::string(
   "unit sphere and writes MESH with the point array SpherePosition to OUT.vtp.\n"
   "The embedding is certified with exact orientation predicates.\n"
   "\n"
-  "  -o, --output OUT.vtp  output file (VTK XML PolyData), written atomically\n"
+  "  -o, --output OUT.vtp  output file (VTK XML PolyData), written atomically;\n"
+  "                        OUT.obj: an OBJ with the points and MESH's\n"
+  "                        per-corner texture coordinates and normals, no\n"
+  "                        arrays (with --on-sphere: MESH's texture on the\n"
+  "                        sphere)\n"
   "  --on-sphere           put the output points on the sphere (for viewing);\n"
   "                        the original coordinates go to InputPosition\n"
   "  --landmarks FILE      landmark file carried along as the Landmarks array\n"
@@ -142,7 +146,7 @@ int runEmbed(const std::vector<std::string>& args)
     return ExitNoCertifiedResult;
   }
   vtkPolyData* result = embedding->GetOutput();
-  if (!succeeds([&] { writePolyDataAtomically(result, output); }))
+  if (!succeeds([&] { writeMeshAtomically(result, output); }))
   {
     return ExitBadInput;
   }

@@ -63,3 +63,20 @@ def test_rotation_onto_a_reference(tmp_path):
     assert "rotated onto" in r.stdout and "rad (RMS)" in r.stdout
     r = run("embed", data("blob.off"), "--reference", data("ellipsoid.obj"), "-o", out)
     assert r.returncode == 2 and "no SpherePosition array" in r.stderr
+
+
+def test_obj_output_keeps_corner_texture_coordinates_and_normals(tmp_path):
+    # spot.obj has 'vt' and 'vn' per corner: written back as OBJ, both round-trip exactly.
+    import surfacemaps
+    out = tmp_path / "spot_again.obj"
+    r = run("embed", data("spot.obj"), "-o", out)
+    assert r.returncode == 0, r.stderr
+    before, after = surfacemaps.read_mesh(data("spot.obj")), surfacemaps.read_mesh(out)
+    assert after.GetNumberOfPoints() == before.GetNumberOfPoints()
+    assert all(after.GetPoint(v) == before.GetPoint(v) for v in range(before.GetNumberOfPoints()))
+    for name in ("CornerTCoords", "CornerNormals"):
+        a, b = before.GetCellData().GetArray(name), after.GetCellData().GetArray(name)
+        assert a is not None and b is not None, name
+        assert all(a.GetTuple(c) == b.GetTuple(c) for c in range(a.GetNumberOfTuples())), name
+    text = out.read_text()
+    assert "\nvt " in text and "\nvn " in text and "SpherePosition" not in text
