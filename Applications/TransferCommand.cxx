@@ -3,6 +3,8 @@
 #include "CommandSupport.h"
 #include "Commands.h"
 #include "MapDirectory.h"
+#include "Pictures.h"
+#include "TransferPictures.h"
 
 #include "vtkSurfaceMapTransfer.h"
 
@@ -32,7 +34,7 @@ namespace
 const char* const TransferHelpIntro =
   "usage: surfacemap transfer MAPDIR --from I --to J [--arrays NAME ...]\n"
   "                           [--source-data MESH] [--categorical NAME]\n"
-  "                           [--continuous NAME] -o OUT.vtp\n"
+  "                           [--continuous NAME] [--pictures] -o OUT.vtp\n"
   "\n"
   "Carries the point data of input I of a map onto the vertices of input J\n"
   "through the exact map that 'surfacemap map' computed (no optimisation runs):\n"
@@ -63,13 +65,25 @@ const char* const TransferHelpIntro =
   "                     connectivity (the same vertex count and the same\n"
   "                     triangles in the same order, as a copy of input I with\n"
   "                     new arrays has), else exit code 2 naming the mismatch\n"
-  "  -o, --output FILE  the output .vtp (checked for writing before computing)\n";
+  "  -o, --output FILE  the output .vtp (checked for writing before computing)\n"
+  "  --pictures         also write, beside FILE, one PNG per carried numeric\n"
+  "                     array NAME: FILE without its extension + _NAME.png\n"
+  "                     (e.g. out_Labels.png), input I with its array and\n"
+  "                     input J with the received one side by side in the\n"
+  "                     same colours: continuous arrays on a colour map with a\n"
+  "                     legend, categorical ones one flat colour per label\n"
+  "                     (each triangle in its corners' majority label),\n"
+  "                     unsigned char RGB(A) arrays as colours. Rendered with\n"
+  "                     VTK through OpenGL: this needs a display (on a\n"
+  "                     machine without one run under 'xvfb-run -a');\n"
+  "                     without a display the command stops with exit code 2\n"
+  "                     before computing\n";
 
 const char* const TransferExitCodes =
   "\n"
   "Exit code 0 on success, 2 for bad usage or input (missing map files, an\n"
-  "unknown array name, an output that cannot be written), 1 for an internal\n"
-  "error.\n";
+  "unknown array name, an output that cannot be written, no display for\n"
+  "--pictures), 1 for an internal error.\n";
 
 const std::string TransferHelpText =
   std::string(TransferHelpIntro) + ArrayTransferFlagsHelp + TransferExitCodes;
@@ -104,6 +118,7 @@ struct TransferArguments
   std::string directory, output, sourceData;
   int from = -1, to = -1;
   std::vector<std::string> arrays;
+  bool pictures = false;
 };
 
 TransferArguments parseArguments(const std::vector<std::string>& args,
@@ -137,6 +152,10 @@ TransferArguments parseArguments(const std::vector<std::string>& args,
     else if (a == "--arrays")
     {
       inArrays = sawArrays = true;
+    }
+    else if (a == "--pictures")
+    {
+      parsed.pictures = true;
     }
     else if (parseArrayTransferFlag(transfer, args, i))
     {
@@ -404,7 +423,8 @@ int runTransfer(const std::vector<std::string>& args)
   const TransferArguments arguments = parseArguments(args, transfer);
   refuseMapFileAsOutput(arguments.output, arguments.directory);
   const std::vector<std::string> files = mapFiles(arguments);
-  if (!findMapFiles(arguments.directory, files) || !canWrite(arguments.output) ||
+  if ((arguments.pictures && !checkDisplayForPictures()) ||
+    !findMapFiles(arguments.directory, files) || !canWrite(arguments.output) ||
     !succeeds([&] { verifyMapFiles(arguments.directory, files); }))
   {
     return ExitBadInput;
@@ -424,6 +444,12 @@ int runTransfer(const std::vector<std::string>& args)
     return ExitBadInput;
   }
   reportTransfer(arguments, transfer);
+  const auto pictures = [&]
+  { printPictures(writeTransferPictures(transfer, arguments.from, arguments.to, arguments.output)); };
+  if (arguments.pictures && !succeeds(pictures))
+  {
+    return ExitBadInput;
+  }
   return ExitOk;
 }
 
