@@ -14,6 +14,7 @@
 #include "vtkPolyDataMapper.h"
 #include "vtkSmartPointer.h"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
@@ -25,8 +26,12 @@ namespace
 
 // The distortion shown darkest (as surfaces.render draws it).
 const double DistortionShownDarkest = 3.0;
-// Squares of the checkerboard along the longest side of the source's box.
-const int CheckerSquares = 8;
+// Squares of the checkerboard along the longest side of the source's box: at
+// most 8, fewer on coarse meshes so that every square spans several vertices.
+int checkerSquares(vtkIdType vertices)
+{
+  return std::max(3, std::min(8, static_cast<int>(std::lround(std::sqrt(vertices) / 6.0))));
+}
 
 // White at 1 (no distortion) to red at DistortionShownDarkest, dark red above.
 vtkSmartPointer<vtkLookupTable> distortionTable()
@@ -63,6 +68,7 @@ vtkSmartPointer<vtkLookupTable> checkerTable()
 vtkSmartPointer<vtkDoubleArray> checkerboard(vtkPolyData* source)
 {
   vtkSmartPointer<vtkDoubleArray> positions = sourcePositions(source);
+  const int squares = checkerSquares(source->GetNumberOfPoints());
   auto checks = vtkSmartPointer<vtkDoubleArray>::New();
   checks->SetName("Checkerboard");
   checks->SetNumberOfTuples(positions->GetNumberOfTuples());
@@ -71,8 +77,7 @@ vtkSmartPointer<vtkDoubleArray> checkerboard(vtkPolyData* source)
     long cells = 0;
     for (int k = 0; k < 3; ++k)
     {
-      cells +=
-        static_cast<long>(std::floor((positions->GetComponent(v, k) + 2.0) * CheckerSquares / 2.0));
+      cells += static_cast<long>(std::floor((positions->GetComponent(v, k) + 2.0) * squares / 2.0));
     }
     checks->SetValue(v, static_cast<double>(cells % 2));
   }

@@ -26,8 +26,10 @@ struct MapSides
 ///                             as MaxStretch: 1 white to 3 dark red, above 3
 ///                             darkest
 ///   <prefix>checkerboard.png  a checkerboard of the source's positions
-///                             (sourcePositions), the same on both sides: on
-///                             the target it shows how the map carries it
+///                             (sourcePositions; 3 to 8 squares along the
+///                             longest side, fewer on coarse meshes), the
+///                             same on both sides: on the target it shows
+///                             how the map carries it
 /// Throws std::runtime_error naming a file that cannot be written.
 void writeMapPictures(const MapSides& sides, vtkPolyData* result, const std::string& prefix);
 

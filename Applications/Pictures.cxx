@@ -128,7 +128,16 @@ vtkSmartPointer<vtkRenderer> legendRenderer(vtkScalarsToColors* colours,
   bar->SetPosition(0.05, 0.1);
   bar->SetWidth(0.9);
   bar->SetHeight(0.8);
-  for (vtkTextProperty* text : { bar->GetTitleTextProperty(), bar->GetLabelTextProperty() })
+  if (colours->GetIndexedLookup())
+  {
+    // Categorical colours are labelled by annotations, which the bar draws
+    // on its left: leave them room inside the legend's viewport.
+    bar->SetPosition(0.45, 0.1);
+    bar->SetWidth(0.5);
+  }
+  for (vtkTextProperty* text : { bar->GetTitleTextProperty(),
+         bar->GetLabelTextProperty(),
+         bar->GetAnnotationTextProperty() }) // annotations: the labels of categorical colours
   {
     text->SetColor(0.1, 0.1, 0.1);
     text->ItalicOff();

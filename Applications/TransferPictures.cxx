@@ -113,7 +113,8 @@ vtkSmartPointer<vtkPolyData> cellLabels(vtkPolyData* mesh, const std::string& na
 {
   vtkNew<vtkPolyData> labelled;
   labelled->CopyStructure(mesh);
-  labelled->GetPointData()->AddArray(mesh->GetPointData()->GetArray(name.c_str()));
+  // VTK 9.1's categorical mode converts the active scalars only.
+  labelled->GetPointData()->SetScalars(mesh->GetPointData()->GetArray(name.c_str()));
   vtkNew<vtkPointDataToCellData> toCells;
   toCells->SetInputData(labelled);
   toCells->CategoricalDataOn();

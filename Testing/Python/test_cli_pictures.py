@@ -42,21 +42,44 @@ def picture(path, size):
     return pixels.reshape(size[1], size[0], 3)
 
 
-def assert_two_surfaces(pixels, legend):
-    """Both panels of a side-by-side picture show a surface: enough pixels that are not the white
-    background (the rightmost 12 % hold the legend when there is one)."""
-    width = pixels.shape[1]
-    surfaces = pixels[:, : int(width * (0.88 if legend else 1.0))]
+def panels(pixels, legend):
+    """The two surface panels of a side-by-side picture (the rightmost 12 % hold the legend when
+    there is one)."""
+    surfaces = pixels[:, : int(pixels.shape[1] * (0.88 if legend else 1.0))]
     half = surfaces.shape[1] // 2
-    for panel in (surfaces[:, :half], surfaces[:, half:]):
+    return surfaces[:, :half], surfaces[:, half:]
+
+
+def assert_two_surfaces(pixels, legend, coloured=True):
+    """Both panels show a surface (enough pixels that are not the white background) and, if
+    `coloured`, in colour: enough saturated pixels, not the grey of an unmapped array."""
+    for panel in panels(pixels, legend):
         drawn = np.any(panel < 235, axis=2).mean()
         assert drawn > 0.05, drawn
+        if coloured:
+            channels = panel.astype(int)
+            saturated = (channels.max(axis=2) - channels.min(axis=2) > 50).mean()
+            assert saturated > 0.05, saturated
 
 
 def assert_reddish(pixels):
-    """Some pixels are clearly red (distortion above 1 somewhere)."""
-    red = (pixels[..., 0].astype(int) - pixels[..., 2].astype(int)) > 60
-    assert red.sum() > 100
+    """Some pixels on both sides are clearly red (distortion above 1.5 there)."""
+    for panel in panels(pixels, legend=True):
+        red = (panel[..., 0].astype(int) - panel[..., 2].astype(int)) > 40
+        assert red.sum() > 100, red.sum()
+
+
+def hue_count(panel):
+    """How many distinct hues a panel's saturated pixels have: runs of neighbouring 10-degree hue
+    steps (on the circle) that each hold more than 1 % of them. Shading changes the brightness of
+    a flat colour, not its hue."""
+    import colorsys
+    channels = panel.reshape(-1, 3).astype(float) / 255.0
+    saturated = channels[channels.max(axis=1) - channels.min(axis=1) > 0.2]
+    steps = [int(colorsys.rgb_to_hsv(*c)[0] * 36) % 36 for c in saturated[::7]]
+    counts = np.bincount(steps, minlength=36)
+    used = [counts[h] > 0.01 * len(steps) for h in range(36)]
+    return sum(1 for h in range(36) if used[h] and not used[h - 1])
 
 
 # evaluate SOURCE TARGET
@@ -71,7 +94,7 @@ def test_evaluate_pair_pictures(tmp_path):
         "checkerboard.png", "distortion.png", "distortion_curve.csv", "distortion_curve.png",
         "evaluated.vtp", "summary.json", "triangles.csv"]  # no temporary left
     heat = picture(out / "distortion.png", (1200, 600))
-    assert_two_surfaces(heat, legend=True)
+    assert_two_surfaces(heat, legend=True, coloured=False)  # mostly near 1: white
     assert_reddish(heat)
     assert_two_surfaces(picture(out / "checkerboard.png", (1200, 600)), legend=False)
     picture(out / "distortion_curve.png", (800, 600))
@@ -137,7 +160,8 @@ def test_evaluate_map_directory_pictures(map_dir, tmp_path):
     assert r.returncode == 0, r.stderr
     assert "distortion_curves_<j>.png" in r.stdout
     for kind in ("approximating", "exact"):
-        assert_two_surfaces(picture(out / f"{kind}_1_distortion.png", (1200, 600)), legend=True)
+        assert_two_surfaces(picture(out / f"{kind}_1_distortion.png", (1200, 600)), legend=True,
+                            coloured=False)
         assert_two_surfaces(picture(out / f"{kind}_1_checkerboard.png", (1200, 600)), legend=False)
     picture(out / "distortion_curves_1.png", (800, 600))
     assert not [p for p in os.listdir(out) if ".tmp" in p]
@@ -164,6 +188,9 @@ def test_transfer_pictures(map_dir, tmp_path):
     # Continuous arrays (and the categorical one: four labels) have a legend.
     for name in names:
         assert_two_surfaces(picture(tmp_path / f"received_{name}.png", (1200, 600)), legend=True)
+    # Labels in flat colours: four hues on the source side, the same on the received side.
+    for panel in panels(picture(tmp_path / "received_Region.png", (1200, 600)), legend=True):
+        assert hue_count(panel) == 4
 
 
 def test_transfer_picture_names(map_dir, tmp_path):
