@@ -270,11 +270,18 @@ std::string surfacemap::missingDisplay()
   {
     return "no display to render on (DISPLAY is not set)";
   }
-  ::Display* display = XOpenDisplay(nullptr);
-  if (!display)
+  // The connection stays open until the process ends: an X server (Xvfb
+  // under xvfb-run) resets when its last client leaves, and a picture's
+  // window opened during that reset fails (VTK aborts or crashes). Every
+  // picture window closes its own connection, so this one keeps the server up.
+  static ::Display* held = nullptr;
+  if (!held)
+  {
+    held = XOpenDisplay(nullptr);
+  }
+  if (!held)
   {
     return std::string("cannot open the display '") + name + "' to render on";
   }
-  XCloseDisplay(display);
   return "";
 }

@@ -19,8 +19,9 @@ class vtkScalarsToColors;
 namespace surfacemap
 {
 
-/// Empty when an X display can be opened for rendering; otherwise why not,
-/// as a sentence for the user.
+/// Empty when an X display can be opened for rendering (its connection then
+/// stays open until the process ends, which keeps the X server from resetting
+/// between pictures); otherwise why not, as a sentence for the user.
 std::string missingDisplay();
 
 /// True if --pictures can be drawn; otherwise prints why, with the advice to

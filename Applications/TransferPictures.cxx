@@ -17,10 +17,12 @@
 #include "vtkVariant.h"
 
 #include <algorithm>
+#include <array>
 #include <cctype>
 #include <cmath>
 #include <filesystem>
 #include <set>
+#include <utility>
 
 namespace surfacemap
 {
@@ -40,6 +42,13 @@ struct TransferSides
   vtkPolyData* target;
   std::string sourceCaption, targetCaption;
 };
+
+// The two sides as (mesh, caption), source first.
+std::array<std::pair<vtkPolyData*, std::string>, 2> bothSides(const TransferSides& sides)
+{
+  return { std::make_pair(sides.source, sides.sourceCaption),
+    std::make_pair(sides.target, sides.targetCaption) };
+}
 
 // Arrays that are not data carried from the source (TCoords: the texture
 // coordinates, for a textured picture).
@@ -94,8 +103,7 @@ void writeContinuousPicture(const TransferSides& sides,
     colours->SetVectorModeToMagnitude();
   }
   std::vector<SurfacePanel> panels;
-  for (const auto& [mesh, caption] : { std::make_pair(sides.source, sides.sourceCaption),
-         std::make_pair(sides.target, sides.targetCaption) })
+  for (const auto& [mesh, caption] : bothSides(sides))
   {
     vtkSmartPointer<vtkPolyDataMapper> mapper = mapperOf(mesh, name, false);
     mapper->SetColorModeToMapScalars();
@@ -158,8 +166,7 @@ void writeCategoricalPicture(const TransferSides& sides,
   vtkSmartPointer<vtkLookupTable> colours =
     labelTable(sides.source->GetPointData()->GetArray(name.c_str()));
   std::vector<SurfacePanel> panels;
-  for (const auto& [mesh, caption] : { std::make_pair(sides.source, sides.sourceCaption),
-         std::make_pair(sides.target, sides.targetCaption) })
+  for (const auto& [mesh, caption] : bothSides(sides))
   {
     vtkSmartPointer<vtkPolyDataMapper> mapper = mapperOf(cellLabels(mesh, name), name, true);
     mapper->SetColorModeToMapScalars();
@@ -176,8 +183,7 @@ void writeColourPicture(const TransferSides& sides,
   const std::string& path)
 {
   std::vector<SurfacePanel> panels;
-  for (const auto& [mesh, caption] : { std::make_pair(sides.source, sides.sourceCaption),
-         std::make_pair(sides.target, sides.targetCaption) })
+  for (const auto& [mesh, caption] : bothSides(sides))
   {
     vtkSmartPointer<vtkPolyDataMapper> mapper = mapperOf(mesh, name, false);
     mapper->SetColorModeToDirectScalars();
