@@ -4,6 +4,7 @@
 #include "Commands.h"
 #include "EvaluateMapDirectory.h"
 #include "EvaluateMeshPair.h"
+#include "Pictures.h"
 
 #include <filesystem>
 #include <string>
@@ -15,7 +16,9 @@ namespace surfacemap
 
 const char* const EvaluateHelp =
   "usage: surfacemap evaluate SOURCE TARGET [--originals A B] [--output-dir DIR]\n"
+  "                           [--pictures]\n"
   "       surfacemap evaluate MAPDIR [--inputs A B ...] [--output-dir DIR]\n"
+  "                           [--pictures]\n"
   "\n"
   "Measures the map between two meshes of identical connectivity (for example\n"
   "the common triangulation lifted onto two inputs, or input A and input A\n"
@@ -37,6 +40,17 @@ const char* const EvaluateHelp =
   "                    (SOURCE with the per-triangle figures as cell data);\n"
   "                    DIR is created if missing and checked for writing\n"
   "                    before anything is computed (both forms)\n"
+  "  --pictures        also write PNGs into DIR (the first form needs\n"
+  "                    --output-dir): DIR/distortion.png (SOURCE and TARGET\n"
+  "                    side by side, each triangle coloured by its distortion,\n"
+  "                    1 white to 3 and above dark red), DIR/checkerboard.png\n"
+  "                    (a checkerboard of SOURCE's positions on both: on\n"
+  "                    TARGET it shows how the map carries the squares) and\n"
+  "                    DIR/distortion_curve.png (the cumulative curve).\n"
+  "                    Rendered with VTK through OpenGL: this needs a display\n"
+  "                    (on a machine without one run under 'xvfb-run -a');\n"
+  "                    without a display the command stops with exit code 2\n"
+  "                    before computing\n"
   "\n"
   "The second form evaluates every map in MAPDIR, an output directory of\n"
   "'surfacemap map' (common_<i>.vtp, mapped_<i>.vtp, report.json), for each\n"
@@ -61,10 +75,15 @@ const char* const EvaluateHelp =
   "                                      (a checkerboard of it shows the map)\n"
   "  exact_<j>_triangles.csv, exact_<j>_distortion_curve.csv, exact_<j>.vtp\n"
   "                                      the same for input 0 -> mapped_j\n"
+  "  with --pictures, for <kind> approximating (common_0 -> common_j) and\n"
+  "  exact (input 0 -> mapped_j):\n"
+  "  <kind>_<j>_distortion.png           as above, the map's two sides\n"
+  "  <kind>_<j>_checkerboard.png         as above\n"
+  "  distortion_curves_<j>.png           both maps' cumulative curves\n"
   "\n"
   "Exit code 0 on success, 2 for bad usage or input (also a directory that is\n"
-  "not a map output), 3 when a map directory's certificate fails (its files\n"
-  "are written all the same).\n";
+  "not a map output, or no display for --pictures), 3 when a map directory's\n"
+  "certificate fails (its files are written all the same).\n";
 
 namespace
 {
@@ -73,6 +92,7 @@ struct EvaluateArguments
 {
   std::vector<std::string> meshes, originals, inputs;
   std::string outputDir;
+  bool pictures = false;
 };
 
 EvaluateArguments parseArguments(const std::vector<std::string>& args)
@@ -103,6 +123,10 @@ EvaluateArguments parseArguments(const std::vector<std::string>& args)
     {
       parsed.outputDir = optionValue(args, i, "a directory");
     }
+    else if (a == "--pictures")
+    {
+      parsed.pictures = true;
+    }
     else if (isOption(a))
     {
       unknownOption(a);
@@ -121,6 +145,14 @@ int runEvaluate(const std::vector<std::string>& args)
 {
   const EvaluateArguments arguments = parseArguments(args);
   const std::vector<std::string>& meshes = arguments.meshes;
+  if (arguments.pictures && meshes.size() == 2 && arguments.outputDir.empty())
+  {
+    throw UsageError{ "--pictures needs --output-dir DIR for two meshes (where the PNGs go)" };
+  }
+  if (arguments.pictures && !checkDisplayForPictures())
+  {
+    return ExitBadInput;
+  }
   std::error_code ec;
   if (meshes.size() == 1 && !std::filesystem::exists(meshes[0], ec))
   {
@@ -133,7 +165,8 @@ int runEvaluate(const std::vector<std::string>& args)
     {
       throw UsageError{ "--originals is for two meshes; a map directory takes --inputs A B ..." };
     }
-    return evaluateMapDirectory(meshes[0], arguments.inputs, arguments.outputDir);
+    return evaluateMapDirectory(
+      meshes[0], arguments.inputs, arguments.outputDir, arguments.pictures);
   }
   if (meshes.size() != 2)
   {
@@ -143,7 +176,7 @@ int runEvaluate(const std::vector<std::string>& args)
   {
     throw UsageError{ "--inputs is for a map directory; two meshes take --originals A B" };
   }
-  return evaluateMeshPair(meshes, arguments.originals, arguments.outputDir);
+  return evaluateMeshPair(meshes, arguments.originals, arguments.outputDir, arguments.pictures);
 }
 
 } // namespace surfacemap

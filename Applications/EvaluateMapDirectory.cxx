@@ -3,6 +3,7 @@
 #include "CommandSupport.h"
 #include "Commands.h"
 #include "EvaluationOutputs.h"
+#include "EvaluationPictures.h"
 #include "MapDirectory.h"
 
 #include "vtkPointData.h"
@@ -10,6 +11,7 @@
 #include "vtkSmartPointer.h"
 
 #include <cstdio>
+#include <filesystem>
 #include <sstream>
 #include <stdexcept>
 
@@ -187,14 +189,36 @@ bool reportMaps(int j, const MeasuredMaps& measured)
   return certified;
 }
 
-// Writes each map 0 -> j's tables and view as <outputDir>/<kind>_<j>*;
-// returns the summary's entry for j. Throws std::runtime_error naming a file
-// that cannot be written.
+// Writes the pictures of maps 0 -> j: <kind>_<j>_distortion.png and
+// <kind>_<j>_checkerboard.png per map, distortion_curves_<j>.png of both.
+void writePictures(const MapMeshes& maps,
+  int j,
+  const MeasuredMaps& measured,
+  const std::string& outputDir)
+{
+  const std::string jj = std::to_string(j);
+  const std::string input0 = std::filesystem::path(maps.inputFiles[0]).filename().string();
+  writeMapPictures({ maps.common[0], maps.common[j], "common_0.vtp", "common_" + jj + ".vtp" },
+    measured.approximating,
+    outputDir + "/approximating_" + jj + "_");
+  writeMapPictures(
+    { maps.inputs[0], maps.mapped[j], "input 0: " + input0, "mapped_" + jj + ".vtp" },
+    measured.exact,
+    outputDir + "/exact_" + jj + "_");
+  writeDistortionCurvePicture(
+    { { "approximating map", measured.approximating }, { "exact map", measured.exact } },
+    outputDir + "/distortion_curves_" + jj + ".png");
+}
+
+// Writes each map 0 -> j's tables and view as <outputDir>/<kind>_<j>*, with
+// `pictures` also their pictures; returns the summary's entry for j. Throws
+// std::runtime_error naming a file that cannot be written.
 std::string writeMaps(const MapMeshes& maps,
   int j,
   const MeasuredMaps& measured,
   bool certified,
-  const std::string& outputDir)
+  const std::string& outputDir,
+  bool pictures)
 {
   std::ostringstream json;
   json << (j > 1 ? ",\n" : "\n") << "    {\n      \"source\": 0,\n      \"target\": " << j
@@ -222,13 +246,20 @@ std::string writeMaps(const MapMeshes& maps,
          << summaryMembers(map.result, "        ") << "\n      }";
   }
   json << "\n    }";
+  if (pictures)
+  {
+    writePictures(maps, j, measured, outputDir);
+  }
   return json.str();
 }
 
 // Measures, prints and writes every map 0 -> j, then summary.json; returns
 // whether every certificate holds. Throws std::runtime_error for maps that
 // cannot be measured or a file that cannot be written.
-bool evaluateMaps(const MapMeshes& maps, const std::string& outputDir, std::string summary)
+bool evaluateMaps(const MapMeshes& maps,
+  const std::string& outputDir,
+  std::string summary,
+  bool pictures)
 {
   bool allCertified = true;
   for (int j = maps.size() > 1 ? 1 : 0; j < maps.size(); ++j)
@@ -236,7 +267,7 @@ bool evaluateMaps(const MapMeshes& maps, const std::string& outputDir, std::stri
     const MeasuredMaps measured = measureMaps(maps, j);
     const bool certified = reportMaps(j, measured);
     allCertified = allCertified && certified;
-    summary += writeMaps(maps, j, measured, certified, outputDir);
+    summary += writeMaps(maps, j, measured, certified, outputDir, pictures);
   }
   writeFileAtomically(outputDir + "/summary.json", summary + "\n  ]\n}\n");
   return allCertified;
@@ -246,7 +277,8 @@ bool evaluateMaps(const MapMeshes& maps, const std::string& outputDir, std::stri
 
 int evaluateMapDirectory(const std::string& directory,
   std::vector<std::string> inputFiles,
-  std::string outputDir)
+  std::string outputDir,
+  bool pictures)
 {
   const int n = countInputs(directory);
   if (outputDir.empty())
@@ -274,13 +306,16 @@ int evaluateMapDirectory(const std::string& directory,
   }
   const std::string summary = reportDirectory(maps);
   bool certified = false;
-  if (!succeeds([&] { certified = evaluateMaps(maps, outputDir, summary); }))
+  if (!succeeds([&] { certified = evaluateMaps(maps, outputDir, summary, pictures); }))
   {
     return ExitBadInput;
   }
   std::printf("  written to %s: summary.json, approximating_<j>_*.csv, approximating_<j>.vtp, "
-              "exact_<j>_*.csv, exact_<j>.vtp\n",
-    outputDir.c_str());
+              "exact_<j>_*.csv, exact_<j>.vtp%s\n",
+    outputDir.c_str(),
+    pictures ? ", <kind>_<j>_distortion.png, <kind>_<j>_checkerboard.png (kind approximating, "
+               "exact), distortion_curves_<j>.png"
+             : "");
   if (!certified)
   {
     printError("the map in " + directory + " is not certified bijective");

@@ -3,6 +3,7 @@
 #include "CommandSupport.h"
 #include "Commands.h"
 #include "EvaluationOutputs.h"
+#include "EvaluationPictures.h"
 
 #include "vtkSurfaceMapEvaluation.h"
 
@@ -12,6 +13,7 @@
 #include "vtkSmartPointer.h"
 
 #include <cstdio>
+#include <filesystem>
 #include <sstream>
 
 namespace surfacemap
@@ -63,12 +65,31 @@ void printSummary(const std::vector<std::string>& meshes, vtkPolyData* result)
   }
 }
 
-// Writes summary.json, the tables and evaluated.vtp into `outputDir`. Throws
-// std::runtime_error naming a file that cannot be written.
-void writeOutputs(const std::vector<std::string>& meshes,
-  vtkPolyData* result,
+// Writes the pictures of the map source -> target into `outputDir`.
+void writePictures(const std::vector<std::string>& meshes,
+  vtkSurfaceMapEvaluation* evaluation,
   const std::string& outputDir)
 {
+  const auto name = [](const std::string& path)
+  { return std::filesystem::path(path).filename().string(); };
+  vtkPolyData* result = evaluation->GetOutput();
+  const MapSides sides{ vtkPolyData::SafeDownCast(evaluation->GetInputDataObject(0, 0)),
+    vtkPolyData::SafeDownCast(evaluation->GetInputDataObject(1, 0)),
+    "source: " + name(meshes[0]),
+    "target: " + name(meshes[1]) };
+  writeMapPictures(sides, result, outputDir + "/");
+  writeDistortionCurvePicture({ { "map", result } }, outputDir + "/distortion_curve.png");
+}
+
+// Writes summary.json, the tables and evaluated.vtp into `outputDir`, with
+// `pictures` also the pictures. Throws std::runtime_error naming a file that
+// cannot be written.
+void writeOutputs(const std::vector<std::string>& meshes,
+  vtkSurfaceMapEvaluation* evaluation,
+  const std::string& outputDir,
+  bool pictures)
+{
+  vtkPolyData* result = evaluation->GetOutput();
   std::ostringstream json;
   json << "{\n  \"source\": " << jsonString(meshes[0])
        << ",\n  \"target\": " << jsonString(meshes[1]) << ",\n";
@@ -77,13 +98,18 @@ void writeOutputs(const std::vector<std::string>& meshes,
   writeFileAtomically(outputDir + "/summary.json", json.str());
   writeEvaluationTables(result, outputDir + "/");
   writePolyDataAtomically(result, outputDir + "/evaluated.vtp");
+  if (pictures)
+  {
+    writePictures(meshes, evaluation, outputDir);
+  }
 }
 
 // The evaluation's figures, printed; the exit code.
 int evaluate(vtkSurfaceMapEvaluation* evaluation,
   const std::vector<std::string>& meshes,
   const std::vector<std::string>& originals,
-  const std::string& outputDir)
+  const std::string& outputDir,
+  bool pictures)
 {
   if (!readMeshes(evaluation, meshes, originals))
   {
@@ -102,12 +128,14 @@ int evaluate(vtkSurfaceMapEvaluation* evaluation,
   {
     return ExitOk;
   }
-  if (!succeeds([&] { writeOutputs(meshes, result, outputDir); }))
+  if (!succeeds([&] { writeOutputs(meshes, evaluation, outputDir, pictures); }))
   {
     return ExitBadInput;
   }
-  std::printf("  written to %s/summary.json, triangles.csv, distortion_curve.csv, evaluated.vtp\n",
-    outputDir.c_str());
+  std::printf(
+    "  written to %s/summary.json, triangles.csv, distortion_curve.csv, evaluated.vtp%s\n",
+    outputDir.c_str(),
+    pictures ? ", distortion.png, checkerboard.png, distortion_curve.png" : "");
   return ExitOk;
 }
 
@@ -115,7 +143,8 @@ int evaluate(vtkSurfaceMapEvaluation* evaluation,
 
 int evaluateMeshPair(const std::vector<std::string>& meshes,
   const std::vector<std::string>& originals,
-  const std::string& outputDir)
+  const std::string& outputDir,
+  bool pictures)
 {
   // The output directory exists and takes files before anything is computed.
   std::string created;
@@ -124,7 +153,7 @@ int evaluateMeshPair(const std::vector<std::string>& meshes,
     return ExitBadInput;
   }
   vtkNew<vtkSurfaceMapEvaluation> evaluation;
-  const int result = evaluate(evaluation, meshes, originals, outputDir);
+  const int result = evaluate(evaluation, meshes, originals, outputDir, pictures);
   if (result != ExitOk)
   {
     removeCreatedDirectory(created);

@@ -82,6 +82,30 @@ void writeEvaluationTables(vtkPolyData* result, const std::string& prefix)
   writeFileAtomically(prefix + "distortion_curve.csv", curveCsv(result));
 }
 
+vtkSmartPointer<vtkDoubleArray> sourcePositions(vtkPolyData* source)
+{
+  double bounds[6];
+  source->GetBounds(bounds);
+  const double longest =
+    std::max({ bounds[1] - bounds[0], bounds[3] - bounds[2], bounds[5] - bounds[4] });
+  const double scale = longest > 0.0 ? 2.0 / longest : 1.0;
+  auto positions = vtkSmartPointer<vtkDoubleArray>::New();
+  positions->SetName("SourcePosition");
+  positions->SetNumberOfComponents(3);
+  positions->SetNumberOfTuples(source->GetNumberOfPoints());
+  for (vtkIdType v = 0; v < source->GetNumberOfPoints(); ++v)
+  {
+    double p[3];
+    source->GetPoint(v, p);
+    for (int k = 0; k < 3; ++k)
+    {
+      p[k] = (p[k] - 0.5 * (bounds[2 * k] + bounds[2 * k + 1])) * scale;
+    }
+    positions->SetTuple(v, p);
+  }
+  return positions;
+}
+
 vtkSmartPointer<vtkPolyData> targetWithFigures(vtkPolyData* target,
   vtkPolyData* source,
   vtkPolyData* result)
@@ -100,27 +124,7 @@ vtkSmartPointer<vtkPolyData> targetWithFigures(vtkPolyData* target,
     }
   }
   view->GetFieldData()->AddArray(result->GetFieldData()->GetArray("DistortionCurve"));
-
-  double bounds[6];
-  source->GetBounds(bounds);
-  const double longest =
-    std::max({ bounds[1] - bounds[0], bounds[3] - bounds[2], bounds[5] - bounds[4] });
-  const double scale = longest > 0.0 ? 2.0 / longest : 1.0;
-  vtkNew<vtkDoubleArray> positions;
-  positions->SetName("SourcePosition");
-  positions->SetNumberOfComponents(3);
-  positions->SetNumberOfTuples(source->GetNumberOfPoints());
-  for (vtkIdType v = 0; v < source->GetNumberOfPoints(); ++v)
-  {
-    double p[3];
-    source->GetPoint(v, p);
-    for (int k = 0; k < 3; ++k)
-    {
-      p[k] = (p[k] - 0.5 * (bounds[2 * k] + bounds[2 * k + 1])) * scale;
-    }
-    positions->SetTuple(v, p);
-  }
-  view->GetPointData()->AddArray(positions);
+  view->GetPointData()->AddArray(sourcePositions(source));
   return view;
 }
 

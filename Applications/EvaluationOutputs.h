@@ -5,6 +5,7 @@
 
 #include <string>
 
+class vtkDoubleArray;
 class vtkPolyData;
 
 namespace surfacemap
@@ -20,10 +21,14 @@ std::string summaryMembers(vtkPolyData* result, const std::string& indent);
 /// Throws std::runtime_error naming a file that cannot be written.
 void writeEvaluationTables(vtkPolyData* result, const std::string& prefix);
 
+/// The point array SourcePosition: the points of `source` centred on its
+/// bounding box and scaled to a longest side of 2, so a checkerboard of them
+/// drawn on any mesh of the same vertices shows how a map carries a regular
+/// pattern across.
+vtkSmartPointer<vtkDoubleArray> sourcePositions(vtkPolyData* source);
+
 /// `target` with the evaluation's per-triangle figures and summary, and the
-/// point array SourcePosition: the source's points centred on its bounding box
-/// and scaled to a longest side of 2, so a checkerboard of them (drawn on the
-/// target) shows how the map carries a regular pattern across.
+/// point array SourcePosition of `source` (sourcePositions).
 vtkSmartPointer<vtkPolyData> targetWithFigures(vtkPolyData* target,
   vtkPolyData* source,
   vtkPolyData* result);

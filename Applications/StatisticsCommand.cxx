@@ -2,6 +2,7 @@
 // population of surfaces with one connectivity.
 #include "CommandSupport.h"
 #include "Commands.h"
+#include "Pictures.h"
 #include "StatisticsPictures.h"
 
 #include "vtkDataArray.h"
@@ -310,15 +311,9 @@ void writeModeAnimation(vtkSurfaceShapeStatistics* statistics,
 int runStatistics(const std::vector<std::string>& args)
 {
   const StatisticsArguments arguments = parseArguments(args);
-  if (arguments.pictures)
+  if (arguments.pictures && !checkDisplayForPictures())
   {
-    const std::string missing = missingDisplay();
-    if (!missing.empty())
-    {
-      printError("--pictures: " + missing +
-        "; run under 'xvfb-run -a' or leave --pictures out");
-      return ExitBadInput;
-    }
+    return ExitBadInput;
   }
   std::vector<std::string> files;
   if (!succeeds([&] { files = specimenFiles(arguments.sources); }))

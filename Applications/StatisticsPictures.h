@@ -1,5 +1,5 @@
-// surfacemap statistics --pictures: PNG charts and a heat map, rendered with
-// VTK (OpenGL through X, offscreen).
+// surfacemap statistics --pictures: PNG charts and a heat map (see
+// Pictures.h for the display they need).
 #pragma once
 
 #include <string>
@@ -9,10 +9,6 @@ class vtkPolyData;
 
 namespace surfacemap
 {
-
-/// Empty when an X display can be opened for rendering; otherwise why not,
-/// as a sentence for the user.
-std::string missingDisplay();
 
 /// Bar chart of the explained variance per mode (in %), written atomically.
 void writeExplainedVariancePicture(const std::vector<double>& fractions, const std::string& path);

@@ -3,6 +3,8 @@
 #include "CommandSupport.h"
 #include "Commands.h"
 #include "MapDirectory.h"
+#include "Pictures.h"
+#include "TransferPictures.h"
 
 #include "vtkSurfaceMapTransfer.h"
 #include "vtkSurfaceTextureSeamSplitter.h"
@@ -33,7 +35,7 @@ namespace
 const char* const TransferHelpIntro =
   "usage: surfacemap transfer MAPDIR --from I --to J [--arrays NAME ...]\n"
   "                           [--source-data MESH] [--categorical NAME]\n"
-  "                           [--continuous NAME] [--split-seams]\n"
+  "                           [--continuous NAME] [--split-seams] [--pictures]\n"
   "                           -o OUT.vtp|OUT.obj\n"
   "\n"
   "Carries the point data of input I of a map onto the vertices of input J\n"
@@ -75,13 +77,27 @@ const char* const TransferHelpIntro =
   "  -o, --output FILE  the output (checked for writing before computing):\n"
   "                     .vtp with every array above; .obj with the points,\n"
   "                     the triangles and, with CornerTCoords, 'vt' per corner\n"
-  "                     (OBJ holds no other data)\n";
+  "                     (OBJ holds no other data)\n"
+  "  --pictures         also write, beside FILE, one PNG per carried numeric\n"
+  "                     array NAME: FILE without its extension + _NAME.png\n"
+  "                     (e.g. out_Labels.png), input I with its array and\n"
+  "                     input J with the received one side by side in the\n"
+  "                     same colours: continuous arrays on a colour map with a\n"
+  "                     legend, categorical ones one flat colour per label\n"
+  "                     (each triangle in its corners' majority label),\n"
+  "                     unsigned char RGB(A) arrays as colours; with texture\n"
+  "                     coordinates, FILE + _texture.png: both inputs with the\n"
+  "                     package's checkerboard texture, J split at the seams.\n"
+  "                     Rendered with VTK through OpenGL: this needs a display\n"
+  "                     (on a machine without one run under 'xvfb-run -a');\n"
+  "                     without a display the command stops with exit code 2\n"
+  "                     before computing\n";
 
 const char* const TransferExitCodes =
   "\n"
   "Exit code 0 on success, 2 for bad usage or input (missing map files, an\n"
-  "unknown array name, an output that cannot be written), 1 for an internal\n"
-  "error.\n";
+  "unknown array name, an output that cannot be written, no display for\n"
+  "--pictures), 1 for an internal error.\n";
 
 const std::string TransferHelpText =
   std::string(TransferHelpIntro) + ArrayTransferFlagsHelp + TransferExitCodes;
@@ -117,6 +133,7 @@ struct TransferArguments
   int from = -1, to = -1;
   bool splitSeams = false;
   std::vector<std::string> arrays;
+  bool pictures = false;
 };
 
 TransferArguments parseArguments(const std::vector<std::string>& args,
@@ -154,6 +171,10 @@ TransferArguments parseArguments(const std::vector<std::string>& args,
     else if (a == "--arrays")
     {
       inArrays = sawArrays = true;
+    }
+    else if (a == "--pictures")
+    {
+      parsed.pictures = true;
     }
     else if (parseArrayTransferFlag(transfer, args, i))
     {
@@ -421,7 +442,8 @@ int runTransfer(const std::vector<std::string>& args)
   const TransferArguments arguments = parseArguments(args, transfer);
   refuseMapFileAsOutput(arguments.output, arguments.directory);
   const std::vector<std::string> files = mapFiles(arguments);
-  if (!findMapFiles(arguments.directory, files) || !canWrite(arguments.output) ||
+  if ((arguments.pictures && !checkDisplayForPictures()) ||
+    !findMapFiles(arguments.directory, files) || !canWrite(arguments.output) ||
     !succeeds([&] { verifyMapFiles(arguments.directory, files); }))
   {
     return ExitBadInput;
@@ -448,6 +470,12 @@ int runTransfer(const std::vector<std::string>& args)
     return ExitBadInput;
   }
   reportTransfer(arguments, transfer);
+  const auto pictures = [&]
+  { printPictures(writeTransferPictures(transfer, arguments.from, arguments.to, arguments.output)); };
+  if (arguments.pictures && !succeeds(pictures))
+  {
+    return ExitBadInput;
+  }
   return ExitOk;
 }
 

@@ -41,8 +41,31 @@ from vtkmodules.vtkRenderingCore import (vtkActor, vtkPolyDataMapper, vtkRendere
                                          vtkWindowToImageFilter)
 
 
+_held_display = []
+
+
+def _hold_display():
+    """Opens one X connection that stays open until the process ends: an X server (Xvfb under
+    xvfb-run) resets when its last client leaves, and a window opened during that reset makes VTK
+    abort ("bad X server connection"). Every picture's window closes its own connection."""
+    if _held_display or not os.environ.get("DISPLAY"):
+        return
+    import ctypes
+    import ctypes.util
+    try:
+        x11 = ctypes.CDLL(ctypes.util.find_library("X11") or "libX11.so.6")
+    except OSError:
+        return  # VTK's window reports the missing display itself
+    x11.XOpenDisplay.restype = ctypes.c_void_p
+    x11.XOpenDisplay.argtypes = [ctypes.c_char_p]
+    connection = x11.XOpenDisplay(None)
+    if connection:
+        _held_display.append(connection)
+
+
 def _render(mesh, path, configure_mapper, size=(800, 600), azimuth=30.0, elevation=20.0, title=None, zoom=1.0,
             texture=None):
+    _hold_display()
     mapper = vtkPolyDataMapper()
     mapper.SetInputData(mesh)
     configure_mapper(mapper)

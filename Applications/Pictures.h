@@ -1,0 +1,87 @@
+// The --pictures of every command: PNGs rendered with VTK (OpenGL through X,
+// offscreen), charts and surfaces, each file written atomically.
+//
+// Debian's VTK 9.1 is built without EGL and OSMesa: its only render window
+// is X's, which aborts the process when no display can be opened. Commands
+// therefore check the display before computing (checkDisplayForPictures).
+#pragma once
+
+#include "vtkSmartPointer.h"
+
+#include <string>
+#include <vector>
+
+class vtkLookupTable;
+class vtkPolyDataMapper;
+class vtkTexture;
+class vtkRenderWindow;
+class vtkScalarsToColors;
+
+namespace surfacemap
+{
+
+/// Empty when an X display can be opened for rendering (its connection then
+/// stays open until the process ends, which keeps the X server from resetting
+/// between pictures); otherwise why not, as a sentence for the user.
+std::string missingDisplay();
+
+/// True if --pictures can be drawn; otherwise prints why, with the advice to
+/// run under 'xvfb-run -a', and returns false (the caller exits with
+/// ExitBadInput before computing anything).
+bool checkDisplayForPictures();
+
+/// Prints the pictures written ("  pictures: a.png, b.png"), or that there
+/// was nothing to draw.
+void printPictures(const std::vector<std::string>& paths);
+
+/// Renders `window` and writes its picture as PNG, atomically, to `path`.
+/// Throws std::runtime_error naming `path` on failure.
+void writeWindow(vtkRenderWindow* window, const std::string& path);
+
+/// One line (or set of bars, or points) of a chart.
+struct ChartSeries
+{
+  std::string label; // in the legend, shown when a chart has two or more series
+  std::vector<double> x, y;
+};
+
+/// A chart: series of one kind (vtkChart::LINE, BAR or POINTS) with titles.
+struct ChartPicture
+{
+  int type = 0;
+  std::vector<ChartSeries> series;
+  std::string xTitle, yTitle, title;
+  bool integerX = false;  // one tick per x value of the first series (1, 2, ...)
+  bool fractionY = false; // y axis fixed to [0, 1]
+};
+
+/// The chart rendered (800 x 600) and written atomically to `path`.
+void writeChart(const ChartPicture& chart, const std::string& path);
+
+/// Blue (low) to red (high) over `range` (a range of zero width is widened).
+vtkSmartPointer<vtkLookupTable> rainbowTable(const double range[2]);
+
+/// One surface of a picture: its coloured mapper and a caption (may be empty).
+struct SurfacePanel
+{
+  vtkSmartPointer<vtkPolyDataMapper> mapper;
+  std::string caption;
+  /// Drawn on the surface through its active point texture coordinates, if set.
+  vtkSmartPointer<vtkTexture> texture;
+};
+
+/// A `size` x `size` RGB checkerboard of `squares` x `squares` checks whose
+/// colour runs through the hues along u and from dark to light along v,
+/// alternating with white, so that stretch, flips and seams show (the same
+/// pattern as surfacemaps.render.checkerboard_texture).
+vtkSmartPointer<vtkTexture> checkerboardTexture(int squares = 16, int size = 512);
+
+/// The panels side by side (800 x 600 for one, 1200 x 600 for two), each
+/// surface in the same default view, with a colour legend of `legend` titled
+/// `legendTitle` at the right when `legend` is given; written atomically.
+void writeSurfacePicture(const std::vector<SurfacePanel>& panels,
+  vtkScalarsToColors* legend,
+  const std::string& legendTitle,
+  const std::string& path);
+
+} // namespace surfacemap
