@@ -102,22 +102,14 @@ vtkSmartPointer<vtkPolyDataMapper> colouredBy(vtkPolyData* mesh,
   bool cells,
   vtkLookupTable* table)
 {
-  auto mapper = vtkSmartPointer<vtkPolyDataMapper>::New();
-  mapper->SetInputData(mesh);
-  if (cells)
+  vtkSmartPointer<vtkPolyDataMapper> mapper = arrayMapper(mesh, name, cells);
+  if (!cells)
   {
-    mapper->SetScalarModeToUseCellFieldData();
-  }
-  else
-  {
-    mapper->SetScalarModeToUsePointFieldData();
     mapper->InterpolateScalarsBeforeMappingOn();
   }
-  mapper->SelectColorArray(name);
   mapper->SetColorModeToMapScalars();
   mapper->SetLookupTable(table);
   mapper->UseLookupTableScalarRangeOn();
-  mapper->ScalarVisibilityOn();
   return mapper;
 }
 

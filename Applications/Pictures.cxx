@@ -19,6 +19,7 @@
 #include "vtkPNGWriter.h"
 #include "vtkPlot.h"
 #include "vtkPointData.h"
+#include "vtkPolyData.h"
 #include "vtkPolyDataMapper.h"
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
@@ -263,6 +264,23 @@ void writeSurfacePicture(const std::vector<SurfacePanel>& panels,
     window->AddRenderer(legendRenderer(legend, legendTitle, viewport));
   }
   writeWindow(window, path);
+}
+
+vtkSmartPointer<vtkPolyDataMapper> arrayMapper(vtkPolyData* mesh, const std::string& name, bool cells)
+{
+  auto mapper = vtkSmartPointer<vtkPolyDataMapper>::New();
+  mapper->SetInputData(mesh);
+  if (cells)
+  {
+    mapper->SetScalarModeToUseCellFieldData();
+  }
+  else
+  {
+    mapper->SetScalarModeToUsePointFieldData();
+  }
+  mapper->SelectColorArray(name.c_str());
+  mapper->ScalarVisibilityOn();
+  return mapper;
 }
 
 vtkSmartPointer<vtkTexture> checkerboardTexture(int squares, int size)

@@ -12,6 +12,7 @@
 #include <vector>
 
 class vtkLookupTable;
+class vtkPolyData;
 class vtkPolyDataMapper;
 class vtkTexture;
 class vtkRenderWindow;
@@ -60,6 +61,9 @@ void writeChart(const ChartPicture& chart, const std::string& path);
 
 /// Blue (low) to red (high) over `range` (a range of zero width is widened).
 vtkSmartPointer<vtkLookupTable> rainbowTable(const double range[2]);
+
+/// A mapper of `mesh` coloured by its point (or, with `cells`, cell) array `name`.
+vtkSmartPointer<vtkPolyDataMapper> arrayMapper(vtkPolyData* mesh, const std::string& name, bool cells);
 
 /// One surface of a picture: its coloured mapper and a caption (may be empty).
 struct SurfacePanel

@@ -66,24 +66,6 @@ bool isColours(vtkDataArray* array)
     (array->GetNumberOfComponents() == 3 || array->GetNumberOfComponents() == 4);
 }
 
-// A mapper of `mesh` coloured by its point (or cell) array `name`.
-vtkSmartPointer<vtkPolyDataMapper> mapperOf(vtkPolyData* mesh, const std::string& name, bool cells)
-{
-  auto mapper = vtkSmartPointer<vtkPolyDataMapper>::New();
-  mapper->SetInputData(mesh);
-  if (cells)
-  {
-    mapper->SetScalarModeToUseCellFieldData();
-  }
-  else
-  {
-    mapper->SetScalarModeToUsePointFieldData();
-  }
-  mapper->SelectColorArray(name.c_str());
-  mapper->ScalarVisibilityOn();
-  return mapper;
-}
-
 void writeContinuousPicture(const TransferSides& sides,
   const std::string& name,
   const std::string& path)
@@ -107,7 +89,7 @@ void writeContinuousPicture(const TransferSides& sides,
   std::vector<SurfacePanel> panels;
   for (const auto& [mesh, caption] : bothSides(sides))
   {
-    vtkSmartPointer<vtkPolyDataMapper> mapper = mapperOf(mesh, name, false);
+    vtkSmartPointer<vtkPolyDataMapper> mapper = arrayMapper(mesh, name, false);
     mapper->SetColorModeToMapScalars();
     mapper->SetLookupTable(colours);
     mapper->UseLookupTableScalarRangeOn();
@@ -170,7 +152,7 @@ void writeCategoricalPicture(const TransferSides& sides,
   std::vector<SurfacePanel> panels;
   for (const auto& [mesh, caption] : bothSides(sides))
   {
-    vtkSmartPointer<vtkPolyDataMapper> mapper = mapperOf(cellLabels(mesh, name), name, true);
+    vtkSmartPointer<vtkPolyDataMapper> mapper = arrayMapper(cellLabels(mesh, name), name, true);
     mapper->SetColorModeToMapScalars();
     mapper->SetLookupTable(colours);
     panels.push_back({ mapper, caption });
@@ -187,7 +169,7 @@ void writeColourPicture(const TransferSides& sides,
   std::vector<SurfacePanel> panels;
   for (const auto& [mesh, caption] : bothSides(sides))
   {
-    vtkSmartPointer<vtkPolyDataMapper> mapper = mapperOf(mesh, name, false);
+    vtkSmartPointer<vtkPolyDataMapper> mapper = arrayMapper(mesh, name, false);
     mapper->SetColorModeToDirectScalars();
     panels.push_back({ mapper, caption });
   }
