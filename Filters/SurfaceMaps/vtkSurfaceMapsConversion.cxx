@@ -58,20 +58,15 @@ std::vector<Eigen::Matrix<double, D, 1>> ReadCornerArray(vtkPolyData* input,
   return corners;
 }
 
-// Per-corner vectors (one per entry of faceVertices) added to `output` as the
-// double cell array `name` with 3 D components per triangle; nothing when
-// there are none or a face is not a triangle.
+// Per-corner vectors, three per triangle of `output` in the order of its
+// polygons, added to it as the double cell array `name` with 3 D components
+// per triangle.
 template<int D>
 void AddCornerArray(vtkPolyData* output,
   const char* name,
-  const std::vector<Eigen::Matrix<double, D, 1>>& corners,
-  const surfacemaps::PolygonMesh& mesh)
+  const std::vector<Eigen::Matrix<double, D, 1>>& corners)
 {
-  const std::size_t nf = mesh.numberOfFaces();
-  if (corners.empty() || mesh.faceVertices.size() != 3 * nf || corners.size() != 3 * nf)
-  {
-    return;
-  }
+  const std::size_t nf = corners.size() / 3;
   auto array = vtkSmartPointer<vtkDoubleArray>::New();
   array->SetName(name);
   array->SetNumberOfComponents(3 * D);
@@ -174,8 +169,19 @@ vtkSmartPointer<vtkPolyData> vtkSurfaceMapsConversion::ToPolyData(
   output->SetPoints(points);
   output->SetPolys(polys);
 
-  AddCornerArray<2>(output, CornerTCoordsName, mesh.cornerTexCoords, mesh);
-  AddCornerArray<3>(output, CornerNormalsName, mesh.cornerNormals, mesh);
+  // Per-corner data of a triangle mesh only (one tuple per face).
+  const std::size_t nf = mesh.numberOfFaces();
+  if (mesh.faceVertices.size() == 3 * nf)
+  {
+    if (!mesh.cornerTexCoords.empty() && mesh.cornerTexCoords.size() == 3 * nf)
+    {
+      AddCornerArray<2>(output, CornerTCoordsName, mesh.cornerTexCoords);
+    }
+    if (!mesh.cornerNormals.empty() && mesh.cornerNormals.size() == 3 * nf)
+    {
+      AddCornerArray<3>(output, CornerNormalsName, mesh.cornerNormals);
+    }
+  }
   AddPointArrays(output, mesh);
   return output;
 }
@@ -391,17 +397,9 @@ void vtkSurfaceMapsConversion::SetCornerTCoords(vtkPolyData* output,
   }
   output->GetPointData()->SetTCoords(array);
 
-  const std::vector<Eigen::Vector2d> values = surfacemaps::transferCornerValues(
-    source.points, source.triangles(), corners, triangles, points);
-  auto cornerArray = vtkSmartPointer<vtkDoubleArray>::New();
-  cornerArray->SetName(CornerTCoordsName);
-  cornerArray->SetNumberOfComponents(6);
-  cornerArray->SetNumberOfTuples(static_cast<vtkIdType>(triangles.size()));
-  for (std::size_t t = 0; t < triangles.size(); ++t)
-  {
-    cornerArray->SetTypedTuple(static_cast<vtkIdType>(t), values[3 * t].data());
-  }
-  output->GetCellData()->AddArray(cornerArray);
+  AddCornerArray<2>(output, CornerTCoordsName,
+    surfacemaps::transferCornerValues(
+      source.points, source.triangles(), corners, triangles, points));
 }
 
 surfacemaps::Logger vtkSurfaceMapsConversion::EngineLog()
