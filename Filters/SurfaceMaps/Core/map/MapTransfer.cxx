@@ -341,8 +341,11 @@ private:
         }
       }
     }
-    const int nearestAround = best;
-    for (int k = 0; k < 3 && nearestAround < 0; ++k)
+    if (best >= 0)
+    {
+      return best;
+    }
+    for (int k = 0; k < 3; ++k)
     {
       if (this->Chart[corners[k].triangle] == home)
       {
