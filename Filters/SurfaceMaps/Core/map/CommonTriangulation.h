@@ -15,6 +15,8 @@
 
 #include <Eigen/Core>
 
+#include <boost/container/small_vector.hpp>
+
 #include <array>
 #include <map>
 #include <memory>
@@ -56,12 +58,19 @@ struct MapEnergyWeights
   bool exactBarrierHessian = false;
 };
 
+/// Per-input values of one vertex. Remeshing copies vertex data for every
+/// candidate edit it evaluates, so the values of up to four inputs live
+/// inside the object instead of on the heap (Boost comes with CGAL; the
+/// standard library has no small vector).
+template<typename Value>
+using PerInput = boost::container::small_vector<Value, 4>;
+
 /// A vertex of T as the local energy sees it: per input its sphere point, its
 /// lift triangle on that input and its lifted position.
 struct MapVertex
 {
-  std::vector<Eigen::Vector3d> g, lifted;
-  std::vector<int> liftTriangle;
+  PerInput<Eigen::Vector3d> g, lifted;
+  PerInput<int> liftTriangle;
   int landmark = -1;
 };
 
