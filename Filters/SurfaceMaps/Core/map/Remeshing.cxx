@@ -24,6 +24,9 @@ struct LocalEdit
   std::vector<MapVertex> vertices;
   std::vector<std::array<int, 3>> before;
   std::vector<double> beforeLengths;
+  /// The faces the edit replaces, and their samples per input: gathered
+  /// only for an edit that passes the cheaper checks (gatherSamples).
+  std::vector<FaceHandle> faces;
   std::vector<std::vector<int>> samples;
   /// The new vertex (split, appended) or the moved one (collapse: index).
   MapVertex moved;
@@ -63,10 +66,20 @@ void addFace(const CommonTriangulation& T, LocalEdit& edit, FaceHandle f)
   edit.beforeLengths.push_back(T.targetLength(f));
   edit.cachedBefore += T.faceEnergy(f);
   edit.beforeCached = edit.beforeCached && T.faceEnergiesValid();
-  if (T.tracksSamples())
+  edit.faces.push_back(f);
+}
+
+/// The samples of the edit's faces, per input in the order of its faces.
+void gatherSamples(const CommonTriangulation& T, LocalEdit& edit)
+{
+  if (!T.tracksSamples() || !edit.samples.empty())
   {
-    edit.samples.resize(T.numberOfInputs());
-    for (int i = 0; i < T.numberOfInputs(); ++i)
+    return;
+  }
+  edit.samples.resize(T.numberOfInputs());
+  for (int i = 0; i < T.numberOfInputs(); ++i)
+  {
+    for (FaceHandle f : edit.faces)
     {
       const std::vector<int>& s = T.faceSamples(f, i);
       edit.samples[i].insert(edit.samples[i].end(), s.begin(), s.end());
@@ -83,6 +96,10 @@ double evaluate(const CommonTriangulation& T,
   LocalEdit& edit,
   double minGain = -std::numeric_limits<double>::infinity())
 {
+  if (!edit.beforeCached)
+  {
+    gatherSamples(T, edit);
+  }
   const double before = edit.beforeCached
     ? edit.cachedBefore
     : T.localEnergy(edit.vertices, edit.before, edit.beforeLengths, edit.samples, false, nullptr);
@@ -102,30 +119,33 @@ double evaluate(const CommonTriangulation& T,
       return NoGain;
     }
   }
+  // Every triangle's energy is >= 0 (the barrier's -log(det / 6) is, as
+  // det <= 1 on the unit sphere), so the running sum only grows: the edit is
+  // answered as soon as its first triangles cost what it may, before the
+  // target lengths (walks on every sphere) of the others.
+  const bool bounded = std::isfinite(minGain) && std::isfinite(before);
   edit.afterLengths.assign(edit.after.size(), 1.0);
-  if (T.weights.mesh > 0.0)
+  double triangles = 0.0;
+  for (std::size_t t = 0; t < edit.after.size(); ++t)
   {
-    for (std::size_t t = 0; t < edit.after.size(); ++t)
+    const auto& tri = edit.after[t];
+    const MapVertex& a = afterVertices[tri[0]];
+    const MapVertex& b = afterVertices[tri[1]];
+    const MapVertex& c = afterVertices[tri[2]];
+    if (T.weights.mesh > 0.0)
     {
-      const auto& tri = edit.after[t];
-      edit.afterLengths[t] =
-        T.targetLength(afterVertices[tri[0]], afterVertices[tri[1]], afterVertices[tri[2]]);
+      edit.afterLengths[t] = T.targetLength(a, b, c);
+    }
+    if (bounded)
+    {
+      triangles += T.triangleEnergy(a, b, c, edit.afterLengths[t]);
+      if (!(before - triangles > minGain))
+      {
+        return NoGain;
+      }
     }
   }
-  if (std::isfinite(minGain) && std::isfinite(before))
-  {
-    double triangles = 0.0;
-    for (std::size_t t = 0; t < edit.after.size(); ++t)
-    {
-      const auto& tri = edit.after[t];
-      triangles += T.triangleEnergy(
-        afterVertices[tri[0]], afterVertices[tri[1]], afterVertices[tri[2]], edit.afterLengths[t]);
-    }
-    if (!(before - triangles > minGain))
-    {
-      return NoGain;
-    }
-  }
+  gatherSamples(T, edit);
   const double after = T.localEnergy(afterVertices,
     edit.after,
     edit.afterLengths,
