@@ -28,11 +28,13 @@ CommonTriangulation::CommonTriangulation(std::vector<PreparedInput>& surfaces,
   }
   this->G.resize(n);
   this->LiftTriangle.resize(n);
+  this->Lifted.resize(n);
   this->Samples.resize(n);
   for (int i = 0; i < n; ++i)
   {
     this->Mesh.add_property(this->G[i]);
     this->Mesh.add_property(this->LiftTriangle[i]);
+    this->Mesh.add_property(this->Lifted[i]);
     this->Mesh.add_property(this->Samples[i]);
   }
   this->Mesh.add_property(this->Landmark);
@@ -68,9 +70,8 @@ CommonTriangulation::CommonTriangulation(std::vector<PreparedInput>& surfaces,
     const Eigen::Vector3d& p = first.sphere[v.idx()];
     for (int i = 0; i < n; ++i)
     {
-      this->Mesh.property(this->G[i], v) = p;
-      this->Mesh.property(this->LiftTriangle[i], v) =
-        i == 0 ? vertexTriangle[v.idx()] : surfaces[i].locator->locate(p).triangle;
+      this->setSpherePoint(
+        v, i, p, i == 0 ? vertexTriangle[v.idx()] : surfaces[i].locator->locate(p).triangle);
     }
     this->Mesh.property(this->Landmark, v) =
       first.landmarks.empty() ? -1 : first.landmarks[v.idx()];
@@ -88,7 +89,7 @@ MapVertex CommonTriangulation::vertex(OpenMesh::VertexHandle v) const
   {
     data.g[i] = this->Mesh.property(this->G[i], v);
     data.liftTriangle[i] = this->Mesh.property(this->LiftTriangle[i], v);
-    data.lifted[i] = this->Surfaces[i].lifts[data.liftTriangle[i]](data.g[i]);
+    data.lifted[i] = this->Mesh.property(this->Lifted[i], v);
   }
   data.landmark = this->Mesh.property(this->Landmark, v);
   return data;
@@ -99,12 +100,21 @@ void CommonTriangulation::setVertex(OpenMesh::VertexHandle v, const MapVertex& d
   // The faces around v change energy; remeshing rewrites them after an edit.
   for (int i = 0; i < this->numberOfInputs(); ++i)
   {
-    this->Mesh.property(this->G[i], v) = data.g[i];
-    this->Mesh.property(this->LiftTriangle[i], v) = data.liftTriangle[i];
+    this->setSpherePoint(v, i, data.g[i], data.liftTriangle[i]);
   }
   this->Mesh.property(this->Landmark, v) = data.landmark;
   const Eigen::Vector3d& p = data.lifted[0];
   this->Mesh.set_point(v, HalfedgeMesh::Point(p[0], p[1], p[2]));
+}
+
+void CommonTriangulation::setSpherePoint(OpenMesh::VertexHandle v,
+  int i,
+  const Eigen::Vector3d& g,
+  int liftTriangle)
+{
+  this->Mesh.property(this->G[i], v) = g;
+  this->Mesh.property(this->LiftTriangle[i], v) = liftTriangle;
+  this->Mesh.property(this->Lifted[i], v) = this->Surfaces[i].lifts[liftTriangle](g);
 }
 
 void CommonTriangulation::relocate(MapVertex& data) const

@@ -234,6 +234,9 @@ public:
   double totalEnergy();
 
 private:
+  /// Moves vertex v on sphere i to g in input i's triangle liftTriangle
+  /// (the only writer of a vertex's sphere point, lift triangle and lift).
+  void setSpherePoint(OpenMesh::VertexHandle v, int i, const Eigen::Vector3d& g, int liftTriangle);
   void assignSamplesFromScratch();
   /// Calls function(face, a, b, c) for every face with its corners' data,
   /// in parallel: function may write that face's properties only.
@@ -262,6 +265,9 @@ private:
   HalfedgeMesh Mesh;
   std::vector<OpenMesh::VPropHandleT<Eigen::Vector3d>> G;
   std::vector<OpenMesh::VPropHandleT<int>> LiftTriangle;
+  // Per input, each vertex's lifted position, kept with G and LiftTriangle
+  // by setSpherePoint: remeshing reads every vertex many times per pass.
+  std::vector<OpenMesh::VPropHandleT<Eigen::Vector3d>> Lifted;
   OpenMesh::VPropHandleT<int> Landmark;
   OpenMesh::FPropHandleT<double> Length;
   OpenMesh::FPropHandleT<double> Energy;

@@ -168,8 +168,7 @@ void CommonTriangulation::writeBack(const Snapshot& s, const SpherePoints& point
     for (auto v : this->Mesh.vertices())
     {
       const int k = i * nv + v.idx();
-      this->Mesh.property(this->G[i], v) = points.position(k);
-      this->Mesh.property(this->LiftTriangle[i], v) = s.liftTriangle[k];
+      this->setSpherePoint(v, i, points.position(k), s.liftTriangle[k]);
       if (i == 0)
       {
         const Eigen::Vector3d p = (*s.lifts[k])(points.position(k));
