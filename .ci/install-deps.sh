@@ -7,7 +7,7 @@ set -euo pipefail
 packages=(
   build-essential cmake ninja-build pkg-config
   libvtk9-dev python3-vtk9 vtk9
-  libeigen3-dev libsuitesparse-dev libopenblas0-openmp libopenmesh-dev libcgal-dev libgmp-dev libmpfr-dev
+  libeigen3-dev libsuitesparse-dev libopenblas0-openmp libopenmesh-dev libcgal-dev libboost-dev libgmp-dev libmpfr-dev
   libgtest-dev
   python3-numpy python3-matplotlib python3-pytest
   xvfb

@@ -6,3 +6,5 @@ find_package(Eigen3 3.3 REQUIRED NO_MODULE)
 find_package(OpenMesh REQUIRED)
 find_package(OpenMP REQUIRED COMPONENTS CXX)
 find_package(CGAL REQUIRED)
+# Header-only: container::small_vector (map/CommonTriangulation.h).
+find_package(Boost REQUIRED)

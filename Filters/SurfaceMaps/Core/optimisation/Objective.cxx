@@ -285,7 +285,6 @@ void Objective::buildScatter(const SpherePoints& points,
 {
   const std::int64_t nb = points.numberOfVariables() / 2;
   const int* outer = this->Pattern.outerIndexPtr();
-  std::vector<int> idx;
   // Position of block (row, column) among its block column's blocks.
   auto blockIndex = [&](int row, int column)
   {
@@ -300,32 +299,37 @@ void Objective::buildScatter(const SpherePoints& points,
     const int nv = entry.Term->pointsPerElement();
     const int n = 2 * nv;
     entry.Scatter.assign(static_cast<std::size_t>(ne) * n * n, -1);
-    idx.resize(nv);
-    for (int e = 0; e < ne; ++e)
+    // Each element writes its own slots only.
+#pragma omp parallel
     {
-      entry.Term->elementPoints(e, idx.data());
-      int* scatter = entry.Scatter.data() + static_cast<std::size_t>(e) * n * n;
-      for (int a = 0; a < nv; ++a)
+      std::vector<int> idx(nv);
+#pragma omp for schedule(static)
+      for (int e = 0; e < ne; ++e)
       {
-        const int va = points.variable(idx[a]);
-        for (int b = 0; b < nv && va >= 0; ++b)
+        entry.Term->elementPoints(e, idx.data());
+        int* scatter = entry.Scatter.data() + static_cast<std::size_t>(e) * n * n;
+        for (int a = 0; a < nv; ++a)
         {
-          const int vb = points.variable(idx[b]);
-          if (vb < va)
+          const int va = points.variable(idx[a]);
+          for (int b = 0; b < nv && va >= 0; ++b)
           {
-            continue; // lower triangle (or locked: vb = -1)
-          }
-          const int row = va / 2, column = vb / 2;
-          const int j = blockIndex(row, column);
-          for (int i = 0; i < 2; ++i)
-          {
-            for (int k = 0; k < 2; ++k)
+            const int vb = points.variable(idx[b]);
+            if (vb < va)
             {
-              if (row == column && i > k)
+              continue; // lower triangle (or locked: vb = -1)
+            }
+            const int row = va / 2, column = vb / 2;
+            const int j = blockIndex(row, column);
+            for (int i = 0; i < 2; ++i)
+            {
+              for (int k = 0; k < 2; ++k)
               {
-                continue; // below the diagonal inside the diagonal block
+                if (row == column && i > k)
+                {
+                  continue; // below the diagonal inside the diagonal block
+                }
+                scatter[(2 * a + i) + (2 * b + k) * n] = outer[2 * column + k] + 2 * j + i;
               }
-              scatter[(2 * a + i) + (2 * b + k) * n] = outer[2 * column + k] + 2 * j + i;
             }
           }
         }
