@@ -43,7 +43,8 @@ protected:
   }
 
   /// Closed 2-manifold of genus 0, certified on every sphere, every sample in
-  /// exactly one face that contains it, landmarks kept.
+  /// exactly one face that contains it, landmarks kept, every vertex's lift
+  /// (kept with its sphere point) that of its sphere point.
   void expectInvariants()
   {
     HalfedgeMesh& mesh = this->T->mesh();
@@ -70,6 +71,11 @@ protected:
       for (auto v : mesh.vertices())
       {
         g[v.idx()] = this->T->g(v, i);
+      }
+      for (auto v : mesh.vertices())
+      {
+        const Lift& lift = this->surfaces[i].lifts[this->T->liftTriangle(v, i)];
+        EXPECT_EQ(this->T->vertex(v).lifted[i], lift(g[v.idx()])) << "vertex " << v.idx();
       }
       const BijectivityCertificate c = certifyBijective(g, triangles);
       EXPECT_TRUE(c.bijective) << c.reason;
@@ -172,6 +178,29 @@ TEST_F(RemeshingTest, NoEditTouchesALandmarkEdgeOrJoinsTwoLandmarks)
   this->T->setLandmark(x, 7);
   this->T->setLandmark(y, 8);
   EXPECT_FALSE(std::isfinite(flipGain(*this->T, e)));
+}
+
+TEST_F(RemeshingTest, MovedPointsWrittenBackKeepTheInvariants)
+{
+  CommonTriangulation::Snapshot snapshot;
+  SpherePoints points;
+  this->T->snapshot(snapshot, points, true);
+  Eigen::VectorXd step(points.numberOfVariables());
+  for (Eigen::Index k = 0; k < step.size(); ++k)
+  {
+    step[k] = 2e-3 * std::sin(0.7 * static_cast<double>(k));
+  }
+  const std::vector<Eigen::Vector3d> start = points.positions();
+  points.retract(step, 1.0);
+  ASSERT_TRUE(this->T->update(snapshot, points));
+  this->T->writeBack(snapshot, points);
+  int moved = 0;
+  for (auto v : this->T->mesh().vertices())
+  {
+    moved += this->T->g(v, 1) != start[snapshot.vertices + v.idx()] ? 1 : 0;
+  }
+  EXPECT_GT(moved, 0);
+  this->expectInvariants();
 }
 
 TEST_F(RemeshingTest, RoundLowersTheEnergyAndKeepsInvariants)
