@@ -69,6 +69,13 @@ const surfacemaps::MapSetting& settingNamed(const char* name)
   }
   return *setting;
 }
+
+/// The preset with this index; nullptr out of range.
+const surfacemaps::MapPreset* presetAt(int i)
+{
+  static const std::vector<surfacemaps::MapPreset> all = surfacemaps::presets();
+  return i >= 0 && i < static_cast<int>(all.size()) ? &all[i] : nullptr;
+}
 } // namespace
 
 // The settings' values live in the engine's options; the map computed last
@@ -345,16 +352,6 @@ void vtkSurfaceMapFilter::SetSetting(int i, double value)
     setValue(this, this->Internals->Options, *settingAt(i), value);
   }
 }
-
-namespace
-{
-/// The preset with this index; nullptr out of range.
-const surfacemaps::MapPreset* presetAt(int i)
-{
-  static const std::vector<surfacemaps::MapPreset> all = surfacemaps::presets();
-  return i >= 0 && i < static_cast<int>(all.size()) ? &all[i] : nullptr;
-}
-} // namespace
 
 void vtkSurfaceMapFilter::ApplyPreset(int preset)
 {

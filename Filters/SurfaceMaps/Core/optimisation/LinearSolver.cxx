@@ -240,7 +240,6 @@ LinearSolveResult LinearSolver::solveByBlocks(const Eigen::SparseMatrix<double>&
   // The preconditioner z = M^-1 r, block by block (in parallel: the blocks'
   // solvers are independent). The first application factorises each block
   // (regularised where needed) with its part of the right-hand side.
-  std::vector<Eigen::SparseMatrix<double>> diagonal(blocks);
   std::vector<char> ok(blocks, 1);
   std::vector<double> shifts(blocks, 0.0);
   auto precondition = [&](const Eigen::VectorXd& r, Eigen::VectorXd& z, bool factorise)
@@ -258,9 +257,10 @@ LinearSolveResult LinearSolver::solveByBlocks(const Eigen::SparseMatrix<double>&
       Eigen::VectorXd zk;
       if (factorise)
       {
-        diagonal[k] = H.block(first, first, size, size);
+        // The factor keeps no reference to the block it was computed from.
+        const Eigen::SparseMatrix<double> diagonal = H.block(first, first, size, size);
         const LinearSolveResult block =
-          solvers[k]->solve(diagonal[k], r.segment(first, size), zk, patternChanged, log);
+          solvers[k]->solve(diagonal, r.segment(first, size), zk, patternChanged, log);
         ok[k] = block.success;
         shifts[k] = block.shift;
       }
