@@ -103,8 +103,6 @@ void CommonTriangulation::setVertex(OpenMesh::VertexHandle v, const MapVertex& d
     this->setSpherePoint(v, i, data.g[i], data.liftTriangle[i]);
   }
   this->Mesh.property(this->Landmark, v) = data.landmark;
-  const Eigen::Vector3d& p = data.lifted[0];
-  this->Mesh.set_point(v, HalfedgeMesh::Point(p[0], p[1], p[2]));
 }
 
 void CommonTriangulation::setSpherePoint(OpenMesh::VertexHandle v,
@@ -114,7 +112,12 @@ void CommonTriangulation::setSpherePoint(OpenMesh::VertexHandle v,
 {
   this->Mesh.property(this->G[i], v) = g;
   this->Mesh.property(this->LiftTriangle[i], v) = liftTriangle;
-  this->Mesh.property(this->Lifted[i], v) = this->Surfaces[i].lifts[liftTriangle](g);
+  const Eigen::Vector3d lifted = this->Surfaces[i].lifts[liftTriangle](g);
+  this->Mesh.property(this->Lifted[i], v) = lifted;
+  if (i == 0)
+  {
+    this->Mesh.set_point(v, HalfedgeMesh::Point(lifted[0], lifted[1], lifted[2]));
+  }
 }
 
 void CommonTriangulation::relocate(MapVertex& data) const

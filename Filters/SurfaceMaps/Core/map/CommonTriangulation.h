@@ -235,7 +235,8 @@ public:
 
 private:
   /// Moves vertex v on sphere i to g in input i's triangle liftTriangle
-  /// (the only writer of a vertex's sphere point, lift triangle and lift).
+  /// (the only writer of a vertex's sphere point, lift triangle and lift,
+  /// and of its mesh point: the lift onto input 0).
   void setSpherePoint(OpenMesh::VertexHandle v, int i, const Eigen::Vector3d& g, int liftTriangle);
   void assignSamplesFromScratch();
   /// Calls function(face, a, b, c) for every face with its corners' data,

@@ -169,11 +169,6 @@ void CommonTriangulation::writeBack(const Snapshot& s, const SpherePoints& point
     {
       const int k = i * nv + v.idx();
       this->setSpherePoint(v, i, points.position(k), s.liftTriangle[k]);
-      if (i == 0)
-      {
-        const Eigen::Vector3d p = (*s.lifts[k])(points.position(k));
-        this->Mesh.set_point(v, HalfedgeMesh::Point(p[0], p[1], p[2]));
-      }
     }
     if (this->TrackSamples)
     {
