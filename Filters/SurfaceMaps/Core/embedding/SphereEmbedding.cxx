@@ -12,6 +12,7 @@
 
 #include <omp.h>
 
+#include <array>
 #include <atomic>
 #include <chrono>
 #include <cmath>
@@ -324,7 +325,9 @@ public:
       {
         this->Active[c.removed] = 1;
       }
+      const double before = 0.9 * static_cast<double>(inserted) / static_cast<double>(nv);
       inserted += collapses.size();
+      const double after = level > 0 ? 0.9 * static_cast<double>(inserted) / static_cast<double>(nv) : 1.0;
       const int iterations =
         inserted > 1000 ? this->Options.levelIterationsLarge : this->Options.levelIterations;
       // Large levels get few iterations, unless the insertion left the energy
@@ -335,16 +338,17 @@ public:
         level > 0 ? iterations : this->Options.finalIterations,
         level > 0 ? this->Options.levelTolerance : this->Options.finalTolerance,
         result,
+        { before, after },
         level > 0 ? std::max(iterations, this->Options.levelIterations) : 0,
         1.5 * previous);
-      this->report(0.9 * static_cast<double>(inserted) / static_cast<double>(nv));
     }
     if (levels.empty())
     {
       energy.triangles = this->Hierarchy.triangles;
       energy.barrierWeight = attempt.barrierWeight / static_cast<double>(energy.triangles.size());
       energy.inputArea = inputAreaOf(this->Mesh.points, energy.triangles);
-      this->optimise(energy, this->Options.finalIterations, this->Options.finalTolerance, result);
+      this->optimise(
+        energy, this->Options.finalIterations, this->Options.finalTolerance, result, { 0.0, 1.0 });
     }
     result.positions = this->Positions;
     result.levels = static_cast<int>(levels.size());
@@ -361,11 +365,13 @@ private:
 
   // Newton steps on the active vertices; returns the final energy. After
   // `iterations` steps it goes on, up to `extendedIterations` in all, while
-  // the energy is above `extendAbove`.
+  // the energy is above `extendAbove`. Progress is reported after every step,
+  // moving through `fractions` (at the start, after the last possible step).
   double optimise(EmbeddingEnergy& energy,
     int iterations,
     double tolerance,
     SphereEmbeddingResult& result,
+    std::array<double, 2> fractions,
     int extendedIterations = 0,
     double extendAbove = std::numeric_limits<double>::infinity())
   {
@@ -388,7 +394,8 @@ private:
     newton.acceptTrial = [&triangles](const SpherePoints& p)
     { return std::lround(sphericalDegree(p.positions(), triangles)) == 1; };
     double energyNow = std::numeric_limits<double>::infinity();
-    for (int it = 0; it < std::max(iterations, extendedIterations); ++it)
+    const int most = std::max(iterations, extendedIterations);
+    for (int it = 0; it < most; ++it)
     {
       if (it >= iterations && !(energyNow > extendAbove))
       {
@@ -411,6 +418,7 @@ private:
              << (step.regularised ? ", shifted" : "") << ")";
         this->Options.log(Logger::Detail, line.str());
       }
+      this->report(fractions[0] + (fractions[1] - fractions[0]) * (it + 1) / most);
       // Converged when the decrease a Newton step expects (decrement^2 / 2)
       // is negligible. Absolute, in units of the distortion (whose minimum is
       // 1): a relative test would stop at once when one bad triangle makes
@@ -465,17 +473,28 @@ std::vector<SphereEmbeddingResult> embedAllOnSphere(const std::vector<const Poly
   }
   std::atomic<bool> aborted{ false };
   std::vector<std::exception_ptr> errors(n);
-  const int threads = std::max(1, std::min(n, omp_get_max_threads()));
-  // Nested regions inside embedOnSphere run on one thread each (OpenMP's
-  // default of one active level).
+  // One mesh per thread. Embeddings take unequal times (one may need a second
+  // attempt), so a thread whose meshes are done lends itself to the ones still
+  // running: each running embedding's own parallel regions (a nested level)
+  // get an equal share of the threads, updated after every Newton step. The
+  // results do not depend on the thread count, only the time does.
+  const int available = omp_get_max_threads();
+  const int threads = std::max(1, std::min(n, available));
+  std::atomic<int> running{ 0 };
+  auto share = [&]() { return std::max(1, available / std::max(1, running.load())); };
+  const int previousLevels = omp_get_max_active_levels();
+  omp_set_max_active_levels(std::max(previousLevels, 2));
 #pragma omp parallel for schedule(dynamic, 1) num_threads(threads)
   for (int i = 0; i < n; ++i)
   {
+    ++running;
+    omp_set_num_threads(share());
     const bool reporter = omp_get_thread_num() == 0;
     SphereEmbeddingOptions local = options;
     local.progress = [&, i, reporter](double fraction)
     {
       fractions[i] = fraction;
+      omp_set_num_threads(share());
       if (aborted)
       {
         return false;
@@ -504,7 +523,9 @@ std::vector<SphereEmbeddingResult> embedAllOnSphere(const std::vector<const Poly
     {
       errors[i] = std::current_exception();
     }
+    --running;
   }
+  omp_set_max_active_levels(previousLevels);
   if (aborted)
   {
     throw Aborted{};

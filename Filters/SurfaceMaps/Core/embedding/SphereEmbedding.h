@@ -91,11 +91,11 @@ struct EmbeddingFailure : std::runtime_error
   int index;
 };
 
-/// Embeds several meshes at once, one mesh per thread (each embedding then
-/// runs on one thread): faster than one after the other with all threads,
-/// since much of an embedding is serial. Each result is deterministic but may
-/// differ in rounding from a two-thread embedOnSphere of the same mesh (sums
-/// in another order). options.progress is called from the calling thread
+/// Embeds several meshes at once, one mesh per thread: faster than one after
+/// the other with all threads, since much of an embedding is serial. Threads
+/// without a mesh left join the embeddings still running. The results equal
+/// embedOnSphere's of each mesh bit for bit (they do not depend on the
+/// thread count). options.progress is called from the calling thread
 /// only, with the mean fraction over the meshes; false aborts every embedding
 /// (Aborted). Throws EmbeddingFailure for the first mesh (by index)
 /// that cannot be embedded.

@@ -169,8 +169,9 @@ TEST(SphereEmbedding, DeterministicForAFixedThreadCount)
 TEST(SphereEmbedding, ConcurrentEmbeddingsAreDeterministic)
 {
   // Several embeddings at once share global state (BLAS thread count, METIS'
-  // random numbers): run twice, each mesh's result must not change, and must
-  // equal its embedding alone on one thread.
+  // random numbers) and lend each other threads: run twice, each mesh's
+  // result must not change, and must equal its embedding alone on one thread
+  // and on all threads.
   const std::vector<PolygonMesh> meshes = {
     readOff(Data + "/blob.off"), readObj(Data + "/ellipsoid.obj"), readPly(Data + "/limbs.ply")
   };
@@ -178,6 +179,7 @@ TEST(SphereEmbedding, ConcurrentEmbeddingsAreDeterministic)
   const std::vector<SphereEmbeddingResult> first = embedAllOnSphere(pointers);
   const std::vector<SphereEmbeddingResult> second = embedAllOnSphere(pointers);
   const int threads = omp_get_max_threads();
+  const SphereEmbeddingResult aloneAllThreads = embedOnSphere(meshes[2]);
   omp_set_num_threads(1);
   const SphereEmbeddingResult alone = embedOnSphere(meshes[2]);
   omp_set_num_threads(threads);
@@ -194,6 +196,7 @@ TEST(SphereEmbedding, ConcurrentEmbeddingsAreDeterministic)
   for (std::size_t i = 0; i < alone.positions.size(); ++i)
   {
     ASSERT_EQ(first[2].positions[i], alone.positions[i]) << "vertex " << i;
+    ASSERT_EQ(first[2].positions[i], aloneAllThreads.positions[i]) << "vertex " << i;
   }
 }
 
