@@ -151,28 +151,28 @@ void Objective::buildPattern(const SpherePoints& points)
 {
   // Every unlocked point owns two consecutive variables, so the Hessian is
   // made of 2x2 blocks: collect the upper-triangle blocks (block row <= block
-  // column) as 64-bit keys column * blocks + row, sorted column-major (four
-  // times fewer keys than single entries), then lay out the entries.
+  // column) column by column (four times fewer than single entries), then lay
+  // out the entries.
   const int nvars = points.numberOfVariables();
-  const std::vector<std::int64_t> keys = this->blockKeys(points);
-  const std::vector<int> blockStart = this->layOutPattern(nvars, keys);
-  this->buildScatter(points, keys, blockStart);
+  const BlockColumns blocks = this->blockColumns(points);
+  this->layOutPattern(nvars, blocks);
+  this->buildScatter(points, blocks);
   this->PatternVariables = nvars;
   this->PatternValid = true;
 }
 
-std::vector<std::int64_t> Objective::blockKeys(const SpherePoints& points) const
+Objective::BlockColumns Objective::blockColumns(const SpherePoints& points) const
 {
   // The blocks come as (column, row) pairs, most of them many times over
   // (an edge lies in many elements). Bucketing the rows by column and
   // sorting each short bucket is several times faster than one sort of all
-  // pairs, and gives the same sorted, unique keys.
+  // pairs.
   const int nb = points.numberOfVariables() / 2;
-  std::vector<std::array<int, 2>> blocks; // (column, row)
+  std::vector<std::array<int, 2>> pairs; // (column, row)
   std::vector<int> idx;
   for (int b = 0; b < nb; ++b)
   {
-    blocks.push_back({ b, b }); // keep the diagonal
+    pairs.push_back({ b, b }); // keep the diagonal
   }
   for (const Entry& entry : this->Terms)
   {
@@ -190,59 +190,49 @@ std::vector<std::int64_t> Objective::blockKeys(const SpherePoints& points) const
           const int vb = points.variable(idx[b]);
           if (vb >= va)
           {
-            blocks.push_back({ vb / 2, va / 2 });
+            pairs.push_back({ vb / 2, va / 2 });
           }
         }
       }
     }
   }
-  std::vector<int> start(static_cast<std::size_t>(nb) + 1, 0);
-  for (const auto& block : blocks)
+  std::vector<int> bucket(static_cast<std::size_t>(nb) + 1, 0);
+  for (const auto& pair : pairs)
   {
-    ++start[block[0] + 1];
+    ++bucket[pair[0] + 1];
   }
   for (int b = 0; b < nb; ++b)
   {
-    start[b + 1] += start[b];
+    bucket[b + 1] += bucket[b];
   }
-  std::vector<int> rows(blocks.size());
-  std::vector<int> next(start.begin(), start.end() - 1);
-  for (const auto& block : blocks)
+  std::vector<int> rows(pairs.size());
+  std::vector<int> next(bucket.begin(), bucket.end() - 1);
+  for (const auto& pair : pairs)
   {
-    rows[next[block[0]]++] = block[1];
+    rows[next[pair[0]]++] = pair[1];
   }
-  std::vector<std::int64_t> keys;
-  keys.reserve(blocks.size() / 4);
+  BlockColumns result;
+  result.start.assign(static_cast<std::size_t>(nb) + 1, 0);
+  result.rows.reserve(pairs.size() / 4);
   for (int column = 0; column < nb; ++column)
   {
-    int* begin = rows.data() + start[column];
-    int* end = rows.data() + start[column + 1];
+    int* begin = rows.data() + bucket[column];
+    int* end = rows.data() + bucket[column + 1];
     std::sort(begin, end);
     end = std::unique(begin, end);
-    for (const int* row = begin; row != end; ++row)
-    {
-      keys.push_back(static_cast<std::int64_t>(column) * nb + *row);
-    }
+    result.rows.insert(result.rows.end(), begin, end);
+    result.start[column + 1] = static_cast<int>(result.rows.size());
   }
-  return keys;
+  return result;
 }
 
-std::vector<int> Objective::layOutPattern(int nvars, const std::vector<std::int64_t>& keys)
+void Objective::layOutPattern(int nvars, const BlockColumns& blocks)
 {
-  const std::int64_t nb = nvars / 2;
+  const int nb = nvars / 2;
   // Block column B holds blocks rows r_0 < ... < r_k = B (the diagonal last):
   // variable column 2B has rows 2 r_j, 2 r_j + 1 (j < k) and 2B; column
   // 2B + 1 has the same plus 2B + 1.
-  std::vector<int> blockStart(nb + 1, 0); // first key of each block column
-  for (std::int64_t k = 0; k < static_cast<std::int64_t>(keys.size()); ++k)
-  {
-    ++blockStart[keys[k] / nb + 1];
-  }
-  for (std::int64_t b = 0; b < nb; ++b)
-  {
-    blockStart[b + 1] += blockStart[b];
-  }
-  const std::int64_t nnz = 4 * static_cast<std::int64_t>(keys.size()) - nb;
+  const std::int64_t nnz = 4 * static_cast<std::int64_t>(blocks.rows.size()) - nb;
   // Keep the previous pattern to tell whether it changed (a solver can then
   // keep its symbolic analysis).
   Eigen::SparseMatrix<double> previous;
@@ -252,14 +242,14 @@ std::vector<int> Objective::layOutPattern(int nvars, const std::vector<std::int6
   int* outer = this->Pattern.outerIndexPtr();
   int* inner = this->Pattern.innerIndexPtr();
   outer[0] = 0;
-  for (std::int64_t b = 0; b < nb; ++b)
+  for (int b = 0; b < nb; ++b)
   {
-    const int blocks = blockStart[b + 1] - blockStart[b];
-    outer[2 * b + 1] = outer[2 * b] + 2 * blocks - 1;
-    outer[2 * b + 2] = outer[2 * b + 1] + 2 * blocks;
-    for (int j = 0; j < blocks; ++j)
+    const int count = blocks.start[b + 1] - blocks.start[b];
+    outer[2 * b + 1] = outer[2 * b] + 2 * count - 1;
+    outer[2 * b + 2] = outer[2 * b + 1] + 2 * count;
+    for (int j = 0; j < count; ++j)
     {
-      const int row = static_cast<int>(keys[blockStart[b] + j] % nb);
+      const int row = blocks.rows[blocks.start[b] + j];
       for (int column = 0; column < 2; ++column)
       {
         const int at = outer[2 * b + column] + 2 * j;
@@ -275,23 +265,17 @@ std::vector<int> Objective::layOutPattern(int nvars, const std::vector<std::int6
   this->PatternUnchanged = previous.rows() == nvars && previous.nonZeros() == nnz &&
     std::equal(outer, outer + nvars + 1, previous.outerIndexPtr()) &&
     std::equal(inner, inner + nnz, previous.innerIndexPtr());
-
-  return blockStart;
 }
 
-void Objective::buildScatter(const SpherePoints& points,
-  const std::vector<std::int64_t>& keys,
-  const std::vector<int>& blockStart)
+void Objective::buildScatter(const SpherePoints& points, const BlockColumns& blocks)
 {
-  const std::int64_t nb = points.numberOfVariables() / 2;
   const int* outer = this->Pattern.outerIndexPtr();
   // Position of block (row, column) among its block column's blocks.
   auto blockIndex = [&](int row, int column)
   {
-    const std::int64_t* begin = keys.data() + blockStart[column];
-    const std::int64_t* end = keys.data() + blockStart[column + 1];
-    return static_cast<int>(
-      std::lower_bound(begin, end, static_cast<std::int64_t>(column) * nb + row) - begin);
+    const int* begin = blocks.rows.data() + blocks.start[column];
+    const int* end = blocks.rows.data() + blocks.start[column + 1];
+    return static_cast<int>(std::lower_bound(begin, end, row) - begin);
   };
   for (Entry& entry : this->Terms)
   {

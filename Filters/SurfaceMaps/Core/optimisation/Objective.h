@@ -257,17 +257,20 @@ private:
     // triangle or locked variable).
     std::vector<int> Scatter;
   };
+  /// The upper-triangle 2x2 blocks of the Hessian (diagonal included), by
+  /// block column: column c's block rows, ascending (the diagonal last), are
+  /// rows[start[c] .. start[c + 1]).
+  struct BlockColumns
+  {
+    std::vector<int> start;
+    std::vector<int> rows;
+  };
   void buildPattern(const SpherePoints& points);
-  /// The upper-triangle 2x2 blocks of the Hessian (diagonal included) as
-  /// sorted keys column * blocks + row.
-  std::vector<std::int64_t> blockKeys(const SpherePoints& points) const;
-  /// Lays out Pattern from the block keys (remembering whether it changed);
-  /// returns the first key of each block column.
-  std::vector<int> layOutPattern(int nvars, const std::vector<std::int64_t>& keys);
+  BlockColumns blockColumns(const SpherePoints& points) const;
+  /// Lays out Pattern from the blocks (remembering whether it changed).
+  void layOutPattern(int nvars, const BlockColumns& blocks);
   /// Each element's Hessian entries' positions in Pattern's value array.
-  void buildScatter(const SpherePoints& points,
-    const std::vector<std::int64_t>& keys,
-    const std::vector<int>& blockStart);
+  void buildScatter(const SpherePoints& points, const BlockColumns& blocks);
   double assembleGradient(const SpherePoints& points, Eigen::VectorXd& gradient);
   void evaluateDerivatives(const SpherePoints& points, double projectionEps, bool withHessian);
 
