@@ -220,6 +220,10 @@ public:
   /// Re-locates lifts and sample triangles for moved points (parallel
   /// walks); false if an embedding's degree is not 1.
   bool update(Snapshot& snapshot, const SpherePoints& points) const;
+  /// The points (snapshot numbering) of the triangles that are not positively
+  /// oriented on their sphere at `points` (exact predicate, as update()
+  /// decides), ascending and unique.
+  std::vector<int> invertedCorners(const Snapshot& snapshot, const SpherePoints& points) const;
   /// Writes moved points, lifts and sample assignments back into the mesh.
   void writeBack(const Snapshot& snapshot, const SpherePoints& points);
 

@@ -1,6 +1,8 @@
 // The flat copy of T that the Newton step works on, and writing it back.
 #include "map/CommonTriangulation.h"
 
+#include <algorithm>
+
 #include "geometry/Predicates.h"
 #include "geometry/SphericalTriangulation.h"
 
@@ -76,6 +78,26 @@ void CommonTriangulation::snapshot(Snapshot& s, SpherePoints& points, bool lockL
   }
   points = SpherePoints(std::move(positions));
   points.setLocked(locked);
+}
+
+std::vector<int> CommonTriangulation::invertedCorners(const Snapshot& s,
+  const SpherePoints& points) const
+{
+  const std::vector<Eigen::Vector3d>& positions = points.positions();
+  std::vector<int> corners;
+  for (const auto& triangles : s.embeddedTriangles)
+  {
+    for (const auto& t : triangles)
+    {
+      if (orient3dOrigin(positions[t[0]], positions[t[1]], positions[t[2]]) <= 0)
+      {
+        corners.insert(corners.end(), t.begin(), t.end());
+      }
+    }
+  }
+  std::sort(corners.begin(), corners.end());
+  corners.erase(std::unique(corners.begin(), corners.end()), corners.end());
+  return corners;
 }
 
 bool CommonTriangulation::update(Snapshot& s, const SpherePoints& points) const

@@ -103,6 +103,7 @@ MapPhaseReport PhaseRunner::run(const MapPhase& phase)
             << step.energyAfter << ", decrement " << step.decrement << ", step " << step.step
             << " (" << step.lineSearchTrials << " trials"
             << (step.gradientFallback ? ", gradient" : "") << (step.stalled ? ", stalled" : "")
+            << (step.heldPoints > 0 ? ", " + std::to_string(step.heldPoints) + " points held" : "")
             << "), edits " << edits.splits << "/" << edits.collapses << "/" << edits.flips;
     this->Options.log(Logger::Detail, message.str());
     this->reportProgress(phase, it + 1, report.vertices, step.energyAfter);
@@ -198,6 +199,8 @@ NewtonStepResult PhaseRunner::newtonIteration(const MapPhase& phase,
   NewtonOptions newton;
   newton.maxPointStep = this->Options.maxPointStep;
   newton.acceptTrial = [&](const SpherePoints& trial) { return this->T.update(snapshot, trial); };
+  newton.blockingPoints = [&](const SpherePoints& trial)
+  { return this->T.invertedCorners(snapshot, trial); };
   newton.log = this->Options.log;
   const NewtonStepResult step = newtonStep(objective, points, solver, newton);
   clock = Clock::now();

@@ -93,15 +93,65 @@ NewtonStepResult newtonStep(Objective& objective,
     initialStep,
     options.lineSearch);
   result.lineSearchTrials = ls.trials;
-  result.stalled = !ls.success || ls.step < 0.01 * initialStep;
+  LineSearchResult taken = ls;
+  double takenFirst = initialStep;
+
+  if (options.blockingPoints && !(ls.success && ls.step == initialStep))
+  {
+    // Hold the points that make the first trial invalid, and those that do
+    // once these are held, and so on; then search along what is left.
+    Eigen::VectorXd held = d;
+    int count = 0;
+    const int rounds = 20;
+    for (int round = 0; round < rounds; ++round)
+    {
+      points.setPositions(start);
+      points.retract(held, firstStep(held));
+      int added = 0;
+      for (const int i : options.blockingPoints(points))
+      {
+        const int v = points.variable(i);
+        if (v >= 0 && (held[v] != 0.0 || held[v + 1] != 0.0))
+        {
+          held[v] = held[v + 1] = 0.0;
+          ++added;
+        }
+      }
+      count += added;
+      if (added == 0)
+      {
+        break;
+      }
+    }
+    const double heldSlope = held.dot(g);
+    if (count > 0 && heldSlope < 0.0)
+    {
+      const double heldFirst = firstStep(held);
+      const LineSearchResult heldSearch = armijoBacktracking(
+        [&](double t) { return energyAlong(held, t); },
+        result.energyBefore,
+        heldSlope,
+        heldFirst,
+        options.lineSearch);
+      result.lineSearchTrials += heldSearch.trials;
+      if (heldSearch.success && (!ls.success || heldSearch.energy < ls.energy))
+      {
+        taken = heldSearch;
+        takenFirst = heldFirst;
+        d = held;
+        result.heldPoints = count;
+      }
+    }
+  }
+  result.stalled = !taken.success || taken.step < 0.01 * takenFirst;
 
   points.setPositions(start);
-  if (ls.success)
+  if (taken.success)
   {
-    points.retract(d, ls.step);
+    points.retract(d, taken.step);
     points.recentreBases();
-    result.step = ls.step;
-    result.energyAfter = ls.energy;
+    result.step = taken.step;
+    result.energyAfter = taken.energy;
     result.moved = true;
   }
   result.lineSearchSeconds = secondsSince(clock);

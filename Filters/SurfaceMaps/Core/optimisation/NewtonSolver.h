@@ -24,6 +24,15 @@ struct NewtonOptions
   /// Extra validity check of trial positions (e.g. the embedding degree);
   /// false rejects the trial like an infinite energy. Optional.
   std::function<bool(const SpherePoints&)> acceptTrial;
+  /// Optional: the points whose trial positions make the trial invalid (e.g.
+  /// the corners of triangles that invert). When the first trial of the
+  /// Newton step is rejected, a second line search runs along the step with
+  /// these points held still (found at the first trial, repeatedly, until
+  /// that trial has none), and the better of the two steps is taken. A step
+  /// is cut for every point by the few points that run into a constraint
+  /// (on surface maps, a handful of triangles that invert on a sphere within
+  /// a few per cent of the step); holding those lets the others move on.
+  std::function<std::vector<int>(const SpherePoints&)> blockingPoints;
   Logger log;
 };
 
@@ -43,6 +52,8 @@ struct NewtonStepResult
   bool regularised = false;
   /// The points moved (line search succeeded).
   bool moved = false;
+  /// Points held still in the step taken (0: the plain Newton step).
+  int heldPoints = 0;
   /// The line search failed or cut its first trial by more than 100 times.
   /// On a surface map this is a kink: elements whose energy leaves their
   /// derivatives' model within the step hold back the step of every point

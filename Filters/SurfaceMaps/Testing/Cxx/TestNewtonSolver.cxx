@@ -188,6 +188,46 @@ TEST(NewtonSolver, StallWhenTheLineSearchCutsTheStep)
   EXPECT_TRUE(step.stalled);
 }
 
+TEST(NewtonSolver, PointsThatBlockTheStepAreHeld)
+{
+  // Every trial that moves point 0 noticeably is rejected (a constraint only
+  // point 0 runs into). Without knowing which point blocks, the whole step is
+  // cut to almost nothing; told, the step holds point 0 and moves the others.
+  Problem free(0.05);
+  const std::vector<Eigen::Vector3d> start = free.points.positions();
+  LinearSolver solver;
+  newtonStep(free.objective, free.points, solver);
+  const double freeMove = (free.points.position(0) - start[0]).norm();
+  ASSERT_GT(freeMove, 0.0);
+  auto pointZeroMoved = [&](const SpherePoints& trial)
+  { return (trial.position(0) - start[0]).norm() > 1e-3 * freeMove; };
+
+  NewtonOptions options;
+  options.acceptTrial = [&](const SpherePoints& trial) { return !pointZeroMoved(trial); };
+  Problem cut(0.05);
+  LinearSolver other;
+  const NewtonStepResult plain = newtonStep(cut.objective, cut.points, other, options);
+  EXPECT_TRUE(plain.stalled);
+  EXPECT_EQ(plain.heldPoints, 0);
+
+  options.blockingPoints = [&](const SpherePoints& trial)
+  { return pointZeroMoved(trial) ? std::vector<int>{ 0 } : std::vector<int>{}; };
+  Problem held(0.05);
+  LinearSolver third;
+  const NewtonStepResult step = newtonStep(held.objective, held.points, third, options);
+  ASSERT_TRUE(step.moved);
+  EXPECT_FALSE(step.stalled);
+  EXPECT_EQ(step.heldPoints, 1);
+  EXPECT_LT(step.energyAfter, plain.energyAfter);
+  EXPECT_LT((held.points.position(0) - start[0]).norm(), 1e-14);
+  double largest = 0.0;
+  for (int i = 1; i < held.points.size(); ++i)
+  {
+    largest = std::max(largest, (held.points.position(i) - start[i]).norm());
+  }
+  EXPECT_GT(largest, 0.1 * freeMove);
+}
+
 TEST(NewtonSolver, TrialCheckAndAbort)
 {
   Problem problem(0.05);
