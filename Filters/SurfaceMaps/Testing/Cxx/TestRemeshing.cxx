@@ -8,7 +8,9 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <limits>
+#include <set>
 
 using namespace surfacemaps;
 using namespace surfacemaps::testing;
@@ -201,6 +203,39 @@ TEST_F(RemeshingTest, MovedPointsWrittenBackKeepTheInvariants)
   }
   EXPECT_GT(moved, 0);
   this->expectInvariants();
+}
+
+TEST_F(RemeshingTest, InvertedCornersAreTheCornersOfInvertedTriangles)
+{
+  // Moving one point of embedding 1 onto the far side of the sphere inverts
+  // the triangles around it there, and only those: their corners, and the
+  // update() that the line search runs refuses the trial.
+  CommonTriangulation::Snapshot snapshot;
+  SpherePoints points;
+  this->T->snapshot(snapshot, points, false);
+  EXPECT_TRUE(this->T->invertedCorners(snapshot, points).empty());
+  const int moved = snapshot.vertices + snapshot.triangles[0][0];
+  std::vector<Eigen::Vector3d> positions = points.positions();
+  positions[moved] = -positions[moved];
+  points.setPositions(positions);
+  const std::vector<int> corners = this->T->invertedCorners(snapshot, points);
+  ASSERT_FALSE(corners.empty());
+  EXPECT_TRUE(std::is_sorted(corners.begin(), corners.end()));
+  EXPECT_TRUE(std::binary_search(corners.begin(), corners.end(), moved));
+  std::set<int> expected;
+  for (const auto& t : snapshot.embeddedTriangles[1])
+  {
+    if (orient3dOrigin(positions[t[0]], positions[t[1]], positions[t[2]]) <= 0)
+    {
+      expected.insert(t.begin(), t.end());
+    }
+  }
+  EXPECT_EQ(std::vector<int>(expected.begin(), expected.end()), corners);
+  for (const int c : corners)
+  {
+    EXPECT_GE(c, snapshot.vertices) << "embedding 0 did not move";
+  }
+  EXPECT_FALSE(this->T->update(snapshot, points));
 }
 
 TEST_F(RemeshingTest, RoundLowersTheEnergyAndKeepsInvariants)
