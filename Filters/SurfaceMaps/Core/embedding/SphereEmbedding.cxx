@@ -327,7 +327,8 @@ public:
       }
       const double before = 0.9 * static_cast<double>(inserted) / static_cast<double>(nv);
       inserted += collapses.size();
-      const double after = level > 0 ? 0.9 * static_cast<double>(inserted) / static_cast<double>(nv) : 1.0;
+      const double after =
+        level > 0 ? 0.9 * static_cast<double>(inserted) / static_cast<double>(nv) : 1.0;
       const int iterations =
         inserted > 1000 ? this->Options.levelIterationsLarge : this->Options.levelIterations;
       // Large levels get few iterations, unless the insertion left the energy
