@@ -33,6 +33,19 @@ double sphericalDegree(const std::vector<Eigen::Vector3d>& points,
   return sum / (4.0 * M_PI);
 }
 
+void appendInvertedCorners(const std::vector<Eigen::Vector3d>& points,
+  const std::vector<std::array<int, 3>>& triangles,
+  std::vector<int>& corners)
+{
+  for (const auto& t : triangles)
+  {
+    if (orient3dOrigin(points[t[0]], points[t[1]], points[t[2]]) <= 0)
+    {
+      corners.insert(corners.end(), t.begin(), t.end());
+    }
+  }
+}
+
 BijectivityCertificate certifyBijective(const std::vector<Eigen::Vector3d>& points,
   const std::vector<std::array<int, 3>>& triangles)
 {

@@ -87,13 +87,7 @@ std::vector<int> CommonTriangulation::invertedCorners(const Snapshot& s,
   std::vector<int> corners;
   for (const auto& triangles : s.embeddedTriangles)
   {
-    for (const auto& t : triangles)
-    {
-      if (orient3dOrigin(positions[t[0]], positions[t[1]], positions[t[2]]) <= 0)
-      {
-        corners.insert(corners.end(), t.begin(), t.end());
-      }
-    }
+    appendInvertedCorners(positions, triangles, corners);
   }
   std::sort(corners.begin(), corners.end());
   corners.erase(std::unique(corners.begin(), corners.end()), corners.end());
