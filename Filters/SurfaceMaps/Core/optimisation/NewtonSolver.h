@@ -54,13 +54,14 @@ struct NewtonStepResult
   bool moved = false;
   /// Points held still in the step taken (0: the plain Newton step).
   int heldPoints = 0;
-  /// The line search failed or cut its first trial by more than 100 times.
-  /// On a surface map this is a kink: elements whose energy leaves their
-  /// derivatives' model within the step hold back the step of every point
-  /// (T's vertices are lifted onto the inputs' flat triangles, so the mesh
-  /// and map terms bend where a vertex crosses an input edge on the sphere;
-  /// an approximation sample can cross into a T triangle far smaller on the
-  /// sphere than on the surface).
+  /// The line search failed or cut its first trial by more than 100 times
+  /// (of the step taken, plain or with points held). On a surface map the
+  /// cause is mostly a few triangles that invert on a sphere early in the
+  /// step (the terms measure lifted triangles and do not see them closing;
+  /// blockingPoints holds their corners), otherwise a kink: elements whose
+  /// energy leaves their derivatives' model within the step (T's vertices
+  /// are lifted onto the inputs' flat triangles, so the mesh and map terms
+  /// bend where a vertex crosses an input edge on the sphere).
   bool stalled = false;
   /// Wall time of the parts: element derivatives with Hessian projection and
   /// assembly, the linear solve, the line search.
