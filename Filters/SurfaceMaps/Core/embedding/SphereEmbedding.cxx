@@ -569,12 +569,25 @@ SphereEmbeddingResult embedOnSphere(const PolygonMesh& mesh, const SphereEmbeddi
     { 1.0, 0.0 }, // barrier alone
   };
   std::string reasons;
+  // Progress never goes back: a retried attempt covers what is left of the
+  // range from where the failed one stopped.
+  double reached = 0.0;
   for (int a = 0; a < 3; ++a)
   {
     SphereEmbeddingResult result;
     result.attempt = a + 1;
     result.decimationSeconds = decimationSeconds;
-    Embedder embedder(mesh, hierarchy, options);
+    SphereEmbeddingOptions attemptOptions = options;
+    if (options.progress)
+    {
+      const double from = reached;
+      attemptOptions.progress = [&options, &reached, from](double fraction)
+      {
+        reached = from + (1.0 - from) * fraction;
+        return options.progress(reached);
+      };
+    }
+    Embedder embedder(mesh, hierarchy, attemptOptions);
     try
     {
       embedder.run(attempts[a], result);

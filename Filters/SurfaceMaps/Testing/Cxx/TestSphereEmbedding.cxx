@@ -233,6 +233,20 @@ TEST(SphereEmbedding, ProgressIsMonotoneAndAbortStops)
   }
   EXPECT_EQ(reported.back(), 1.0);
 
+  // A retried attempt goes on from where the failed one stopped: with no
+  // distortion acceptable, the first two attempts fail and the third (the
+  // barrier alone, accepted as it is) gives the result.
+  reported.clear();
+  SphereEmbeddingOptions retrying = options;
+  retrying.maxDistortion = 1.0;
+  EXPECT_EQ(embedOnSphere(mesh, retrying).attempt, 3);
+  ASSERT_GT(reported.size(), 3u);
+  for (std::size_t i = 1; i < reported.size(); ++i)
+  {
+    EXPECT_GE(reported[i], reported[i - 1]);
+  }
+  EXPECT_EQ(reported.back(), 1.0);
+
   int calls = 0;
   options.progress = [&](double) { return ++calls < 3; };
   EXPECT_THROW(embedOnSphere(mesh, options), Aborted);
