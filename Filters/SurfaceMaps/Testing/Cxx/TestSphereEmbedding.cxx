@@ -215,6 +215,20 @@ TEST(SphereEmbedding, FailureNamesTheMesh)
   }
 }
 
+namespace
+{
+// Several reports, none below the one before, the last exactly 1.
+void expectProgressRisesToOne(const std::vector<double>& reported)
+{
+  ASSERT_GT(reported.size(), 3u);
+  for (std::size_t i = 1; i < reported.size(); ++i)
+  {
+    EXPECT_GE(reported[i], reported[i - 1]);
+  }
+  EXPECT_EQ(reported.back(), 1.0);
+}
+} // namespace
+
 TEST(SphereEmbedding, ProgressIsMonotoneAndAbortStops)
 {
   const PolygonMesh mesh = ellipsoid();
@@ -226,12 +240,7 @@ TEST(SphereEmbedding, ProgressIsMonotoneAndAbortStops)
     return true;
   };
   embedOnSphere(mesh, options);
-  ASSERT_GT(reported.size(), 3u);
-  for (std::size_t i = 1; i < reported.size(); ++i)
-  {
-    EXPECT_GE(reported[i], reported[i - 1]);
-  }
-  EXPECT_EQ(reported.back(), 1.0);
+  expectProgressRisesToOne(reported);
 
   // A retried attempt goes on from where the failed one stopped: with no
   // distortion acceptable, the first two attempts fail and the third (the
@@ -240,12 +249,7 @@ TEST(SphereEmbedding, ProgressIsMonotoneAndAbortStops)
   SphereEmbeddingOptions retrying = options;
   retrying.maxDistortion = 1.0;
   EXPECT_EQ(embedOnSphere(mesh, retrying).attempt, 3);
-  ASSERT_GT(reported.size(), 3u);
-  for (std::size_t i = 1; i < reported.size(); ++i)
-  {
-    EXPECT_GE(reported[i], reported[i - 1]);
-  }
-  EXPECT_EQ(reported.back(), 1.0);
+  expectProgressRisesToOne(reported);
 
   int calls = 0;
   options.progress = [&](double) { return ++calls < 3; };
