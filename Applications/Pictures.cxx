@@ -3,6 +3,8 @@
 #include "CommandSupport.h"
 #include "Commands.h"
 
+#include "vtkSurfaceCheckerboardSource.h"
+
 #include "vtkActor.h"
 #include "vtkAxis.h"
 #include "vtkCamera.h"
@@ -14,7 +16,6 @@
 #include "vtkDoubleArray.h"
 #include "vtkImageData.h"
 #include "vtkLookupTable.h"
-#include "vtkMath.h"
 #include "vtkNew.h"
 #include "vtkPNGWriter.h"
 #include "vtkPlot.h"
@@ -285,32 +286,11 @@ vtkSmartPointer<vtkPolyDataMapper> arrayMapper(vtkPolyData* mesh, const std::str
 
 vtkSmartPointer<vtkTexture> checkerboardTexture(int squares, int size)
 {
-  vtkNew<vtkImageData> image;
-  image->SetDimensions(size, size, 1);
-  vtkNew<vtkUnsignedCharArray> colours;
-  colours->SetNumberOfComponents(3);
-  colours->SetNumberOfTuples(static_cast<vtkIdType>(size) * size);
-  const double cell = static_cast<double>(size) / squares;
-  for (int y = 0; y < size; ++y)
-  {
-    const int j = static_cast<int>(y / cell);
-    for (int x = 0; x < size; ++x)
-    {
-      const int i = static_cast<int>(x / cell);
-      double rgb[3] = { 245.0 / 255.0, 245.0 / 255.0, 240.0 / 255.0 };
-      if ((i + j) % 2 == 0)
-      {
-        vtkMath::HSVToRGB(static_cast<double>(i) / squares, 0.75,
-          0.35 + 0.6 * j / std::max(squares - 1, 1), rgb, rgb + 1, rgb + 2);
-      }
-      for (int c = 0; c < 3; ++c)
-      {
-        colours->SetValue(3 * (static_cast<vtkIdType>(y) * size + x) + c,
-          static_cast<unsigned char>(255.0 * rgb[c]));
-      }
-    }
-  }
-  image->GetPointData()->SetScalars(colours);
+  vtkNew<vtkSurfaceCheckerboardSource> checkerboard;
+  checkerboard->SetSquares(squares);
+  checkerboard->SetSize(size);
+  checkerboard->Update();
+  vtkSmartPointer<vtkImageData> image = checkerboard->GetOutput();
   auto texture = vtkSmartPointer<vtkTexture>::New();
   texture->SetInputData(image);
   texture->InterpolateOn();

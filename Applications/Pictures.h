@@ -76,8 +76,8 @@ struct SurfacePanel
 
 /// A `size` x `size` RGB checkerboard of `squares` x `squares` checks whose
 /// colour runs through the hues along u and from dark to light along v,
-/// alternating with white, so that stretch, flips and seams show (the same
-/// pattern as surfacemaps.render.checkerboard_texture).
+/// alternating with white, so that stretch, flips and seams show
+/// (vtkSurfaceCheckerboardSource's image, as in surfacemaps.render).
 vtkSmartPointer<vtkTexture> checkerboardTexture(int squares = 16, int size = 512);
 
 /// The panels side by side (800 x 600 for one, 1200 x 600 for two), each

@@ -10,16 +10,13 @@
 #include "vtkSurfaceTextureSeamSplitter.h"
 
 #include "vtkAbstractArray.h"
-#include "vtkCellArray.h"
 #include "vtkCellData.h"
-#include "vtkIdList.h"
 
 #include "vtkNew.h"
 #include "vtkPointData.h"
 #include "vtkPolyData.h"
 #include "vtkSmartPointer.h"
 
-#include <array>
 #include <cstdio>
 #include <filesystem>
 #include <stdexcept>
@@ -252,32 +249,6 @@ bool findMapFiles(const std::string& directory, const std::vector<std::string>& 
   return true;
 }
 
-// The triangles of `mesh` as vertex id triples, in order (non-triangles as
-// empty triples: the validator of the map's inputs ruled them out there).
-std::vector<std::array<vtkIdType, 3>> trianglesOf(vtkPolyData* mesh)
-{
-  std::vector<std::array<vtkIdType, 3>> triangles;
-  vtkCellArray* polys = mesh->GetPolys();
-  vtkNew<vtkIdList> ids;
-  polys->InitTraversal();
-  while (polys->GetNextCell(ids))
-  {
-    std::array<vtkIdType, 3> t = { -1, -1, -1 };
-    for (vtkIdType k = 0; k < ids->GetNumberOfIds() && ids->GetNumberOfIds() == 3; ++k)
-    {
-      t[k] = ids->GetId(k);
-    }
-    triangles.push_back(t);
-  }
-  return triangles;
-}
-
-std::string triangleText(const std::array<vtkIdType, 3>& t)
-{
-  return "(" + std::to_string(t[0]) + ", " + std::to_string(t[1]) + ", " + std::to_string(t[2]) +
-    ")";
-}
-
 // Input I's embedding (`embedding`, embedding_I.vtp) with the point arrays and
 // cell data of `data` (--source-data) instead of its own, keeping its
 // SpherePosition. Throws std::runtime_error naming the first mismatch of
@@ -289,36 +260,12 @@ vtkSmartPointer<vtkPolyData> withSourceData(vtkPolyData* embedding,
   int from)
 {
   const std::string input = "input " + std::to_string(from) + " (" + embeddingName + ")";
-  if (data->GetNumberOfPoints() != embedding->GetNumberOfPoints())
+  const std::string difference =
+    vtkSurfaceMapTransfer::DescribeConnectivityDifference(data, embedding, input.c_str());
+  if (!difference.empty())
   {
-    throw std::runtime_error("--source-data " + dataPath + " has " +
-      std::to_string(data->GetNumberOfPoints()) + " vertices, " + input + " has " +
-      std::to_string(embedding->GetNumberOfPoints()) + ": not the connectivity of input " +
-      std::to_string(from));
-  }
-  const auto mine = trianglesOf(data);
-  const auto theirs = trianglesOf(embedding);
-  if (mine.size() != theirs.size() || data->GetNumberOfCells() != data->GetNumberOfPolys())
-  {
-    throw std::runtime_error("--source-data " + dataPath + " has " +
-      std::to_string(data->GetNumberOfCells()) + " cells, " + input + " has " +
-      std::to_string(theirs.size()) + " triangles: not the connectivity of input " +
-      std::to_string(from));
-  }
-  for (std::size_t t = 0; t < mine.size(); ++t)
-  {
-    // The same triangle may start at another corner.
-    const auto& a = mine[t];
-    const auto& b = theirs[t];
-    const bool same = (a[0] == b[0] && a[1] == b[1] && a[2] == b[2]) ||
-      (a[0] == b[1] && a[1] == b[2] && a[2] == b[0]) ||
-      (a[0] == b[2] && a[1] == b[0] && a[2] == b[1]);
-    if (!same)
-    {
-      throw std::runtime_error("--source-data " + dataPath + ": triangle " + std::to_string(t) +
-        " is " + triangleText(a) + ", in " + input + " it is " + triangleText(b) +
-        ": not the connectivity of input " + std::to_string(from));
-    }
+    throw std::runtime_error("--source-data " + dataPath + " " + difference +
+      ": not the connectivity of input " + std::to_string(from));
   }
   auto source = vtkSmartPointer<vtkPolyData>::New();
   source->ShallowCopy(embedding);

@@ -10,10 +10,12 @@
 #include "mesh/MeshValidation.h"
 
 #include "vtkAbstractArray.h"
+#include "vtkCellArray.h"
 #include "vtkCellData.h"
 #include "vtkDataArray.h"
 #include "vtkDoubleArray.h"
 #include "vtkFieldData.h"
+#include "vtkIdList.h"
 #include "vtkIdTypeArray.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
@@ -26,6 +28,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -404,6 +407,81 @@ int vtkSurfaceMapTransfer::RequestData(vtkInformation*,
       return 1;
     },
     [output] { output->Initialize(); });
+}
+
+namespace
+{
+
+// The cells of `mesh` as vertex id triples in order, or nothing when one of
+// them is not a triangle (or a cell is not a polygon).
+std::optional<std::vector<std::array<vtkIdType, 3>>> triangleList(vtkPolyData* mesh)
+{
+  if (mesh->GetNumberOfCells() != mesh->GetNumberOfPolys())
+  {
+    return std::nullopt;
+  }
+  std::vector<std::array<vtkIdType, 3>> triangles;
+  triangles.reserve(static_cast<std::size_t>(mesh->GetNumberOfPolys()));
+  vtkCellArray* polys = mesh->GetPolys();
+  vtkNew<vtkIdList> ids;
+  for (vtkIdType c = 0; c < polys->GetNumberOfCells(); ++c)
+  {
+    polys->GetCellAtId(c, ids);
+    if (ids->GetNumberOfIds() != 3)
+    {
+      return std::nullopt;
+    }
+    triangles.push_back({ ids->GetId(0), ids->GetId(1), ids->GetId(2) });
+  }
+  return triangles;
+}
+
+std::string triangleText(const std::array<vtkIdType, 3>& t)
+{
+  return "(" + std::to_string(t[0]) + ", " + std::to_string(t[1]) + ", " + std::to_string(t[2]) +
+    ")";
+}
+
+} // namespace
+
+std::string vtkSurfaceMapTransfer::DescribeConnectivityDifference(vtkPolyData* mesh,
+  vtkPolyData* reference,
+  const char* referenceName)
+{
+  const std::string name = referenceName ? referenceName : "the reference";
+  if (!mesh || !reference)
+  {
+    return mesh ? "is compared with no mesh" : "is no mesh";
+  }
+  if (mesh->GetNumberOfPoints() != reference->GetNumberOfPoints())
+  {
+    return "has " + std::to_string(mesh->GetNumberOfPoints()) + " vertices, " + name + " has " +
+      std::to_string(reference->GetNumberOfPoints());
+  }
+  const auto mine = triangleList(mesh);
+  const auto theirs = triangleList(reference);
+  const std::size_t count = theirs ? theirs->size() : 0;
+  if (!mine || !theirs || mine->size() != count)
+  {
+    return "has " + std::to_string(mesh->GetNumberOfCells()) + " cells, " + name + " has " +
+      std::to_string(count) + " triangles";
+  }
+  for (std::size_t t = 0; t < count; ++t)
+  {
+    const auto& a = (*mine)[t];
+    const auto& b = (*theirs)[t];
+    bool same = false;
+    for (int shift = 0; shift < 3 && !same; ++shift)
+    {
+      same = a[0] == b[shift] && a[1] == b[(shift + 1) % 3] && a[2] == b[(shift + 2) % 3];
+    }
+    if (!same)
+    {
+      return "has triangle " + std::to_string(t) + " as " + triangleText(a) + ", " + name +
+        " has " + triangleText(b);
+    }
+  }
+  return "";
 }
 
 void vtkSurfaceMapTransfer::PrintSelf(ostream& os, vtkIndent indent)

@@ -75,7 +75,10 @@
 #include "vtkErrorCode.h"             // for the error codes
 #include "vtkSurfaceArrayTransferAlgorithm.h"
 
+class vtkPolyData;
+
 #include <memory> // for std::unique_ptr
+#include <string> // for std::string
 
 class SURFACEMAPSFILTERS_EXPORT vtkSurfaceMapTransfer : public vtkSurfaceArrayTransferAlgorithm
 {
@@ -119,6 +122,22 @@ public:
   int GetNumberOfArrayNames();
   const char* GetArrayName(int index);
   ///@}
+
+  /**
+   * Whether `mesh` has the connectivity of `reference`, as data saved from
+   * the same mesh keeps it (e.g. a source mesh carrying other point arrays):
+   * the same number of points and the same triangles in the same order, each
+   * possibly starting at another corner. Returns "" when it has; otherwise
+   * the first difference as words that follow the name of `mesh`, naming
+   * `reference` by `referenceName`: "has 162 vertices, input 1 has 642",
+   * "has 5 cells, input 1 has 4 triangles" (also for cells that are not
+   * triangles) or "has triangle 5 as (0, 2, 1), input 1 has (0, 1, 2)".
+   * `surfacemap transfer --source-data` and the Python package's
+   * transfer(source_data=...) check with it.
+   */
+  static std::string DescribeConnectivityDifference(vtkPolyData* mesh,
+    vtkPolyData* reference,
+    const char* referenceName);
 
 protected:
   vtkSurfaceMapTransfer();

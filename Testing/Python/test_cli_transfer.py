@@ -355,8 +355,8 @@ def test_source_data_must_have_the_inputs_connectivity(map_dir, tmp_path):
     write_vtp(blob, tmp_path / "turned.vtp")
     r = run("transfer", map_dir, "--from", "1", "--to", "0", "--source-data", tmp_path / "turned.vtp", "-o", out)
     assert r.returncode == 2
-    assert (f"--source-data {tmp_path / 'turned.vtp'}: triangle 5 is ({a}, {c}, {b}), in input 1 "
-            f"(embedding_1.vtp) it is ({a}, {b}, {c})") in r.stderr
+    assert (f"--source-data {tmp_path / 'turned.vtp'} has triangle 5 as ({a}, {c}, {b}), input 1 "
+            f"(embedding_1.vtp) has ({a}, {b}, {c}): not the connectivity of input 1") in r.stderr
     r = run("transfer", map_dir, "--from", "1", "--to", "0", "--source-data", tmp_path / "missing.vtp", "-o", out)
     assert r.returncode == 2 and "missing.vtp" in r.stderr
     assert not out.exists()
@@ -519,8 +519,8 @@ def test_polydata_source_data(map_dir, in_memory):
     mesh.GetCellPoints(5, ids)
     a, b, c = (ids.GetId(k) for k in range(3))
     mesh.ReplaceCell(5, 3, [a, c, b])
-    with pytest.raises(surfacemaps.InputError, match=rf"source_data: triangle 5 is \({a}, {c}, {b}\), in input 1 "
-                       rf"it is \({a}, {b}, {c}\): not the connectivity of input 1"):
+    with pytest.raises(surfacemaps.InputError, match=rf"source_data has triangle 5 as \({a}, {c}, {b}\), input 1 "
+                       rf"has \({a}, {b}, {c}\): not the connectivity of input 1"):
         surfacemaps.transfer(in_memory, 1, 0, source_data=mesh)
     # The same triangle starting at another corner is the same connectivity.
     mesh.ReplaceCell(5, 3, [b, c, a])

@@ -649,37 +649,13 @@ def _vtk_point_array(name, values, vertices, source_name):
     return result
 
 
-def _triangles(mesh):
-    """The polygons of a vtkPolyData as an (n, 3) numpy array; None unless all are triangles."""
-    import numpy as np
-    from vtkmodules.util.numpy_support import vtk_to_numpy
-    polys = mesh.GetPolys()
-    offsets = vtk_to_numpy(polys.GetOffsetsArray())
-    if mesh.GetNumberOfCells() != mesh.GetNumberOfPolys() or np.any(np.diff(offsets) != 3):
-        return None
-    return vtk_to_numpy(polys.GetConnectivityArray()).reshape(-1, 3)
-
-
 def _check_same_connectivity(given, mesh, source, source_name):
     """Raises InputError naming the first difference between the vertex counts or triangles of
-    `given` (source_data) and `mesh` (input `source`), as ``surfacemap transfer --source-data``
-    does: the same triangles in the same order, each possibly starting at another corner."""
-    import numpy as np
-    tail = f": not the connectivity of input {source}"
-    if given.GetNumberOfPoints() != mesh.GetNumberOfPoints():
-        raise InputError(f"source_data has {given.GetNumberOfPoints()} vertices, {source_name} has "
-                         f"{mesh.GetNumberOfPoints()}{tail}")
-    mine, theirs = _triangles(given), _triangles(mesh)
-    if mine is None or len(mine) != len(theirs):
-        raise InputError(f"source_data has {given.GetNumberOfCells()} cells, {source_name} has "
-                         f"{len(theirs)} triangles{tail}")
-    same = np.zeros(len(mine), dtype=bool)
-    for shift in range(3):
-        same |= np.all(mine == np.roll(theirs, shift, axis=1), axis=1)
-    if not same.all():
-        t = int(np.argmin(same))
-        raise InputError(f"source_data: triangle {t} is {tuple(map(int, mine[t]))}, in {source_name} it is "
-                         f"{tuple(map(int, theirs[t]))}{tail}")
+    `given` (source_data) and `mesh` (input `source`), in the words of
+    ``surfacemap transfer --source-data`` (vtkSurfaceMapTransfer.DescribeConnectivityDifference)."""
+    difference = vtkSurfaceMapTransfer.DescribeConnectivityDifference(given, mesh, source_name)
+    if difference:
+        raise InputError(f"source_data {difference}: not the connectivity of input {source}")
 
 
 def _check_array_names(mesh, arrays, categorical, continuous):

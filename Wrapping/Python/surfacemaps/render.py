@@ -196,29 +196,14 @@ def render_checkerboard(mesh, path, coordinates="SpherePosition", squares=8, **v
 
 def checkerboard_texture(squares=16, size=512):
     """A ``size`` x ``size`` RGB vtkImageData: ``squares`` x ``squares`` checks whose colour runs
-    through the hues along u and from dark to light along v, alternating with white."""
-    import colorsys
-    from vtkmodules.vtkCommonCore import vtkUnsignedCharArray
-    from vtkmodules.vtkCommonDataModel import vtkImageData
-    image = vtkImageData()
-    image.SetDimensions(size, size, 1)
-    colours = vtkUnsignedCharArray()
-    colours.SetName("Colours")
-    colours.SetNumberOfComponents(3)
-    colours.SetNumberOfTuples(size * size)
-    cell = size / squares
-    for y in range(size):
-        j = int(y / cell)
-        for x in range(size):
-            i = int(x / cell)
-            if (i + j) % 2:
-                rgb = (245, 245, 240)
-            else:
-                r, g, b = colorsys.hsv_to_rgb(i / squares, 0.75, 0.35 + 0.6 * j / max(squares - 1, 1))
-                rgb = (int(255 * r), int(255 * g), int(255 * b))
-            colours.SetTuple3(y * size + x, *rgb)
-    image.GetPointData().SetScalars(colours)
-    return image
+    through the hues along u and from dark to light along v, alternating with white (the image of
+    vtkSurfaceCheckerboardSource, as the command line's pictures draw it)."""
+    from . import vtkSurfaceCheckerboardSource
+    source = vtkSurfaceCheckerboardSource()
+    source.SetSquares(squares)
+    source.SetSize(size)
+    source.Update()
+    return source.GetOutput()
 
 
 def _read_image(path):

@@ -2,6 +2,7 @@
 // MAPPED_INPUT and INPUT_EMBEDDINGS outputs, and vtkSurfaceMapTransfer on them.
 #include "FilterTestData.h"
 #include "vtkSurfaceMapFilter.h"
+#include "vtkSurfaceCheckerboardSource.h"
 #include "vtkSurfaceMapTransfer.h"
 #include "vtkSurfaceMapsConversion.h"
 #include "vtkSurfaceMeshReader.h"
@@ -20,7 +21,9 @@
 #include "vtkDoubleArray.h"
 #include "vtkFieldData.h"
 #include "vtkFloatArray.h"
+#include "vtkIdList.h"
 #include "vtkIdTypeArray.h"
+#include "vtkImageData.h"
 #include "vtkIntArray.h"
 #include "vtkNew.h"
 #include "vtkPointData.h"
@@ -32,6 +35,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <functional>
 #include <map>
@@ -625,6 +629,121 @@ TEST(SurfaceMapTransfer, SeamSplitterGivesEveryCornerItsOwnPoint)
   splitter->Update();
   EXPECT_EQ(splitter->GetOutput()->GetNumberOfPoints(), plain->GetNumberOfPoints());
   EXPECT_NE(splitter->GetOutput()->GetPointData()->GetArray("OriginalPointId"), nullptr);
+}
+
+TEST(SurfaceMapTransfer, CheckerboardSourceColoursSquaresByPosition)
+{
+  vtkNew<vtkSurfaceCheckerboardSource> source;
+  source->SetSquares(4);
+  source->SetSize(64);
+  source->Update();
+  vtkImageData* image = source->GetOutput();
+  int dims[3];
+  image->GetDimensions(dims);
+  ASSERT_EQ(dims[0], 64);
+  ASSERT_EQ(dims[1], 64);
+  ASSERT_EQ(dims[2], 1);
+  vtkDataArray* colours = image->GetPointData()->GetScalars();
+  ASSERT_NE(colours, nullptr);
+  ASSERT_EQ(colours->GetNumberOfComponents(), 3);
+  ASSERT_EQ(colours->GetDataType(), VTK_UNSIGNED_CHAR);
+  // Per square (16 x 16 pixels): one colour throughout; off-white where
+  // i + j is odd, otherwise a colour no other square has.
+  std::set<std::array<int, 3>> coloured;
+  for (int j = 0; j < 4; ++j)
+  {
+    for (int i = 0; i < 4; ++i)
+    {
+      double first[3];
+      colours->GetTuple(16 * j * 64 + 16 * i, first);
+      for (int y = 16 * j; y < 16 * j + 16; ++y)
+      {
+        for (int x = 16 * i; x < 16 * i + 16; ++x)
+        {
+          for (int c = 0; c < 3; ++c)
+          {
+            ASSERT_EQ(colours->GetComponent(y * 64 + x, c), first[c]) << x << ", " << y;
+          }
+        }
+      }
+      if ((i + j) % 2 == 1)
+      {
+        EXPECT_EQ(first[0], 245.0);
+        EXPECT_EQ(first[1], 245.0);
+        EXPECT_EQ(first[2], 240.0);
+      }
+      else
+      {
+        coloured.insert({ static_cast<int>(first[0]), static_cast<int>(first[1]),
+          static_cast<int>(first[2]) });
+      }
+    }
+  }
+  EXPECT_EQ(coloured.size(), 8u);
+  // Brighter up the image (v): the top row's squares outshine the bottom's.
+  double bottom[3], top[3];
+  colours->GetTuple(0, bottom);
+  colours->GetTuple(63 * 64 + 16, top);
+  EXPECT_GT(std::max({ top[0], top[1], top[2] }), std::max({ bottom[0], bottom[1], bottom[2] }));
+}
+
+TEST(SurfaceMapTransfer, ConnectivityDifferenceNamesTheFirstMismatch)
+{
+  vtkSmartPointer<vtkPolyData> blob = read("blob.off");
+  auto copy = [&]()
+  {
+    auto mesh = vtkSmartPointer<vtkPolyData>::New();
+    mesh->DeepCopy(blob);
+    return mesh;
+  };
+  auto differs = [&](vtkPolyData* mesh)
+  { return vtkSurfaceMapTransfer::DescribeConnectivityDifference(mesh, blob, "input 1"); };
+  EXPECT_EQ(differs(copy()), "");
+  vtkNew<vtkIdList> ids;
+  blob->GetCellPoints(5, ids);
+  const vtkIdType a = ids->GetId(0), b = ids->GetId(1), c = ids->GetId(2);
+  // The same triangle starting at another corner is the same connectivity.
+  vtkSmartPointer<vtkPolyData> rotated = copy();
+  const vtkIdType bca[3] = { b, c, a };
+  rotated->ReplaceCell(5, 3, bca);
+  EXPECT_EQ(differs(rotated), "");
+  vtkSmartPointer<vtkPolyData> turned = copy();
+  const vtkIdType acb[3] = { a, c, b };
+  turned->ReplaceCell(5, 3, acb);
+  const auto text = [](vtkIdType x, vtkIdType y, vtkIdType z)
+  {
+    return "(" + std::to_string(x) + ", " + std::to_string(y) + ", " + std::to_string(z) + ")";
+  };
+  EXPECT_EQ(differs(turned),
+    "has triangle 5 as " + text(a, c, b) + ", input 1 has " + text(a, b, c));
+  vtkSmartPointer<vtkPolyData> moreVertices = copy();
+  moreVertices->GetPoints()->InsertNextPoint(0.0, 0.0, 0.0);
+  EXPECT_EQ(differs(moreVertices),
+    "has " + std::to_string(blob->GetNumberOfPoints() + 1) + " vertices, input 1 has " +
+      std::to_string(blob->GetNumberOfPoints()));
+  // One triangle fewer, then a quadrilateral in place of triangle 5 (not a
+  // triangle mesh at all): named by the cell counts.
+  const vtkIdType n = blob->GetNumberOfPolys();
+  auto withCells = [&](vtkIdType count, bool quadrilateral)
+  {
+    vtkSmartPointer<vtkPolyData> mesh = copy();
+    vtkNew<vtkCellArray> polys;
+    for (vtkIdType t = 0; t < count; ++t)
+    {
+      blob->GetCellPoints(t, ids);
+      if (quadrilateral && t == 5)
+      {
+        ids->InsertNextId(0);
+      }
+      polys->InsertNextCell(ids);
+    }
+    mesh->SetPolys(polys);
+    return mesh;
+  };
+  EXPECT_EQ(differs(withCells(n - 1, false)),
+    "has " + std::to_string(n - 1) + " cells, input 1 has " + std::to_string(n) + " triangles");
+  EXPECT_EQ(differs(withCells(n, true)),
+    "has " + std::to_string(n) + " cells, input 1 has " + std::to_string(n) + " triangles");
 }
 
 TEST(SurfaceMapTransfer, ChosenArraysAreInterpolatedWithTheirRoles)
