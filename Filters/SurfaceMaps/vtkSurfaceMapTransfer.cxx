@@ -1,5 +1,6 @@
 #include "vtkSurfaceMapTransfer.h"
 
+#include "vtkSurfaceMapsCombination.h"
 #include "vtkSurfaceMapsConversion.h"
 #include "vtkSurfaceMapsErrorGuard.h"
 #include "vtkSurfaceMapsPointDataTransfer.h"
@@ -15,7 +16,6 @@
 #include "vtkDataArray.h"
 #include "vtkDoubleArray.h"
 #include "vtkFieldData.h"
-#include "vtkIdList.h"
 #include "vtkIdTypeArray.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
@@ -28,7 +28,6 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <optional>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -412,31 +411,15 @@ int vtkSurfaceMapTransfer::RequestData(vtkInformation*,
 namespace
 {
 
-// The cells of `mesh` as vertex id triples in order, or nothing when one of
-// them is not a triangle (or a cell is not a polygon).
-std::optional<std::vector<std::array<vtkIdType, 3>>> triangleList(vtkPolyData* mesh)
+// Whether every cell of `mesh` is a triangle (a polygon of three points).
+bool onlyTriangles(vtkPolyData* mesh)
 {
-  if (mesh->GetNumberOfCells() != mesh->GetNumberOfPolys())
-  {
-    return std::nullopt;
-  }
-  std::vector<std::array<vtkIdType, 3>> triangles;
-  triangles.reserve(static_cast<std::size_t>(mesh->GetNumberOfPolys()));
   vtkCellArray* polys = mesh->GetPolys();
-  vtkNew<vtkIdList> ids;
-  for (vtkIdType c = 0; c < polys->GetNumberOfCells(); ++c)
-  {
-    polys->GetCellAtId(c, ids);
-    if (ids->GetNumberOfIds() != 3)
-    {
-      return std::nullopt;
-    }
-    triangles.push_back({ ids->GetId(0), ids->GetId(1), ids->GetId(2) });
-  }
-  return triangles;
+  return mesh->GetNumberOfCells() == mesh->GetNumberOfPolys() &&
+    (mesh->GetNumberOfPolys() == 0 || polys->IsHomogeneous() == 3);
 }
 
-std::string triangleText(const std::array<vtkIdType, 3>& t)
+std::string triangleText(const std::array<int, 3>& t)
 {
   return "(" + std::to_string(t[0]) + ", " + std::to_string(t[1]) + ", " + std::to_string(t[2]) +
     ")";
@@ -458,18 +441,19 @@ std::string vtkSurfaceMapTransfer::DescribeConnectivityDifference(vtkPolyData* m
     return "has " + std::to_string(mesh->GetNumberOfPoints()) + " vertices, " + name + " has " +
       std::to_string(reference->GetNumberOfPoints());
   }
-  const auto mine = triangleList(mesh);
-  const auto theirs = triangleList(reference);
-  const std::size_t count = theirs ? theirs->size() : 0;
-  if (!mine || !theirs || mine->size() != count)
+  const bool referenceTriangles = onlyTriangles(reference);
+  const auto mine = vtkSurfaceMapsCombination::Triangles(mesh);
+  const auto theirs = vtkSurfaceMapsCombination::Triangles(reference);
+  const std::size_t count = referenceTriangles ? theirs.size() : 0;
+  if (!referenceTriangles || !onlyTriangles(mesh) || mine.size() != count)
   {
     return "has " + std::to_string(mesh->GetNumberOfCells()) + " cells, " + name + " has " +
       std::to_string(count) + " triangles";
   }
   for (std::size_t t = 0; t < count; ++t)
   {
-    const auto& a = (*mine)[t];
-    const auto& b = (*theirs)[t];
+    const auto& a = mine[t];
+    const auto& b = theirs[t];
     bool same = false;
     for (int shift = 0; shift < 3 && !same; ++shift)
     {

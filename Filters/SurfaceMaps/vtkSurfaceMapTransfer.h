@@ -75,10 +75,10 @@
 #include "vtkErrorCode.h"             // for the error codes
 #include "vtkSurfaceArrayTransferAlgorithm.h"
 
-class vtkPolyData;
-
 #include <memory> // for std::unique_ptr
 #include <string> // for std::string
+
+class vtkPolyData;
 
 class SURFACEMAPSFILTERS_EXPORT vtkSurfaceMapTransfer : public vtkSurfaceArrayTransferAlgorithm
 {
