@@ -20,9 +20,11 @@
  * a few projected-Newton steps; the final mesh gets up to FinalIterations.
  * The result is certified with exact orientation predicates and a degree
  * check. If certification fails (or some triangles end up nearly collapsed,
- * distortion above 1e4) the embedding is retried with a 100x stronger
- * barrier, then with the barrier alone; if all fail the filter reports an
- * error and produces no output. "EmbeddingAttempt" says which attempt won.
+ * distortion above 100) the embedding is retried with a 100x stronger
+ * barrier, then with the barrier alone; of certified attempts that are all
+ * too distorted the least distorted one is kept; if none certifies the
+ * filter reports an error and produces no output. "EmbeddingAttempt" says
+ * which attempt won.
  *
  * Input: vtkPolyData, triangles only, closed, manifold, genus 0 (what
  * vtkSurfaceMeshValidator accepts). Invalid input is reported with the same

@@ -18,6 +18,7 @@
 #include <cmath>
 #include <exception>
 #include <memory>
+#include <optional>
 #include <sstream>
 #include <stdexcept>
 
@@ -214,8 +215,20 @@ void relaxVertex(const Collapse& c,
     {
       return;
     }
-    LineSearchResult ls = armijoBacktracking([&](double s)
-      { return starEnergy(c, energy, pos, SpherePoints::retraction(p, B, s * d[0], s * d[1])); },
+    // The energy tests orientation in floating point, in the order of the
+    // star's triangles; where the ring leaves a kernel only a few rounding
+    // errors wide, it can call a position valid that the exact predicates
+    // (the certificate's) call inverted. Such a trial is rejected here: once
+    // accepted, no later step can repair it (the energy of some other corner
+    // order is infinite from then on).
+    LineSearchResult ls = armijoBacktracking(
+      [&](double s)
+      {
+        const Eigen::Vector3d q = SpherePoints::retraction(p, B, s * d[0], s * d[1]);
+        return validInRing(q, c.ring, pos, energy.minEdgeCos)
+          ? starEnergy(c, energy, pos, q)
+          : std::numeric_limits<double>::infinity();
+      },
       e.val,
       slope,
       std::min(1.0, 0.5 / std::max(1e-12, d.norm())));
@@ -572,6 +585,17 @@ SphereEmbeddingResult embedOnSphere(const PolygonMesh& mesh, const SphereEmbeddi
   // Progress never goes back: a retried attempt covers what is left of the
   // range from where the failed one stopped.
   double reached = 0.0;
+  std::optional<SphereEmbeddingResult> best;
+  auto finish = [&](SphereEmbeddingResult result)
+  {
+    result.seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    if (options.progress)
+    {
+      options.progress(1.0);
+    }
+    return result;
+  };
   for (int a = 0; a < 3; ++a)
   {
     SphereEmbeddingResult result;
@@ -611,8 +635,7 @@ SphereEmbeddingResult embedOnSphere(const PolygonMesh& mesh, const SphereEmbeddi
       continue;
     }
     result.distortion = embeddingDistortion(mesh.points, result.positions, hierarchy.triangles);
-    // The barrier-only attempt minimises no distortion: accept what it gives.
-    if (!(result.distortion <= options.maxDistortion) && attempts[a].distortionWeight > 0.0)
+    if (!(result.distortion <= options.maxDistortion))
     {
       const std::string reason = "nearly degenerate triangles on the sphere (distortion " +
         std::to_string(result.distortion) + ")";
@@ -620,15 +643,23 @@ SphereEmbeddingResult embedOnSphere(const PolygonMesh& mesh, const SphereEmbeddi
         (reasons.empty() ? "" : "; ") + ("attempt " + std::to_string(a + 1) + ": " + reason);
       options.log(
         Logger::Warning, "sphere embedding attempt " + std::to_string(a + 1) + ": " + reason);
+      if (!best || result.distortion < best->distortion)
+      {
+        best = std::move(result);
+      }
       continue;
     }
-    result.seconds =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    if (options.progress)
-    {
-      options.progress(1.0);
-    }
-    return result;
+    return finish(std::move(result));
+  }
+  // Every certified attempt was too distorted: the least distorted one is
+  // still a valid embedding, and better than none.
+  if (best)
+  {
+    options.log(Logger::Warning,
+      "sphere embedding: no attempt reached distortion " + std::to_string(options.maxDistortion) +
+        "; keeping attempt " + std::to_string(best->attempt) + " (distortion " +
+        std::to_string(best->distortion) + ")");
+    return finish(std::move(*best));
   }
   throw std::runtime_error("no bijective sphere embedding found (" + reasons + ")");
 }
