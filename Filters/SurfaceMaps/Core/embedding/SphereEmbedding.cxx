@@ -244,6 +244,9 @@ struct Attempt
 {
   double barrierWeight;
   double distortionWeight;
+  /// A level whose distortion ends above this abandons the attempt (only
+  /// where a retry with a stronger barrier follows).
+  double abandonAbove;
 };
 
 class Embedder
@@ -355,6 +358,18 @@ public:
         { before, after },
         level > 0 ? std::max(iterations, this->Options.levelIterations) : 0,
         1.5 * previous);
+      // A level left this distorted carries nearly collapsed triangles into
+      // the next ones, whose vertices must then go into kernels a few
+      // rounding errors wide: on ../shared no attempt recovered from one and
+      // passed (the levels of every passing first attempt end below 15; the
+      // four failing ones pass 100 early and fail at the end, after up to
+      // 8 s more).
+      if (level > 0 &&
+        !(embeddingDistortion(this->Mesh.points, this->Positions, finer) <= attempt.abandonAbove))
+      {
+        throw AttemptFailed{ "nearly degenerate triangles on the sphere at " +
+          std::to_string(inserted) + " of " + std::to_string(nv) + " vertices" };
+      }
     }
     if (levels.empty())
     {
@@ -576,10 +591,11 @@ SphereEmbeddingResult embedOnSphere(const PolygonMesh& mesh, const SphereEmbeddi
   options.log(Logger::Detail,
     "sphere embedding: " + std::to_string(hierarchy.levels.size()) + " decimation levels");
 
+  const double never = std::numeric_limits<double>::infinity();
   const Attempt attempts[] = {
-    { options.barrierWeight, 1.0 },
-    { 100.0 * options.barrierWeight, 1.0 },
-    { 1.0, 0.0 }, // barrier alone
+    { options.barrierWeight, 1.0, options.maxDistortion },
+    { 100.0 * options.barrierWeight, 1.0, never }, // the last to minimise distortion: runs to the end
+    { 1.0, 0.0, never },                          // barrier alone
   };
   std::string reasons;
   // Progress never goes back: a retried attempt covers what is left of the
