@@ -20,7 +20,8 @@
  * a few projected-Newton steps; the final mesh gets up to FinalIterations.
  * The result is certified with exact orientation predicates and a degree
  * check. If certification fails (or some triangles end up nearly collapsed,
- * distortion above 100) the embedding is retried with a 100x stronger
+ * distortion above 100, at the end or at a level of the first attempt) the
+ * embedding is retried with a 100x stronger
  * barrier, then with the barrier alone; of certified attempts that are all
  * too distorted the least distorted one is kept; if none certifies the
  * filter reports an error and produces no output. "EmbeddingAttempt" says

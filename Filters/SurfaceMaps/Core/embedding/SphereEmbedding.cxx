@@ -360,10 +360,9 @@ public:
         1.5 * previous);
       // A level left this distorted carries nearly collapsed triangles into
       // the next ones, whose vertices must then go into kernels a few
-      // rounding errors wide: on ../shared no attempt recovered from one and
-      // passed (the levels of every passing first attempt end below 15; the
-      // four failing ones pass 100 early and fail at the end, after up to
-      // 8 s more).
+      // rounding errors wide; such an attempt fails late, at a placement or
+      // at the end (README, "Sphere embedding"), so the stronger barrier
+      // starts now.
       if (level > 0 &&
         !(embeddingDistortion(this->Mesh.points, this->Positions, finer) <= attempt.abandonAbove))
       {

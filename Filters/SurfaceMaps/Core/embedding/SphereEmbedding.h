@@ -37,10 +37,11 @@ struct SphereEmbeddingOptions
   int localIterations = 10;
   /// An attempt whose final distortion exceeds this counts as failed and the
   /// next attempt runs; if every certified attempt exceeds it, the least
-  /// distorted one is the result. A sound embedding's distortion is of order
-  /// 1-10 (2-7 on every mesh of ../shared); above 100 it is dominated by
-  /// triangles squeezed thousands of times on the sphere, which the map
-  /// inherits: its exact map squeezes the input there, however good T is.
+  /// distorted one is the result. The first attempt also gives up at the
+  /// first level whose distortion ends above it. A sound embedding's
+  /// distortion is of order 1-10; above 100 it is dominated by triangles
+  /// squeezed thousands of times on the sphere, which the map inherits: its
+  /// exact map squeezes the input there, however good T is.
   double maxDistortion = 100.0;
   /// Largest tangent step of one point per Newton step (tan 75 degrees).
   double maxPointStep = 3.7320508075688772;
