@@ -44,6 +44,17 @@ struct Dual
   {
   }
 
+  /// Tag for a result whose gradient and Hessian are about to be assigned in
+  /// full: skips zeroing N + N^2 entries that would be overwritten anyway.
+  struct Uninitialised
+  {
+  };
+  explicit Dual(Uninitialised)
+    : grad()
+    , Hess()
+  {
+  }
+
   /// The i-th variable, at `value`.
   static Dual variable(double value, int i)
   {
@@ -67,7 +78,7 @@ struct Dual
   /// f(this) given f' and f'' at val: the chain rule.
   Dual chain(double f, double df, double ddf) const
   {
-    Dual r;
+    Dual r{ Uninitialised{} };
     r.val = f;
     r.grad = df * this->grad;
     if constexpr (WithHessian)
@@ -123,8 +134,14 @@ struct Dual
 
   Dual operator-() const
   {
-    Dual r = *this;
-    r *= -1.0;
+    // Negation is exact, so this equals multiplying by -1 bit for bit.
+    Dual r{ Uninitialised{} };
+    r.val = -this->val;
+    r.grad = -this->grad;
+    if constexpr (WithHessian)
+    {
+      r.Hess = -this->Hess;
+    }
     return r;
   }
   Dual operator+() const { return *this; }
@@ -146,7 +163,7 @@ struct Dual
 
   friend Dual operator*(const Dual& a, const Dual& b)
   {
-    Dual r;
+    Dual r{ Uninitialised{} };
     r.val = a.val * b.val;
     r.grad = a.val * b.grad + b.val * a.grad;
     if constexpr (WithHessian)
@@ -160,7 +177,7 @@ struct Dual
   {
     // q = a / b: dq = (da - q db) / b, d2q = (d2a - q d2b - dq db' - db dq') / b.
     const double inv = 1.0 / b.val;
-    Dual r;
+    Dual r{ Uninitialised{} };
     r.val = a.val * inv;
     r.grad.noalias() = inv * (a.grad - r.val * b.grad);
     if constexpr (WithHessian)
@@ -229,7 +246,7 @@ struct Dual
     const double r4 = r2 * r2;
     const double fyy = -2.0 * x.val * y.val / r4, fxx = 2.0 * x.val * y.val / r4;
     const double fxy = (y.val * y.val - x.val * x.val) / r4;
-    Dual r;
+    Dual r{ Uninitialised{} };
     r.val = std::atan2(y.val, x.val);
     r.grad.noalias() = fy * y.grad + fx * x.grad;
     if constexpr (WithHessian)
@@ -298,7 +315,7 @@ template<int K, int N, bool H>
 Dual<K, H> restrict(const Dual<N, H>& d, int offset)
 {
   static_assert(K <= N, "restrict to at most as many variables");
-  Dual<K, H> r;
+  Dual<K, H> r{ typename Dual<K, H>::Uninitialised{} };
   r.val = d.val;
   r.grad = d.grad.template segment<K>(offset);
   if constexpr (H)

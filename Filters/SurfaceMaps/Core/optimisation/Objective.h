@@ -63,8 +63,9 @@ class ElementTerm : public ObjectiveTerm
 public:
   static constexpr int N = 2 * NV;
   // Below these element counts a parallel loop costs more than it saves
-  // (waking threads takes microseconds; a value takes nanoseconds).
-  static constexpr int ParallelValueThreshold = 20000;
+  // (waking threads takes microseconds; a value takes tens of nanoseconds,
+  // a derivative microseconds).
+  static constexpr int ParallelValueThreshold = 2000;
   static constexpr int ParallelDerivativeThreshold = 200;
 
   ElementTerm(std::string name, Energy energy)
