@@ -168,7 +168,14 @@ Objective::BlockColumns Objective::blockColumns(const SpherePoints& points) cons
   // sorting each short bucket is several times faster than one sort of all
   // pairs.
   const int nb = points.numberOfVariables() / 2;
+  std::size_t count = static_cast<std::size_t>(nb);
+  for (const Entry& entry : this->Terms)
+  {
+    const std::size_t nv = entry.Term->pointsPerElement();
+    count += static_cast<std::size_t>(entry.Term->numberOfElements()) * nv * (nv + 1) / 2;
+  }
   std::vector<std::array<int, 2>> pairs; // (column, row)
+  pairs.reserve(count);
   std::vector<int> idx;
   for (int b = 0; b < nb; ++b)
   {
