@@ -83,7 +83,12 @@ struct Dual
     r.grad = df * this->grad;
     if constexpr (WithHessian)
     {
-      r.Hess.noalias() = df * this->Hess + (ddf * this->grad) * this->grad.transpose();
+      // df H + (ddf g) g^T, one column at a time in a single pass.
+      const Gradient w = ddf * this->grad;
+      for (int j = 0; j < N; ++j)
+      {
+        r.Hess.col(j) = df * this->Hess.col(j) + w * this->grad[j];
+      }
     }
     return r;
   }
@@ -168,8 +173,12 @@ struct Dual
     r.grad = a.val * b.grad + b.val * a.grad;
     if constexpr (WithHessian)
     {
-      r.Hess.noalias() =
-        a.val * b.Hess + b.val * a.Hess + a.grad * b.grad.transpose() + b.grad * a.grad.transpose();
+      // a b'' + b a'' + a' b'^T + b' a'^T in a single pass.
+      for (int j = 0; j < N; ++j)
+      {
+        r.Hess.col(j) =
+          a.val * b.Hess.col(j) + b.val * a.Hess.col(j) + a.grad * b.grad[j] + b.grad * a.grad[j];
+      }
     }
     return r;
   }
@@ -182,8 +191,11 @@ struct Dual
     r.grad.noalias() = inv * (a.grad - r.val * b.grad);
     if constexpr (WithHessian)
     {
-      r.Hess.noalias() = inv * (a.Hess - r.val * b.Hess) -
-        inv * (r.grad * b.grad.transpose() + b.grad * r.grad.transpose());
+      for (int j = 0; j < N; ++j)
+      {
+        r.Hess.col(j) = inv * (a.Hess.col(j) - r.val * b.Hess.col(j)) -
+          inv * (r.grad * b.grad[j] + b.grad * r.grad[j]);
+      }
     }
     return r;
   }

@@ -92,7 +92,7 @@ public:
     std::array<Eigen::Matrix<T, 3, 1>, NV> p;
     for (int k = 0; k < NV; ++k)
     {
-      p[k] = points.seeded<T>(idx[k], 2 * k);
+      points.seedInto<T>(idx[k], 2 * k, p[k]);
     }
     return p;
   }

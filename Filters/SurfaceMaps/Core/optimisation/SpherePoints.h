@@ -70,14 +70,26 @@ public:
   template<typename T>
   Eigen::Matrix<T, 3, 1> seeded(int i, int first) const
   {
-    const Eigen::Vector3d& p = this->Positions[i];
     Eigen::Matrix<T, 3, 1> q;
+    this->seedInto(i, first, q);
+    return q;
+  }
+
+  /// seeded() written into q, whose derivatives must be zero (as a
+  /// default-constructed one's are): no temporaries. A Dual with a Hessian
+  /// is large (N + N^2 doubles), and every element seeds one per coordinate
+  /// of each of its points, so the copies of seeded() cost more than the
+  /// element's own arithmetic.
+  template<typename T>
+  void seedInto(int i, int first, Eigen::Matrix<T, 3, 1>& q) const
+  {
+    const Eigen::Vector3d& p = this->Positions[i];
     if constexpr (IsDual<T>::value)
     {
       const Eigen::Matrix<double, 3, 2>& B = this->Bases[i];
       for (int k = 0; k < 3; ++k)
       {
-        q[k] = T(p[k]);
+        q[k].val = p[k];
         q[k].grad[first] = B(k, 0);
         q[k].grad[first + 1] = B(k, 1);
         if constexpr (T::HasHessian)
@@ -91,7 +103,6 @@ public:
     {
       q = p.template cast<T>();
     }
-    return q;
   }
 
   /// An orthonormal tangent basis at the unit vector p.
