@@ -76,7 +76,7 @@ auto liftTriangle(const std::array<const Lift*, 3>& lifts,
       const Eigen::Matrix<D2, 3, 1> L = (*lifts[c])(q);
       for (int r = 0; r < 3; ++r)
       {
-        lifted[c][r] = embed<6>(L[r], 2 * c);
+        embedInto(L[r], 2 * c, lifted[c][r]);
       }
     }
     return lifted;

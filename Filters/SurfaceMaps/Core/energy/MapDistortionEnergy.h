@@ -64,8 +64,8 @@ struct MapDistortionEnergy
       {
         vP[k] = D6::variable(gP[k].val, k);
         vQ[k] = D6::variable(gQ[k].val, 3 + k);
-        u[k] = embed<12>(gP[k], 0);
-        u[3 + k] = embed<12>(gQ[k], 6);
+        embedInto(gP[k], 0, u[k]);
+        embedInto(gQ[k], 6, u[3 + k]);
       }
       const D6 f = symmetricDirichlet(vP, vQ);
       if (!std::isfinite(f.val))

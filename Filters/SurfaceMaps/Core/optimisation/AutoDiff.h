@@ -321,6 +321,20 @@ Dual<N, H> embed(const Dual<K, H>& d, int offset)
   return r;
 }
 
+/// embed() written into r, whose derivatives must be zero (as a
+/// default-constructed one's are): no temporary of N + N^2 doubles.
+template<int N, int K, bool H>
+void embedInto(const Dual<K, H>& d, int offset, Dual<N, H>& r)
+{
+  static_assert(K <= N, "embed into at least as many variables");
+  r.val = d.val;
+  r.grad.template segment<K>(offset) = d.grad;
+  if constexpr (H)
+  {
+    r.Hess.template block<K, K>(offset, offset) = d.Hess;
+  }
+}
+
 /// The variables offset .. offset + K - 1 of d as a K-variable scalar; exact
 /// when d depends on no other variables.
 template<int K, int N, bool H>
