@@ -215,3 +215,55 @@ TEST(AutoDiff, ComposeEmbedRestrictMatchDirectDifferentiation)
   EXPECT_LT((composed.grad - direct.grad).cwiseAbs().maxCoeff(), 1e-13);
   EXPECT_LT((composed.Hess - direct.Hess).cwiseAbs().maxCoeff(), 1e-12);
 }
+
+TEST(AutoDiff, EmbedIntoEqualsEmbed)
+{
+  // A 2-variable scalar with non-zero value, gradient and Hessian, placed at
+  // variables 3 and 4 of 6: in place, exactly as embed() places it, and no
+  // other entry touched.
+  using D2 = Dual<2>;
+  using D6 = Dual<6>;
+  const D2 a = D2::variable(0.7, 0), b = D2::variable(-1.3, 1);
+  const D2 s = a * a * b + sqrt(a * a + b * b);
+  D6 inPlace;
+  embedInto(s, 3, inPlace);
+  const D6 copied = embed<6>(s, 3);
+  EXPECT_EQ(inPlace.val, copied.val);
+  EXPECT_EQ(inPlace.grad, copied.grad);
+  EXPECT_EQ(inPlace.Hess, copied.Hess);
+  EXPECT_NE(inPlace.Hess(4, 3), 0.0);
+  EXPECT_EQ((inPlace.Hess.block<3, 6>(0, 0).cwiseAbs().maxCoeff()), 0.0);
+}
+
+TEST(AutoDiff, SinglePassHessiansAreThoseOfTheMatrixExpressions)
+{
+  // Product, quotient and chain rule fill their Hessian column by column;
+  // each entry must be the expression's, to the last bit (the maps of the
+  // normal build depend on it).
+  using D = Dual<5>;
+  std::array<D, 5> v;
+  for (int i = 0; i < 5; ++i)
+  {
+    v[i] = D::variable(0.3 + 0.37 * i, i);
+  }
+  const D a = v[0] * v[1] + v[2] * v[2] - v[4];
+  const D b = v[3] * v[4] + sqrt(v[0] + 2.0);
+  const D p = a * b, q = a / b, e = exp(a);
+  const Eigen::Matrix<double, 5, 5> productHess =
+    a.val * b.Hess + b.val * a.Hess + a.grad * b.grad.transpose() + b.grad * a.grad.transpose();
+  const Eigen::Matrix<double, 5, 5> quotientHess = (1.0 / b.val) * (a.Hess - q.val * b.Hess) -
+    (1.0 / b.val) * (q.grad * b.grad.transpose() + b.grad * q.grad.transpose());
+  const Eigen::Matrix<double, 5, 5> chainHess =
+    e.val * a.Hess + (e.val * a.grad) * a.grad.transpose();
+#ifdef __FMA__
+  // With fused multiply-adds the compiler may contract the two forms
+  // differently: equal to rounding.
+  const double tolerance = 1e-14;
+#else
+  const double tolerance = 0.0;
+#endif
+  EXPECT_LE((p.Hess - productHess).cwiseAbs().maxCoeff(), tolerance * productHess.norm());
+  EXPECT_LE((q.Hess - quotientHess).cwiseAbs().maxCoeff(), tolerance * quotientHess.norm());
+  EXPECT_LE((e.Hess - chainHess).cwiseAbs().maxCoeff(), tolerance * chainHess.norm());
+  EXPECT_NE(p.Hess(2, 4), 0.0); // the cross terms a' b'^T + b' a'^T are exercised
+}

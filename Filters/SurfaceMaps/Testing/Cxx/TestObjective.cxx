@@ -95,6 +95,15 @@ TEST(SpherePoints, SeededPointsEqualTheRetractionAtZero)
       EXPECT_LT((seeded[k].grad - retracted[k].grad).cwiseAbs().maxCoeff(), 1e-15);
       EXPECT_LT((seeded[k].Hess - retracted[k].Hess).cwiseAbs().maxCoeff(), 1e-15);
     }
+    // In place, into a default-constructed point: the same scalars.
+    Eigen::Matrix<D, 3, 1> inPlace;
+    points.seedInto(i, 2, inPlace);
+    for (int k = 0; k < 3; ++k)
+    {
+      EXPECT_EQ(inPlace[k].val, seeded[k].val);
+      EXPECT_EQ(inPlace[k].grad, seeded[k].grad);
+      EXPECT_EQ(inPlace[k].Hess, seeded[k].Hess);
+    }
   }
 }
 
