@@ -305,22 +305,6 @@ Dual<N, H> compose(const Dual<static_cast<int>(M), H>& f, const std::array<Dual<
   return r;
 }
 
-/// A scalar that depends on K variables, seen as depending on N >= K
-/// variables of which its own are offset .. offset + K - 1.
-template<int N, int K, bool H>
-Dual<N, H> embed(const Dual<K, H>& d, int offset)
-{
-  static_assert(K <= N, "embed into at least as many variables");
-  Dual<N, H> r;
-  r.val = d.val;
-  r.grad.template segment<K>(offset) = d.grad;
-  if constexpr (H)
-  {
-    r.Hess.template block<K, K>(offset, offset) = d.Hess;
-  }
-  return r;
-}
-
 /// embed() written into r, whose derivatives must be zero (as a
 /// default-constructed one's are): no temporary of N + N^2 doubles.
 template<int N, int K, bool H>
@@ -333,6 +317,16 @@ void embedInto(const Dual<K, H>& d, int offset, Dual<N, H>& r)
   {
     r.Hess.template block<K, K>(offset, offset) = d.Hess;
   }
+}
+
+/// A scalar that depends on K variables, seen as depending on N >= K
+/// variables of which its own are offset .. offset + K - 1.
+template<int N, int K, bool H>
+Dual<N, H> embed(const Dual<K, H>& d, int offset)
+{
+  Dual<N, H> r;
+  embedInto(d, offset, r);
+  return r;
 }
 
 /// The variables offset .. offset + K - 1 of d as a K-variable scalar; exact
