@@ -2,9 +2,11 @@
 # How much the map's quality depends on rounding: the shared benchmark pairs
 # (shrec 61 <-> 248, hand plain <-> vulcan, landmarks kept, default schedule)
 # mapped by BenchmarkMap from two builds of the same sources that round
-# differently: the normal build and one with -march=native (FMA contractions).
-# Each build is deterministic; a change to the optimisation should improve
-# both rows of a pair, not one lucky path. Extra arguments go to BenchmarkMap
+# differently: the normal build and one with -march=native and
+# SURFACEMAPS_PORTABLE_ARITHMETIC=OFF (FMA contractions, AVX-512 packets in
+# Eigen; with the option on, the default, a native build computes the normal
+# build's maps bit for bit). Each build is deterministic; a change to the
+# optimisation should improve both rows of a pair, not one lucky path. Extra arguments go to BenchmarkMap
 # (e.g. --coarse-barrier-weight 1e-2). Needs ../shared/data; run on an idle machine.
 #
 #   bash Testing/Benchmarks/rounding_spread.sh [BENCHMARKMAP OPTIONS]
@@ -19,9 +21,9 @@
 #
 # Environment:
 #   SURFACEMAPS_BUILD_DIR         the normal build (default build)
-#   SURFACEMAPS_NATIVE_BUILD_DIR  the -march=native build, configured and
-#                                 built here when missing or stale (default
-#                                 build-native)
+#   SURFACEMAPS_NATIVE_BUILD_DIR  the -march=native build without portable
+#                                 arithmetic, configured and built here
+#                                 (default build-native)
 set -euo pipefail
 cd "$(dirname "$0")/../.."
 build=${SURFACEMAPS_BUILD_DIR:-build}
@@ -29,9 +31,14 @@ native=${SURFACEMAPS_NATIVE_BUILD_DIR:-build-native}
 shared=../shared/data
 [ -d "$shared" ] || { echo "$shared does not exist: nothing to measure" >&2; exit 2; }
 [ -x "$build/bin/BenchmarkMap" ] || { echo "build first: bash .ci/build.sh" >&2; exit 2; }
-if [ ! -f "$native/CMakeCache.txt" ]; then
+# Configured every time: a tree made before SURFACEMAPS_PORTABLE_ARITHMETIC
+# existed would otherwise take its default (on) and round like the normal one.
+if [ -f "$native/CMakeCache.txt" ]; then
+  cmake -S . -B "$native" -DSURFACEMAPS_PORTABLE_ARITHMETIC=OFF > /dev/null
+else
   cmake -S . -B "$native" -G Ninja -DCMAKE_BUILD_TYPE=Release -DCMAKE_CXX_FLAGS=-march=native \
-    -DBUILD_TESTING=OFF -DSURFACEMAPS_WRAP_PYTHON=OFF -DPython3_EXECUTABLE=/usr/bin/python3 > /dev/null
+    -DSURFACEMAPS_PORTABLE_ARITHMETIC=OFF -DBUILD_TESTING=OFF -DSURFACEMAPS_WRAP_PYTHON=OFF \
+    -DPython3_EXECUTABLE=/usr/bin/python3 > /dev/null
 fi
 if [ "${1:-}" = --corpus ]; then
   shift

@@ -6,6 +6,8 @@
 #include <Eigen/LU>
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 using namespace surfacemaps;
 using namespace surfacemaps::testing;
 
@@ -266,4 +268,24 @@ TEST(AutoDiff, SinglePassHessiansAreThoseOfTheMatrixExpressions)
   EXPECT_LE((q.Hess - quotientHess).cwiseAbs().maxCoeff(), tolerance * quotientHess.norm());
   EXPECT_LE((e.Hess - chainHess).cwiseAbs().maxCoeff(), tolerance * chainHess.norm());
   EXPECT_NE(p.Hess(2, 4), 0.0); // the cross terms a' b'^T + b' a'^T are exercised
+}
+
+TEST(AutoDiff, ArithmeticDoesNotDependOnTheTargetInstructionSet)
+{
+#if defined(SURFACEMAPS_PORTABLE_ARITHMETIC)
+  // SURFACEMAPS_PORTABLE_ARITHMETIC (CMakeLists.txt) must reach the code:
+  // with FMA or AVX enabled, a -march=native build computes other maps than
+  // a portable one.
+#if defined(__FMA__) || defined(__AVX__)
+  FAIL() << "SURFACEMAPS_PORTABLE_ARITHMETIC is on but this code is compiled with FMA or AVX";
+#endif
+  // No contraction either: a * b + c rounds the product first. Here the
+  // product is 1 - 2^-60, which rounds to 1, so the sum is 0; fused, it
+  // would be -2^-60.
+  volatile double a = 1.0 + std::ldexp(1.0, -30), b = 1.0 - std::ldexp(1.0, -30), c = -1.0;
+  const double sum = a * b + c;
+  EXPECT_EQ(sum, 0.0);
+#else
+  GTEST_SKIP() << "built with SURFACEMAPS_PORTABLE_ARITHMETIC=OFF or not for x86-64";
+#endif
 }
