@@ -6,8 +6,9 @@
 # SURFACEMAPS_PORTABLE_ARITHMETIC=OFF (FMA contractions, AVX-512 packets in
 # Eigen; with the option on, the default, a native build computes the normal
 # build's maps bit for bit). Each build is deterministic; a change to the
-# optimisation should improve both rows of a pair, not one lucky path. Extra arguments go to BenchmarkMap
-# (e.g. --coarse-barrier-weight 1e-2). Needs ../shared/data; run on an idle machine.
+# optimisation should improve both rows of a pair, not one lucky path. Extra
+# arguments go to BenchmarkMap (e.g. --coarse-barrier-weight 1e-2). Needs
+# ../shared/data; run on an idle machine.
 #
 #   bash Testing/Benchmarks/rounding_spread.sh [BENCHMARKMAP OPTIONS]
 #   bash Testing/Benchmarks/rounding_spread.sh --corpus [CORPUS_REPORT OPTIONS]
