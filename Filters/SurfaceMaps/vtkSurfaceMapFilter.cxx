@@ -255,6 +255,7 @@ vtkSurfaceMapSettingDefinition(TargetError, double) vtkSurfaceMapSettingDefiniti
     int) vtkSurfaceMapSettingDefinition(LandmarkBarrierWeight, double)
     vtkSurfaceMapSettingDefinition(CoarseBarrierWeight, double)
       vtkSurfaceMapSettingDefinition(FineBarrierWeight, double)
+        vtkSurfaceMapSettingDefinition(FineBarrierRaise, double)
         vtkSurfaceMapSettingDefinition(MeshWeight, double) vtkSurfaceMapSettingDefinition(CoverageWeight, double) vtkSurfaceMapSettingDefinition(MapWeight,
           double) vtkSurfaceMapSettingDefinition(ApproximationWeight, double)
           vtkSurfaceMapSettingDefinition(LandmarkWeight, double)

@@ -271,6 +271,15 @@ public:
 
   ///@{
   /**
+   * From the fine phase on, the barrier weight of a triangle that inverts on a sphere at a Newton
+   * step's full step is multiplied by this, at most three times (the next steps see the wall they
+   * ran into); 1: the same weight for every triangle. Default 4, range [1, 1000].
+   */
+  vtkSurfaceMapSettingMacro(FineBarrierRaise, double);
+  ///@}
+
+  ///@{
+  /**
    * Weight of the mesh-quality term.
    */
   vtkSurfaceMapSettingMacro(MeshWeight, double);

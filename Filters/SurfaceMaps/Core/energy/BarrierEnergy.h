@@ -59,6 +59,9 @@ struct BarrierEnergy
 {
   std::vector<std::array<int, 3>> triangles;
   int offset = 0;
+  /// Optional: per triangle, a multiplier of its term (the caller's array,
+  /// which must outlive the energy's use); null: 1 for every triangle.
+  const double* scales = nullptr;
 
   int numberOfElements() const { return static_cast<int>(this->triangles.size()); }
   std::array<int, 3> points(int e) const
@@ -67,9 +70,10 @@ struct BarrierEnergy
     return { t[0] + this->offset, t[1] + this->offset, t[2] + this->offset };
   }
   template<typename T>
-  T operator()(int, const std::array<Eigen::Matrix<T, 3, 1>, 3>& p) const
+  T operator()(int e, const std::array<Eigen::Matrix<T, 3, 1>, 3>& p) const
   {
-    return orientationBarrier<T>(p[0], p[1], p[2]);
+    const T barrier = orientationBarrier<T>(p[0], p[1], p[2]);
+    return this->scales ? this->scales[e] * barrier : barrier;
   }
 };
 

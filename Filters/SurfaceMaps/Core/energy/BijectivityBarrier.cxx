@@ -22,6 +22,13 @@ double BijectivityBarrierTerm::gaussNewton(const SpherePoints& points,
   }
   gradient = -volume.grad / volume.val;
   H.noalias() = gradient * gradient.transpose();
+  const double* scales = this->energy().scales;
+  if (scales)
+  {
+    gradient *= scales[e];
+    H *= scales[e];
+    return -scales[e] * std::log(volume.val);
+  }
   return -std::log(volume.val);
 }
 

@@ -30,12 +30,14 @@ CommonTriangulation::CommonTriangulation(std::vector<PreparedInput>& surfaces,
   this->LiftTriangle.resize(n);
   this->Lifted.resize(n);
   this->Samples.resize(n);
+  this->BarrierRaises.resize(n);
   for (int i = 0; i < n; ++i)
   {
     this->Mesh.add_property(this->G[i]);
     this->Mesh.add_property(this->LiftTriangle[i]);
     this->Mesh.add_property(this->Lifted[i]);
     this->Mesh.add_property(this->Samples[i]);
+    this->Mesh.add_property(this->BarrierRaises[i]);
   }
   this->Mesh.add_property(this->Landmark);
   this->Mesh.add_property(this->Length);
@@ -56,6 +58,7 @@ CommonTriangulation::CommonTriangulation(std::vector<PreparedInput>& surfaces,
       throw std::invalid_argument("input 0 is not a manifold triangle mesh");
     }
     this->Mesh.property(this->Length, f) = 1.0;
+    this->clearBarrierRaise(f);
   }
   std::vector<int> vertexTriangle(first.points.size(), -1);
   for (std::size_t t = 0; t < first.triangles.size(); ++t)

@@ -52,6 +52,11 @@ struct MapEnergyWeights
   /// weight (no 1 / eps^2).
   std::vector<double> bounds;
   double bound(int i) const { return this->bounds.empty() ? 0.0 : this->bounds[i]; }
+  /// > 1: a triangle that inverts on a sphere at the full Newton step gets
+  /// its barrier weight on that sphere multiplied by this, up to
+  /// MaxBarrierRaises times (see CommonTriangulation::raiseBarrier); 1: one
+  /// weight for every triangle.
+  double barrierRaise = 1.0;
   /// Project the barrier's exact Hessian (eigenvalue clamp) instead of using
   /// its cheap Gauss-Newton form; worth it where the barrier dominates (the
   /// landmark phase), not where its weight is tiny.
@@ -212,6 +217,9 @@ public:
     std::vector<const Lift*> lifts;
     /// Per input and sample: the T triangle containing it (if tracked).
     std::vector<std::vector<int>> sampleTriangle;
+    /// Per input and triangle: the barrier weight's multiplier (empty when
+    /// weights.barrierRaise is off).
+    std::vector<std::vector<double>> barrierScales;
   };
   /// Garbage-collects the mesh and fills a snapshot and the sphere points
   /// (g of input i at i * vertices + v); landmark vertices are locked when
@@ -224,6 +232,20 @@ public:
   /// oriented on their sphere at `points` (exact predicate, as update()
   /// decides), ascending and unique.
   std::vector<int> invertedCorners(const Snapshot& snapshot, const SpherePoints& points) const;
+  /// How often a triangle's barrier weight on one sphere is raised at most.
+  static constexpr int MaxBarrierRaises = 3;
+  /// Raises the barrier weight (by weights.barrierRaise, up to
+  /// MaxBarrierRaises times per triangle and sphere) of the snapshot's
+  /// triangles that are not positively oriented at `points`, a Newton step's
+  /// full trial. The step is cut by the few triangles it runs through: their
+  /// barrier at the fine phase's tiny weight is too flat for the Newton model
+  /// to see the wall, so step after step aims through it. Raised where it
+  /// blocked, the barrier's curvature steers the next steps along the wall;
+  /// the barrier stays tiny everywhere else. A triangle made by an edit
+  /// starts unraised (clearBarrierRaise); remeshing compares energies without
+  /// the raise.
+  void raiseBarrier(const Snapshot& snapshot, const SpherePoints& points);
+  void clearBarrierRaise(OpenMesh::FaceHandle f);
   /// Writes moved points, lifts and sample assignments back into the mesh.
   void writeBack(const Snapshot& snapshot, const SpherePoints& points);
 
@@ -275,6 +297,8 @@ private:
   std::vector<OpenMesh::VPropHandleT<Eigen::Vector3d>> Lifted;
   OpenMesh::VPropHandleT<int> Landmark;
   OpenMesh::FPropHandleT<double> Length;
+  // Per input, how often each face's barrier weight was raised.
+  std::vector<OpenMesh::FPropHandleT<int>> BarrierRaises;
   OpenMesh::FPropHandleT<double> Energy;
   bool FaceEnergiesValid = false;
   std::vector<OpenMesh::FPropHandleT<std::vector<int>>> Samples;

@@ -244,6 +244,7 @@ void CommonTriangulation::buildObjective(const Snapshot& s,
       BarrierEnergy barrier;
       barrier.triangles = s.triangles;
       barrier.offset = i * nv;
+      barrier.scales = s.barrierScales[i].empty() ? nullptr : s.barrierScales[i].data();
       if (w.exactBarrierHessian)
       {
         objective.addTerm(

@@ -61,6 +61,19 @@ void CommonTriangulation::snapshot(Snapshot& s, SpherePoints& points, bool lockL
       }
     }
   }
+  s.barrierScales.assign(n, {});
+  if (this->weights.barrierRaise > 1.0)
+  {
+    for (int i = 0; i < n; ++i)
+    {
+      s.barrierScales[i].reserve(s.triangles.size());
+      for (auto f : this->Mesh.faces())
+      {
+        s.barrierScales[i].push_back(
+          std::pow(this->weights.barrierRaise, this->Mesh.property(this->BarrierRaises[i], f)));
+      }
+    }
+  }
   s.sampleTriangle.assign(n, {});
   if (this->TrackSamples)
   {
@@ -92,6 +105,38 @@ std::vector<int> CommonTriangulation::invertedCorners(const Snapshot& s,
   std::sort(corners.begin(), corners.end());
   corners.erase(std::unique(corners.begin(), corners.end()), corners.end());
   return corners;
+}
+
+void CommonTriangulation::raiseBarrier(const Snapshot& s, const SpherePoints& points)
+{
+  if (!(this->weights.barrierRaise > 1.0))
+  {
+    return;
+  }
+  const std::vector<Eigen::Vector3d>& positions = points.positions();
+  for (int i = 0; i < this->numberOfInputs(); ++i)
+  {
+    const std::vector<std::array<int, 3>>& triangles = s.embeddedTriangles[i];
+    for (std::size_t t = 0; t < triangles.size(); ++t)
+    {
+      const std::array<int, 3>& c = triangles[t];
+      if (orient3dOrigin(positions[c[0]], positions[c[1]], positions[c[2]]) <= 0)
+      {
+        // The snapshot numbers the faces as the garbage-collected mesh does.
+        int& raises =
+          this->Mesh.property(this->BarrierRaises[i], this->Mesh.face_handle(static_cast<int>(t)));
+        raises = std::min(MaxBarrierRaises, raises + 1);
+      }
+    }
+  }
+}
+
+void CommonTriangulation::clearBarrierRaise(OpenMesh::FaceHandle f)
+{
+  for (const auto& raises : this->BarrierRaises)
+  {
+    this->Mesh.property(raises, f) = 0;
+  }
 }
 
 bool CommonTriangulation::update(Snapshot& s, const SpherePoints& points) const

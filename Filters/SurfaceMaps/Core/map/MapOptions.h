@@ -46,13 +46,14 @@ struct SurfaceMapOptions
   int fineIterations = 50;
   double targetError = 1e-3;
   double fineBarrierWeight = 1e-6;
+  double fineBarrierRaise = 4.0;
   double meshWeight = 0.5;
   double coverageWeight = 0.1;
   double mapWeight = 1.0;
   double approximationWeight = 0.25;
 
   // Refinement where the exact map is distorted, after the fine phase.
-  int refinementRounds = 3;
+  int refinementRounds = 1;
   int refinementIterations = 10;
   double refinementDistortion = 1.4;
   double squeezeDistortion = 10.0;

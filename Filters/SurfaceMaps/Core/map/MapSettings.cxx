@@ -161,6 +161,14 @@ void phaseSettings(std::vector<MapSetting>& table)
     1e-12,
     1e6,
     "Weight of the bijectivity barrier in the fine phase and after it."));
+  table.push_back(real("FineBarrierRaise",
+    "fine-barrier-raise",
+    &Options::fineBarrierRaise,
+    1,
+    1e3,
+    "From the fine phase on, the barrier weight of a triangle of T that inverts on a sphere at a "
+    "Newton step's full step is multiplied by this (at most three times), so the next steps "
+    "see the wall they ran into; 1: the same weight for every triangle."));
   table.push_back(real("MeshWeight",
     "mesh-weight",
     &Options::meshWeight,

@@ -199,8 +199,17 @@ NewtonStepResult PhaseRunner::newtonIteration(const MapPhase& phase,
   NewtonOptions newton;
   newton.maxPointStep = this->Options.maxPointStep;
   newton.acceptTrial = [&](const SpherePoints& trial) { return this->T.update(snapshot, trial); };
+  bool raised = false;
   newton.blockingPoints = [&](const SpherePoints& trial)
-  { return this->T.invertedCorners(snapshot, trial); };
+  {
+    if (!raised)
+    {
+      // The first call sees the full Newton step.
+      this->T.raiseBarrier(snapshot, trial);
+      raised = true;
+    }
+    return this->T.invertedCorners(snapshot, trial);
+  };
   newton.log = this->Options.log;
   const NewtonStepResult step = newtonStep(objective, points, solver, newton);
   clock = Clock::now();

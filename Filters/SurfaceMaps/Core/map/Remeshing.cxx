@@ -314,6 +314,7 @@ void writeFaces(CommonTriangulation& T, const LocalEdit& edit, const std::vector
       throw std::logic_error("remeshing: a face after an edit is not one the edit evaluated");
     }
     T.setTargetLength(f, edit.afterLengths[match]);
+    T.clearBarrierRaise(f);
     T.setFaceEnergy(f, edit.afterEnergies[match]);
     if (T.tracksSamples())
     {

@@ -73,8 +73,10 @@ MapPhase finePhase(PhaseKind kind,
   const ScheduleContext& context,
   const std::vector<double>& bounds)
 {
-  return distortionPhase(
+  MapPhase phase = distortionPhase(
     kind, iterations, options.targetError, options.fineBarrierWeight, options, context, bounds);
+  phase.weights.barrierRaise = options.fineBarrierRaise;
+  return phase;
 }
 
 std::vector<MapPhase> distortionPhases(const SurfaceMapOptions& options,

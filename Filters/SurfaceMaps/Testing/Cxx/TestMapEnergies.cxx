@@ -3,6 +3,7 @@
 #include "MapTestInputs.h"
 #include "energy/ApproximationEnergy.h"
 #include "energy/BarrierEnergy.h"
+#include "energy/BijectivityBarrier.h"
 #include "energy/CoverageEnergy.h"
 #include "energy/MapDistortionEnergy.h"
 #include "energy/MeshQualityEnergy.h"
@@ -352,4 +353,51 @@ TEST(MapEnergies, ExactBarrierRejectsSliversThatAreOnlyPositiveWhenRounded)
   // The sample holds both kinds, so the test decides something.
   EXPECT_GT(roundedPositiveOnly, 100);
   EXPECT_GT(exactlyPositive, 100);
+}
+
+// A raised triangle's barrier (CommonTriangulation::raiseBarrier) is its
+// plain barrier times its scale, in the value, the gradient and both
+// Hessians (exact and Gauss-Newton); the Gauss-Newton one stays positive.
+TEST(MapEnergies, BarrierScalesMultiplyEachTrianglesTermInEveryForm)
+{
+  MapEnergyWeights w;
+  w.barrier = 0.01;
+  EnergyCase c(w);
+  BarrierEnergy plain;
+  plain.triangles = c.snapshot.triangles;
+  plain.offset = c.snapshot.vertices; // embedding 1
+  std::vector<double> scales(plain.triangles.size());
+  for (std::size_t t = 0; t < scales.size(); ++t)
+  {
+    scales[t] = t % 3 == 0 ? 1.0 : std::pow(4.0, static_cast<double>(t % 4));
+  }
+  BarrierEnergy raised = plain;
+  raised.scales = scales.data();
+  const BijectivityBarrierTerm plainTerm(plain), raisedTerm(raised);
+  const ElementTerm<3, BarrierEnergy> plainExact("barrier", plain), raisedExact("barrier", raised);
+  // The exact Hessian (projectionEps < 0) and the Gauss-Newton one (0).
+  auto expectScaled = [&](const ObjectiveTerm& unscaled, const ObjectiveTerm& scaled, double eps)
+  {
+    const TermDerivatives a = derivativesOf(unscaled, c.points, eps);
+    const TermDerivatives b = derivativesOf(scaled, c.points, eps);
+    const int n = 6;
+    for (std::size_t e = 0; e < scales.size(); ++e)
+    {
+      const double s = scales[e];
+      EXPECT_NEAR(b.values[e], s * a.values[e], 1e-12 * std::abs(s * a.values[e])) << e;
+      for (int k = 0; k < n; ++k)
+      {
+        const double g = s * a.gradients[e * n + k];
+        EXPECT_NEAR(b.gradients[e * n + k], g, 1e-12 * std::max(1.0, std::abs(g))) << e;
+      }
+      for (int k = 0; k < n * n; ++k)
+      {
+        const double h = s * a.hessians[e * n * n + k];
+        EXPECT_NEAR(b.hessians[e * n * n + k], h, 1e-12 * std::max(1.0, std::abs(h))) << e;
+      }
+    }
+  };
+  expectScaled(plainExact, raisedExact, -1.0);
+  expectScaled(plainTerm, raisedTerm, 0.0);
+  expectGaussNewtonForm(raisedTerm, c.points);
 }

@@ -9,6 +9,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 #include <set>
 
@@ -248,4 +249,74 @@ TEST_F(RemeshingTest, RoundLowersTheEnergyAndKeepsInvariants)
   // still drop by exactly the sum of their gains.
   EXPECT_NEAR(before - this->T->totalEnergy(), r.gain, 1e-9 * std::abs(before));
   this->expectInvariants();
+}
+
+TEST_F(RemeshingTest, BarrierIsRaisedWhereATrialInvertsAndEditsStartAfresh)
+{
+  CommonTriangulation::Snapshot snapshot;
+  SpherePoints points;
+  this->T->snapshot(snapshot, points, false);
+  EXPECT_TRUE(snapshot.barrierScales[0].empty()) << "raise off: one weight";
+  this->T->weights.barrierRaise = 4.0;
+  this->T->snapshot(snapshot, points, false);
+  ASSERT_EQ(snapshot.barrierScales[1].size(), snapshot.triangles.size());
+  for (int i = 0; i < 2; ++i)
+  {
+    for (const double s : snapshot.barrierScales[i])
+    {
+      EXPECT_EQ(s, 1.0);
+    }
+  }
+
+  // A point of embedding 1 on the far side of the sphere inverts the
+  // triangles around it there; raised more often than the cap allows.
+  const int moved = snapshot.vertices + snapshot.triangles[0][0];
+  std::vector<Eigen::Vector3d> positions = points.positions();
+  positions[moved] = -positions[moved];
+  points.setPositions(positions);
+  std::vector<char> inverted(snapshot.triangles.size(), 0);
+  for (std::size_t t = 0; t < inverted.size(); ++t)
+  {
+    const auto& c = snapshot.embeddedTriangles[1][t];
+    inverted[t] = orient3dOrigin(positions[c[0]], positions[c[1]], positions[c[2]]) <= 0;
+  }
+  ASSERT_GT(std::count(inverted.begin(), inverted.end(), 1), 0);
+  for (int k = 0; k < CommonTriangulation::MaxBarrierRaises + 2; ++k)
+  {
+    this->T->raiseBarrier(snapshot, points);
+  }
+  const double top = std::pow(4.0, CommonTriangulation::MaxBarrierRaises);
+  this->T->snapshot(snapshot, points, false); // the mesh's points: nothing moved
+  for (std::size_t t = 0; t < inverted.size(); ++t)
+  {
+    EXPECT_EQ(snapshot.barrierScales[0][t], 1.0) << "embedding 0 did not invert";
+    EXPECT_EQ(snapshot.barrierScales[1][t], inverted[t] ? top : 1.0) << "triangle " << t;
+  }
+  // A flip of a raised triangle's edge makes two new triangles: unraised.
+  HalfedgeMesh& mesh = this->T->mesh();
+  OpenMesh::FaceHandle kept;
+  bool flipped = false;
+  for (std::size_t t = 0; t < inverted.size() && !flipped; ++t)
+  {
+    const auto f = mesh.face_handle(static_cast<int>(t));
+    for (auto h : mesh.fh_range(f))
+    {
+      const auto other = mesh.opposite_face_handle(h);
+      if (inverted[t] && inverted[other.idx()] && applyFlip(*this->T, mesh.edge_handle(h), Always))
+      {
+        kept = mesh.face_handle(h);
+        flipped = true;
+        break;
+      }
+    }
+  }
+  ASSERT_TRUE(flipped);
+  this->T->snapshot(snapshot, points, false);
+  int raised = 0;
+  for (std::size_t t = 0; t < inverted.size(); ++t)
+  {
+    raised += snapshot.barrierScales[1][t] == top ? 1 : 0;
+  }
+  EXPECT_EQ(raised, std::count(inverted.begin(), inverted.end(), 1) - 2);
+  EXPECT_EQ(snapshot.barrierScales[1][kept.idx()], 1.0);
 }
