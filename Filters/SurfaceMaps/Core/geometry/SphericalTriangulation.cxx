@@ -33,17 +33,19 @@ double sphericalDegree(const std::vector<Eigen::Vector3d>& points,
   return sum / (4.0 * M_PI);
 }
 
-void appendInvertedCorners(const std::vector<Eigen::Vector3d>& points,
-  const std::vector<std::array<int, 3>>& triangles,
-  std::vector<int>& corners)
+std::vector<int> invertedTriangles(const std::vector<Eigen::Vector3d>& points,
+  const std::vector<std::array<int, 3>>& triangles)
 {
-  for (const auto& t : triangles)
+  std::vector<int> inverted;
+  for (std::size_t f = 0; f < triangles.size(); ++f)
   {
+    const auto& t = triangles[f];
     if (orient3dOrigin(points[t[0]], points[t[1]], points[t[2]]) <= 0)
     {
-      corners.insert(corners.end(), t.begin(), t.end());
+      inverted.push_back(static_cast<int>(f));
     }
   }
+  return inverted;
 }
 
 BijectivityCertificate certifyBijective(const std::vector<Eigen::Vector3d>& points,

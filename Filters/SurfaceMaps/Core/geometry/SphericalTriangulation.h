@@ -23,11 +23,10 @@ double signedSphericalArea(const Eigen::Vector3d& a,
 double sphericalDegree(const std::vector<Eigen::Vector3d>& points,
   const std::vector<std::array<int, 3>>& triangles);
 
-/// Appends the corners of the triangles whose exact orientation is not
-/// positive (unsorted, with repeats).
-void appendInvertedCorners(const std::vector<Eigen::Vector3d>& points,
-  const std::vector<std::array<int, 3>>& triangles,
-  std::vector<int>& corners);
+/// The indices of the triangles whose exact orientation is not positive,
+/// ascending.
+std::vector<int> invertedTriangles(const std::vector<Eigen::Vector3d>& points,
+  const std::vector<std::array<int, 3>>& triangles);
 
 struct BijectivityCertificate
 {

@@ -100,7 +100,10 @@ std::vector<int> CommonTriangulation::invertedCorners(const Snapshot& s,
   std::vector<int> corners;
   for (const auto& triangles : s.embeddedTriangles)
   {
-    appendInvertedCorners(positions, triangles, corners);
+    for (const int t : invertedTriangles(positions, triangles))
+    {
+      corners.insert(corners.end(), triangles[t].begin(), triangles[t].end());
+    }
   }
   std::sort(corners.begin(), corners.end());
   corners.erase(std::unique(corners.begin(), corners.end()), corners.end());
@@ -113,20 +116,13 @@ void CommonTriangulation::raiseBarrier(const Snapshot& s, const SpherePoints& po
   {
     return;
   }
-  const std::vector<Eigen::Vector3d>& positions = points.positions();
   for (int i = 0; i < this->numberOfInputs(); ++i)
   {
-    const std::vector<std::array<int, 3>>& triangles = s.embeddedTriangles[i];
-    for (std::size_t t = 0; t < triangles.size(); ++t)
+    // The snapshot numbers the faces as the garbage-collected mesh does.
+    for (const int t : invertedTriangles(points.positions(), s.embeddedTriangles[i]))
     {
-      const std::array<int, 3>& c = triangles[t];
-      if (orient3dOrigin(positions[c[0]], positions[c[1]], positions[c[2]]) <= 0)
-      {
-        // The snapshot numbers the faces as the garbage-collected mesh does.
-        int& raises =
-          this->Mesh.property(this->BarrierRaises[i], this->Mesh.face_handle(static_cast<int>(t)));
-        raises = std::min(MaxBarrierRaises, raises + 1);
-      }
+      int& raises = this->Mesh.property(this->BarrierRaises[i], this->Mesh.face_handle(t));
+      raises = std::min(MaxBarrierRaises, raises + 1);
     }
   }
 }
