@@ -19,13 +19,17 @@
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
 #include "vtkPolyData.h"
+#include "vtkSMPThreadLocal.h"
+#include "vtkSMPTools.h"
 #include "vtkSmartPointer.h"
 #include "vtkStaticCellLocator.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 vtkStandardNewMacro(vtkSurfaceMapEvaluation);
 
@@ -52,50 +56,95 @@ void addCellArray(vtkPolyData* output, const char* name, const std::vector<doubl
   output->GetCellData()->AddArray(array);
 }
 
-// Closest-point distances to a surface.
-class SurfaceDistance
+// The largest closest-point distance from a set of points to a surface, on
+// all threads. Each thread queries a locator of its own, built on a shallow
+// copy of the surface: VTK 9.1 does not document vtkStaticCellLocator's
+// queries as thread-safe, and a locator costs about as much as a few thousand
+// of the queries. The maximum does not depend on how the points are split.
+class LargestDistance
 {
 public:
-  explicit SurfaceDistance(vtkPolyData* surface)
+  LargestDistance(const std::vector<Eigen::Vector3d>& points, vtkPolyData* surface)
+    : Points(points)
+    , Surface(surface)
   {
-    this->Locator->SetDataSet(surface);
-    this->Locator->BuildLocator();
-  }
-  double operator()(const double p[3])
-  {
-    double closest[3], distance2;
-    vtkIdType cellId;
-    int subId;
-    this->Locator->FindClosestPoint(p, closest, this->Cell, cellId, subId, distance2);
-    return std::sqrt(distance2);
   }
 
+  void Initialize()
+  {
+    Query& query = this->Queries.Local();
+    query.Surface = vtkSmartPointer<vtkPolyData>::New();
+    query.Locator = vtkSmartPointer<vtkStaticCellLocator>::New();
+    query.Cell = vtkSmartPointer<vtkGenericCell>::New();
+    query.Surface->ShallowCopy(this->Surface);
+    query.Locator->SetDataSet(query.Surface);
+    query.Locator->BuildLocator();
+    query.Largest = 0.0;
+  }
+
+  void operator()(vtkIdType begin, vtkIdType end)
+  {
+    Query& query = this->Queries.Local();
+    for (vtkIdType i = begin; i < end; ++i)
+    {
+      double closest[3], distance2;
+      vtkIdType cellId;
+      int subId;
+      query.Locator->FindClosestPoint(
+        this->Points[i].data(), closest, query.Cell, cellId, subId, distance2);
+      query.Largest = std::max(query.Largest, distance2);
+    }
+  }
+
+  void Reduce()
+  {
+    for (const Query& query : this->Queries)
+    {
+      this->Result = std::max(this->Result, std::sqrt(query.Largest));
+    }
+  }
+
+  double Result = 0.0;
+
 private:
-  vtkNew<vtkStaticCellLocator> Locator;
-  vtkNew<vtkGenericCell> Cell;
+  struct Query
+  {
+    vtkSmartPointer<vtkPolyData> Surface;
+    vtkSmartPointer<vtkStaticCellLocator> Locator;
+    vtkSmartPointer<vtkGenericCell> Cell;
+    double Largest = 0.0;
+  };
+  const std::vector<Eigen::Vector3d>& Points;
+  vtkPolyData* Surface;
+  vtkSMPThreadLocal<Query> Queries;
 };
+
+double largestDistance(const std::vector<Eigen::Vector3d>& points, vtkPolyData* surface)
+{
+  // The shallow copies share the surface's cells: build them once, before
+  // the threads read them.
+  surface->BuildCells();
+  LargestDistance largest(points, surface);
+  vtkSMPTools::For(0, static_cast<vtkIdType>(points.size()), 1024, largest);
+  return largest.Result;
+}
 
 // Largest distance from a vertex of `original` to the surface `approximation`.
 double largestVertexDistance(vtkPolyData* original, vtkPolyData* approximation)
 {
-  SurfaceDistance distance(approximation);
-  double largest = 0.0;
+  std::vector<Eigen::Vector3d> points(original->GetNumberOfPoints());
   for (vtkIdType i = 0; i < original->GetNumberOfPoints(); ++i)
   {
-    double p[3];
-    original->GetPoint(i, p);
-    largest = std::max(largest, distance(p));
+    original->GetPoint(i, points[i].data());
   }
-  return largest;
+  return largestDistance(points, approximation);
 }
 
 // Largest distance from points sampled inside the triangles of `from` (their
 // vertices, edge midpoints and centroids) to the surface `to`.
 double largestSampledDistance(vtkPolyData* from, vtkPolyData* to)
 {
-  SurfaceDistance distance(to);
   const surfacemaps::PolygonMesh mesh = vtkSurfaceMapsConversion::ToPolygonMesh(from);
-  double largest = 0.0;
   const double weights[7][3] = { { 1, 0, 0 },
     { 0, 1, 0 },
     { 0, 0, 1 },
@@ -103,6 +152,8 @@ double largestSampledDistance(vtkPolyData* from, vtkPolyData* to)
     { 0, 0.5, 0.5 },
     { 0.5, 0, 0.5 },
     { 1 / 3.0, 1 / 3.0, 1 / 3.0 } };
+  std::vector<Eigen::Vector3d> points;
+  points.reserve(7 * mesh.numberOfFaces());
   for (std::size_t f = 0; f < mesh.numberOfFaces(); ++f)
   {
     if (mesh.faceSize(f) != 3)
@@ -112,12 +163,11 @@ double largestSampledDistance(vtkPolyData* from, vtkPolyData* to)
     const int* t = mesh.face(f);
     for (const auto& w : weights)
     {
-      const Eigen::Vector3d p =
-        w[0] * mesh.points[t[0]] + w[1] * mesh.points[t[1]] + w[2] * mesh.points[t[2]];
-      largest = std::max(largest, distance(p.data()));
+      points.push_back(
+        w[0] * mesh.points[t[0]] + w[1] * mesh.points[t[1]] + w[2] * mesh.points[t[2]]);
     }
   }
-  return largest;
+  return largestDistance(points, to);
 }
 
 double percentOfDiagonal(double distance, vtkPolyData* reference)

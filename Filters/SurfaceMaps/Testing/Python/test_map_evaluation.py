@@ -132,3 +132,39 @@ def test_distances_to_the_originals():
     assert two >= h
     assert e.GetSummaryValue("HausdorffTarget") == pytest.approx(0.0, abs=1e-12)
     assert e.GetSummaryValue("TwoSidedDistanceTarget") == pytest.approx(0.0, abs=1e-9)
+
+
+def test_distances_agree_with_vtk_implicit_distance():
+    # H and the two-sided distance against VTK's own closest-point distance
+    # (vtkImplicitPolyDataDistance), point by point over the same samples:
+    # vertices, edge midpoints and centroids. Thousands of samples, so the
+    # evaluation splits them over its threads.
+    from vtkmodules.vtkFiltersCore import vtkImplicitPolyDataDistance
+
+    original = surfacemaps.read_mesh(data("ellipsoid.obj"))
+    points = vtk_to_numpy(original.GetPoints().GetData())
+    rng = np.random.default_rng(7)
+    approximation = with_points(original, points + 0.01 * rng.standard_normal(points.shape))
+    e, errors = evaluate(approximation, approximation, original, original)
+    assert not errors
+
+    def samples(mesh):
+        p = vtk_to_numpy(mesh.GetPoints().GetData())
+        t = vtk_to_numpy(mesh.GetPolys().GetConnectivityArray()).reshape(-1, 3)
+        a, b, c = p[t[:, 0]], p[t[:, 1]], p[t[:, 2]]
+        return np.vstack([a, b, c, (a + b) / 2, (b + c) / 2, (a + c) / 2, (a + b + c) / 3])
+
+    def largest(points, surface):
+        distance = vtkImplicitPolyDataDistance()
+        distance.SetInput(surface)
+        return max(abs(distance.EvaluateFunction(*map(float, x))) for x in points)
+
+    diagonal = original.GetLength()
+    assert len(samples(original)) > 4 * 1024
+    h = 100.0 * largest(vtk_to_numpy(original.GetPoints().GetData()), approximation) / diagonal
+    two = max(largest(samples(original), approximation), largest(samples(approximation), original))
+    two *= 100.0 / diagonal
+    assert h > 0.0
+    assert e.GetSummaryValue("HausdorffSource") == pytest.approx(h, rel=1e-9)
+    assert e.GetSummaryValue("TwoSidedDistanceSource") == pytest.approx(two, rel=1e-9)
+    assert e.GetSummaryValue("HausdorffTarget") == pytest.approx(h, rel=1e-9)
