@@ -164,6 +164,9 @@ int runEmbed(const std::vector<std::string>& args)
     static_cast<int>(value("EmbeddingNewtonIterations")),
     static_cast<int>(value("EmbeddingLevels")),
     value("EmbeddingSeconds"));
+  std::printf(
+    "  smallest ratio of a triangle's share of the sphere to its share of the area %.3g\n",
+    value("EmbeddingSmallestAreaRatio"));
   if (vtkDataArray* alignment = result->GetFieldData()->GetArray("LandmarkAlignmentError"))
   {
     std::printf("  rotated onto %s: landmarks %.4f rad (RMS) from the reference's\n",

@@ -200,6 +200,7 @@ void writeOutput(vtkPolyData* output,
   addFieldValue<vtkIntArray>(output, "EmbeddingLevels", result.levels);
   addFieldValue<vtkIntArray>(output, "EmbeddingAttempt", result.attempt);
   addFieldValue<vtkDoubleArray>(output, "EmbeddingSeconds", result.seconds);
+  addFieldValue<vtkDoubleArray>(output, "EmbeddingSmallestAreaRatio", result.smallestAreaRatio);
   if (alignmentError >= 0.0)
   {
     addFieldValue<vtkDoubleArray>(output, "LandmarkAlignmentError", alignmentError);

@@ -17,7 +17,10 @@
  * independent sets per level) to a tetrahedron, which is placed as a regular
  * tetrahedron; the collapses are undone level by level, each vertex placed
  * inside its one-ring's kernel and optimised locally, then the whole level by
- * a few projected-Newton steps; the final mesh gets up to FinalIterations.
+ * a few projected-Newton steps; the final mesh gets up to FinalIterations,
+ * and up to 150 in all while some triangle's share of the sphere is below a
+ * hundredth of its share of the mesh's area (the exact map of a surface map
+ * would inherit such a squeezed triangle).
  * The result is certified with exact orientation predicates and a degree
  * check. If certification fails (or some triangles end up nearly collapsed,
  * distortion above 100, at the end or at a level of the first attempt) the
@@ -44,7 +47,10 @@
  * the sphere (for viewing) and the original coordinates are kept in the point
  * array "InputPosition". Field data: "EmbeddingDistortion" (symmetric
  * Dirichlet, 1 for an isometry), "EmbeddingEnergy", "EmbeddingNewtonIterations",
- * "EmbeddingLevels", "EmbeddingAttempt" (1 = default weights), "EmbeddingSeconds".
+ * "EmbeddingLevels", "EmbeddingAttempt" (1 = default weights), "EmbeddingSeconds",
+ * "EmbeddingSmallestAreaRatio" (over the triangles, the smallest ratio of a
+ * triangle's share of the sphere to its share of the mesh's area; 1 for an
+ * area-preserving embedding).
  *
  * @warning Cost grows a little faster than linearly with the vertex count:
  * about 0.7 s for 3 000 vertices and 3.5 s for 12 000 on two cores (see the
@@ -102,7 +108,8 @@ public:
 
   ///@{
   /**
-   * Newton iterations on the full mesh at the end. Default 50, range [0, 10000].
+   * Newton iterations on the full mesh at the end. Default 50, range [0, 10000]
+   * (more while a triangle is squeezed on the sphere, see above).
    * They stop earlier once a Newton step would lower the energy by less than
    * FinalTolerance times its value (default 1e-6, range [0, 1]).
    */

@@ -40,6 +40,31 @@ double inputAreaOf(const std::vector<Eigen::Vector3d>& x, const Triangles& trian
   return area;
 }
 
+// The smallest ratio of a triangle's share of the sphere's chord area to its
+// share of the input's area (SphereEmbeddingResult::smallestAreaRatio).
+double smallestAreaRatioOf(const std::vector<Eigen::Vector3d>& input,
+  const std::vector<Eigen::Vector3d>& sphere,
+  const Triangles& triangles)
+{
+  std::vector<double> inputAreas(triangles.size()), chordAreas(triangles.size());
+  double inputTotal = 0.0, chordTotal = 0.0;
+  for (std::size_t f = 0; f < triangles.size(); ++f)
+  {
+    const auto& t = triangles[f];
+    inputAreas[f] = (input[t[1]] - input[t[0]]).cross(input[t[2]] - input[t[0]]).norm();
+    chordAreas[f] = (sphere[t[1]] - sphere[t[0]]).cross(sphere[t[2]] - sphere[t[0]]).norm();
+    inputTotal += inputAreas[f];
+    chordTotal += chordAreas[f];
+  }
+  double smallest = std::numeric_limits<double>::infinity();
+  for (std::size_t f = 0; f < triangles.size(); ++f)
+  {
+    // Degenerate input triangles are rejected before embedding.
+    smallest = std::min(smallest, (chordAreas[f] / chordTotal) / (inputAreas[f] / inputTotal));
+  }
+  return smallest;
+}
+
 // Thrown inside one attempt when it cannot continue; the next attempt runs.
 struct AttemptFailed
 {
@@ -357,7 +382,8 @@ public:
         result,
         { before, after },
         level > 0 ? std::max(iterations, this->Options.levelIterations) : 0,
-        1.5 * previous);
+        1.5 * previous,
+        level > 0 ? 0 : this->Options.finalIterationsSqueezed);
       // A level left this distorted carries nearly collapsed triangles into
       // the next ones, whose vertices must then go into kernels a few
       // rounding errors wide; such an attempt fails late, at a placement or
@@ -375,8 +401,14 @@ public:
       energy.triangles = this->Hierarchy.triangles;
       energy.barrierWeight = attempt.barrierWeight / static_cast<double>(energy.triangles.size());
       energy.inputArea = inputAreaOf(this->Mesh.points, energy.triangles);
-      this->optimise(
-        energy, this->Options.finalIterations, this->Options.finalTolerance, result, { 0.0, 1.0 });
+      this->optimise(energy,
+        this->Options.finalIterations,
+        this->Options.finalTolerance,
+        result,
+        { 0.0, 1.0 },
+        0,
+        std::numeric_limits<double>::infinity(),
+        this->Options.finalIterationsSqueezed);
     }
     result.positions = this->Positions;
     result.levels = static_cast<int>(levels.size());
@@ -393,15 +425,18 @@ private:
 
   // Newton steps on the active vertices; returns the final energy. After
   // `iterations` steps it goes on, up to `extendedIterations` in all, while
-  // the energy is above `extendAbove`. Progress is reported after every step,
-  // moving through `fractions` (at the start, after the last possible step).
+  // the energy is above `extendAbove`, and up to `squeezedIterations` in all
+  // while a triangle is squeezed (Options.squeezedRatio). Progress is
+  // reported after every step, moving through `fractions` (at the start,
+  // after the last step of the first `iterations`, or of the extension).
   double optimise(EmbeddingEnergy& energy,
     int iterations,
     double tolerance,
     SphereEmbeddingResult& result,
     std::array<double, 2> fractions,
     int extendedIterations = 0,
-    double extendAbove = std::numeric_limits<double>::infinity())
+    double extendAbove = std::numeric_limits<double>::infinity(),
+    int squeezedIterations = 0)
   {
     SpherePoints points(this->Positions);
     std::vector<char> locked(this->Active.size());
@@ -423,9 +458,13 @@ private:
     { return std::lround(sphericalDegree(p.positions(), triangles)) == 1; };
     double energyNow = std::numeric_limits<double>::infinity();
     const int most = std::max(iterations, extendedIterations);
-    for (int it = 0; it < most; ++it)
+    const int squeezeCap = this->Options.squeezedRatio > 0.0 ? squeezedIterations : 0;
+    for (int it = 0; it < std::max(most, squeezeCap); ++it)
     {
-      if (it >= iterations && !(energyNow > extendAbove))
+      if (it >= iterations && !(it < most && energyNow > extendAbove) &&
+        !(it < squeezeCap &&
+          smallestAreaRatioOf(this->Mesh.points, points.positions(), triangles) <
+            this->Options.squeezedRatio))
       {
         break;
       }
@@ -446,7 +485,7 @@ private:
              << (step.regularised ? ", shifted" : "") << ")";
         this->Options.log(Logger::Detail, line.str());
       }
-      this->report(fractions[0] + (fractions[1] - fractions[0]) * (it + 1) / most);
+      this->report(fractions[0] + (fractions[1] - fractions[0]) * std::min(1.0, (it + 1.0) / most));
       // Converged when the decrease a Newton step expects (decrement^2 / 2)
       // is negligible. Absolute, in units of the distortion (whose minimum is
       // 1): a relative test would stop at once when one bad triangle makes
@@ -650,6 +689,8 @@ SphereEmbeddingResult embedOnSphere(const PolygonMesh& mesh, const SphereEmbeddi
       continue;
     }
     result.distortion = embeddingDistortion(mesh.points, result.positions, hierarchy.triangles);
+    result.smallestAreaRatio =
+      smallestAreaRatioOf(mesh.points, result.positions, hierarchy.triangles);
     if (!(result.distortion <= options.maxDistortion))
     {
       const std::string reason = "nearly degenerate triangles on the sphere (distortion " +

@@ -14,6 +14,8 @@
 #include <omp.h>
 
 #include <algorithm>
+#include <limits>
+#include <numeric>
 #include <random>
 #include <set>
 
@@ -265,6 +267,51 @@ TEST(SphereEmbedding, TooDistortedEverywhereKeepsTheLeastDistortedAttempt)
   EXPECT_NEAR(result.distortion, *least, 1e-6);
   EXPECT_LT(result.distortion, distortions.back() - 1e-3);
   EXPECT_EQ(result.attempt, 2 + static_cast<int>(least - distortions.begin()));
+}
+
+TEST(SphereEmbedding, FinalIterationsGoOnWhileATriangleIsSqueezed)
+{
+  // After two final iterations some triangle has the smallest ratio r of its
+  // share of the sphere to its share of the area. Asking for 1.5 r makes the
+  // final iterations go on, until no triangle is below it or the cap; with
+  // the check off they stop at two. Both runs are the same up to there.
+  const PolygonMesh mesh = readPly(Data + "/limbs.ply");
+  SphereEmbeddingOptions options;
+  options.finalIterations = 2;
+  options.finalTolerance = 0.0;
+  options.finalIterationsSqueezed = 40;
+  options.squeezedRatio = 0.0;
+  const SphereEmbeddingResult off = embedOnSphere(mesh, options);
+
+  // The reported ratio, recomputed from the positions.
+  const auto triangles = mesh.triangles();
+  std::vector<double> sphereShare, areaShare;
+  for (const auto& t : triangles)
+  {
+    const auto& p = off.positions;
+    const auto& x = mesh.points;
+    sphereShare.push_back((p[t[1]] - p[t[0]]).cross(p[t[2]] - p[t[0]]).norm());
+    areaShare.push_back((x[t[1]] - x[t[0]]).cross(x[t[2]] - x[t[0]]).norm());
+  }
+  const double sphereTotal = std::accumulate(sphereShare.begin(), sphereShare.end(), 0.0);
+  const double areaTotal = std::accumulate(areaShare.begin(), areaShare.end(), 0.0);
+  double smallest = std::numeric_limits<double>::infinity();
+  for (std::size_t f = 0; f < triangles.size(); ++f)
+  {
+    smallest = std::min(smallest, (sphereShare[f] / sphereTotal) / (areaShare[f] / areaTotal));
+  }
+  EXPECT_NEAR(off.smallestAreaRatio, smallest, 1e-12 * smallest);
+  ASSERT_GT(off.smallestAreaRatio, 0.0);
+  ASSERT_LT(off.smallestAreaRatio, 1.0);
+
+  options.squeezedRatio = 1.5 * off.smallestAreaRatio;
+  const SphereEmbeddingResult on = embedOnSphere(mesh, options);
+  EXPECT_TRUE(on.certificate.bijective);
+  const int extra = on.newtonIterations - off.newtonIterations;
+  EXPECT_GE(extra, 1);
+  EXPECT_LE(extra, 38);
+  EXPECT_TRUE(on.smallestAreaRatio >= options.squeezedRatio || extra == 38)
+    << on.smallestAreaRatio << " after " << extra << " more iterations";
 }
 
 TEST(SphereEmbedding, ProgressIsMonotoneAndAbortStops)
