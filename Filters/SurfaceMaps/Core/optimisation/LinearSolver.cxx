@@ -8,9 +8,13 @@
 #include <omp.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
-#include <stdexcept>
+#include <memory>
+#include <new>
 #include <sstream>
+#include <stdexcept>
+#include <vector>
 
 namespace surfacemaps
 {
@@ -79,20 +83,387 @@ private:
     return m;
   }
 };
+
+// The rows of a simplicial factor split over threads along the elimination
+// tree. Row k of L depends only on the rows of k's subtree, and with a
+// postordered tree (CHOLMOD's default) a subtree is a contiguous range of
+// rows. So complete subtrees can be factorised by different threads at once,
+// and the rows above them (the remainder, closed under taking parents) after
+// them. CHOLMOD computes every row the same way whoever computes it, in the
+// same order within each column, so the factor is the serial one bit for bit.
+// CHOLMOD's simplicial factorisation runs on one thread. Its supernodal one
+// can use threads inside BLAS, but the map's Newton systems (about 115 flops
+// per factor entry) factorise faster simplicial than supernodal. With AMD
+// orderings the rows near the root hold about half of the work and stay
+// serial.
+struct RowSplit
+{
+  /// Each list's rows, ascending and linked through `next` (CHOLMOD's
+  /// RLinkUp): first row and one past the last. Lists [0, threads) run at
+  /// once; the last list is the remainder.
+  std::vector<std::array<int, 2>> lists;
+  std::vector<int> next;
+  /// The thread count it was made for; whether it is up to date.
+  int threads = 0;
+  bool valid = false;
+};
+
+// Elimination-tree split for `threads` threads; an empty split (no lists)
+// when it would not pay.
+RowSplit splitRows(const cholmod_sparse& S, const std::vector<int>& parent, int threads)
+{
+  RowSplit split;
+  split.valid = true;
+  split.threads = threads;
+  const int n = static_cast<int>(parent.size());
+  // Work of row k: the updates of the up-looking factorisation, one per entry
+  // above row k in each column of row k's pattern (found by walking the
+  // elimination tree up from the entries of S's column k, as CHOLMOD does).
+  // Summed over subtrees below. Subtree of j: rows j - size[j] + 1 .. j.
+  std::vector<double> work(n, 1.0);
+  std::vector<int> size(n, 1);
+  {
+    const int* Sp = static_cast<const int*>(S.p);
+    const int* Si = static_cast<const int*>(S.i);
+    std::vector<int> entries(n, 0), visited(n, -1);
+    for (int k = 0; k < n; ++k)
+    {
+      visited[k] = k;
+      for (int p = Sp[k]; p < Sp[k + 1]; ++p)
+      {
+        for (int i = Si[p]; i < k && i >= 0 && visited[i] != k; i = parent[i])
+        {
+          visited[i] = k;
+          work[k] += 1.0 + entries[i]++;
+        }
+      }
+    }
+  }
+  double total = 0.0;
+  for (int j = 0; j < n; ++j)
+  {
+    total += work[j];
+  }
+  // Below this a factorisation takes around a millisecond: waking threads
+  // and their workspaces would cost more than the split saves.
+  constexpr double minimumWork = 1e6;
+  if (threads < 2 || n < 2 || total < minimumWork)
+  {
+    return split;
+  }
+  for (int j = 0; j < n; ++j)
+  {
+    if (parent[j] >= 0)
+    {
+      if (parent[j] <= j)
+      {
+        return split; // not postordered
+      }
+      work[parent[j]] += work[j];
+      size[parent[j]] += size[j];
+    }
+  }
+  std::vector<int> childStart(n + 1, 0), children(n);
+  for (int j = 0; j < n; ++j)
+  {
+    if (parent[j] >= 0)
+    {
+      ++childStart[parent[j] + 1];
+    }
+  }
+  for (int j = 0; j < n; ++j)
+  {
+    childStart[j + 1] += childStart[j];
+  }
+  {
+    std::vector<int> at(childStart.begin(), childStart.end() - 1);
+    for (int j = 0; j < n; ++j)
+    {
+      if (parent[j] >= 0)
+      {
+        children[at[parent[j]]++] = j;
+      }
+    }
+  }
+  // Move the heaviest subtree's root into the remainder while that subtree
+  // alone is more than one thread's share of the rest. The last row (a
+  // root) always starts the remainder, so no thread's list spans all rows
+  // (CHOLMOD restarts the whole factor for a range 0 .. n).
+  std::vector<char> inRemainder(n, 0);
+  auto byWork = [&](int a, int b) { return work[a] < work[b]; };
+  std::vector<int> frontier; // a max-heap by subtree work
+  double frontierWork = 0.0, remainderWork = 0.0;
+  auto expand = [&](int j)
+  {
+    inRemainder[j] = 1;
+    const double childWork = [&]
+    {
+      double w = 0.0;
+      for (int c = childStart[j]; c < childStart[j + 1]; ++c)
+      {
+        w += work[children[c]];
+        frontier.push_back(children[c]);
+        std::push_heap(frontier.begin(), frontier.end(), byWork);
+      }
+      return w;
+    }();
+    remainderWork += work[j] - childWork;
+    frontierWork += childWork;
+  };
+  for (int j = 0; j < n - 1; ++j)
+  {
+    if (parent[j] < 0)
+    {
+      frontier.push_back(j);
+      std::push_heap(frontier.begin(), frontier.end(), byWork);
+      frontierWork += work[j];
+    }
+  }
+  expand(n - 1);
+  while (!frontier.empty() && work[frontier.front()] * threads > frontierWork)
+  {
+    const int j = frontier.front();
+    std::pop_heap(frontier.begin(), frontier.end(), byWork);
+    frontier.pop_back();
+    frontierWork -= work[j];
+    expand(j);
+  }
+  // Largest subtrees first, each to the least loaded thread.
+  std::sort(frontier.begin(), frontier.end(), [&](int a, int b) { return work[a] > work[b]; });
+  std::vector<double> load(threads, 0.0);
+  std::vector<std::vector<int>> assigned(threads);
+  for (int j : frontier)
+  {
+    const int t = static_cast<int>(std::min_element(load.begin(), load.end()) - load.begin());
+    load[t] += work[j];
+    assigned[t].push_back(j);
+  }
+  const double longest = *std::max_element(load.begin(), load.end());
+  if (inRemainder[0] || remainderWork + longest > 0.9 * total)
+  {
+    return split; // too little runs at once to pay for the threads
+  }
+  split.next.assign(n, n);
+  auto link = [&](const std::vector<int>& rows)
+  {
+    for (std::size_t k = 0; k + 1 < rows.size(); ++k)
+    {
+      split.next[rows[k]] = rows[k + 1];
+    }
+    split.next[rows.back()] = rows.back() + 1;
+    split.lists.push_back({ rows.front(), rows.back() + 1 });
+  };
+  std::vector<int> rows;
+  for (int t = 0; t < threads; ++t)
+  {
+    if (assigned[t].empty())
+    {
+      continue;
+    }
+    std::sort(assigned[t].begin(), assigned[t].end());
+    rows.clear();
+    for (int j : assigned[t])
+    {
+      for (int k = j - size[j] + 1; k <= j; ++k)
+      {
+        rows.push_back(k);
+      }
+    }
+    link(rows);
+  }
+  rows.clear();
+  for (int k = 0; k < n; ++k)
+  {
+    if (inRemainder[k])
+    {
+      rows.push_back(k);
+    }
+  }
+  link(rows);
+  split.lists.back()[1] = n;
+  return split;
+}
+
+void quietCholmod(cholmod_common& common)
+{
+  // Failures are handled (and logged) by the solver; CHOLMOD must not print them.
+  common.print = 0;
+  common.error_handler = nullptr;
+}
 } // namespace
 
 struct LinearSolver::Internals
 {
-  Eigen::CholmodDecomposition<Eigen::SparseMatrix<double>, Eigen::Upper> Cholesky;
+  cholmod_common Common;
+  cholmod_factor* Factor = nullptr;
+  // Workspaces of the further threads of a split factorisation.
+  std::vector<std::unique_ptr<cholmod_common>> ThreadCommons;
+  RowSplit Split;
+  // How many threads the last factorisation ran on.
+  int FactorisationThreads = 1;
   std::vector<int> Blocks;
   std::vector<std::unique_ptr<LinearSolver>> BlockSolvers;
   bool Analysed = false;
+
+  Internals() { cholmod_start(&this->Common); }
+  ~Internals()
+  {
+    cholmod_free_factor(&this->Factor, &this->Common);
+    cholmod_finish(&this->Common);
+    for (auto& common : this->ThreadCommons)
+    {
+      cholmod_finish(common.get());
+    }
+  }
+
+  void analyse(const Eigen::SparseMatrix<double>& H)
+  {
+    cholmod_free_factor(&this->Factor, &this->Common);
+    cholmod_sparse A = Eigen::viewAsCholmod(H.selfadjointView<Eigen::Upper>());
+    this->Factor = cholmod_analyze(&A, &this->Common);
+    if (!this->Factor)
+    {
+      throw std::bad_alloc();
+    }
+    this->Split.valid = false;
+  }
+
+  /// Numeric factorisation of H (the analysed pattern) on up to `threads`
+  /// threads; false if H is not numerically positive definite.
+  bool factorise(const Eigen::SparseMatrix<double>& H, int threads)
+  {
+    cholmod_sparse A = Eigen::viewAsCholmod(H.selfadjointView<Eigen::Upper>());
+    cholmod_factor* L = this->Factor;
+    this->FactorisationThreads = 1;
+    const bool splitKnown = this->Split.valid && this->Split.threads == threads;
+    if (L->is_super || threads < 2 || (splitKnown && this->Split.lists.empty()))
+    {
+      return cholmod_factorize(&A, L, &this->Common) && L->minor == L->n;
+    }
+    // The matrix cholmod_factorize factorises for an upper triangle:
+    // S = triu(A(p, p)), by two transposes.
+    cholmod_sparse* lower =
+      cholmod_ptranspose(&A, 2, static_cast<int*>(L->Perm), nullptr, 0, &this->Common);
+    cholmod_sparse* S =
+      lower ? cholmod_ptranspose(lower, 2, nullptr, nullptr, 0, &this->Common) : nullptr;
+    cholmod_free_sparse(&lower, &this->Common);
+    if (!S)
+    {
+      throw std::bad_alloc();
+    }
+    const int n = static_cast<int>(L->n);
+    if (!splitKnown)
+    {
+      std::vector<int> parent(n);
+      cholmod_etree(S, parent.data(), &this->Common);
+      this->Split = splitRows(*S, parent, threads);
+    }
+    RowSplit& split = this->Split;
+    const int parallelLists = static_cast<int>(split.lists.size()) - 1;
+    bool ok = true;
+    if (parallelLists < 1)
+    {
+      ok = cholmod_factorize(&A, L, &this->Common);
+    }
+    else
+    {
+      // What cholmod_rowfac does before a whole factorisation: a symbolic
+      // factor becomes the identity, a numeric one is emptied.
+      L->is_ll = this->Common.final_ll;
+      if (L->xtype == CHOLMOD_PATTERN)
+      {
+        const double grow2 = this->Common.grow2;
+        if (this->Common.final_pack)
+        {
+          this->Common.grow2 = 0; // exactly the space the analysis counted
+        }
+        ok = cholmod_change_factor(CHOLMOD_REAL, L->is_ll, false, false, true, L, &this->Common);
+        this->Common.grow2 = grow2;
+        if (!ok)
+        {
+          cholmod_free_sparse(&S, &this->Common);
+          throw std::bad_alloc();
+        }
+      }
+      else
+      {
+        L->minor = L->n;
+        std::fill(static_cast<int*>(L->nz), static_cast<int*>(L->nz) + n, 1);
+      }
+      while (static_cast<int>(this->ThreadCommons.size()) < parallelLists - 1)
+      {
+        auto common = std::make_unique<cholmod_common>();
+        cholmod_start(common.get());
+        quietCholmod(*common);
+        this->ThreadCommons.push_back(std::move(common));
+      }
+      // Each thread has workspaces of its own and writes only its subtrees'
+      // columns of L. One shared word: a row that finds H not positive
+      // definite sets L->minor, which rows of other threads may read; the
+      // factorisation then fails whatever they read, as the serial one does.
+      this->FactorisationThreads = std::min(threads, parallelLists);
+      double beta[2] = { 0.0, 0.0 };
+      std::vector<char> listOk(parallelLists, 1);
+#pragma omp parallel for schedule(static, 1) num_threads(this->FactorisationThreads)
+      for (int t = 0; t < parallelLists; ++t)
+      {
+        cholmod_common* common = t == 0 ? &this->Common : this->ThreadCommons[t - 1].get();
+        listOk[t] = cholmod_rowfac_mask2(S,
+          nullptr,
+          beta,
+          split.lists[t][0],
+          split.lists[t][1],
+          nullptr,
+          0,
+          split.next.data(),
+          L,
+          common);
+      }
+      ok = ok && std::all_of(listOk.begin(), listOk.end(), [](char c) { return c != 0; }) &&
+        cholmod_rowfac_mask2(S,
+          nullptr,
+          beta,
+          split.lists.back()[0],
+          split.lists.back()[1],
+          nullptr,
+          0,
+          split.next.data(),
+          L,
+          &this->Common);
+      // cholmod_factorize's final form.
+      ok = ok &&
+        (this->Common.final_asis ||
+          cholmod_change_factor(L->xtype,
+            L->is_ll,
+            false,
+            this->Common.final_pack,
+            this->Common.final_monotonic,
+            L,
+            &this->Common));
+    }
+    cholmod_free_sparse(&S, &this->Common);
+    return ok && L->minor == L->n;
+  }
+
+  bool solveWith(const Eigen::VectorXd& b, Eigen::VectorXd& x)
+  {
+    Eigen::VectorXd rhs = b;
+    cholmod_dense B = Eigen::viewAsCholmod(rhs);
+    cholmod_dense* X = cholmod_solve(CHOLMOD_A, this->Factor, &B, &this->Common);
+    if (!X)
+    {
+      return false;
+    }
+    x = Eigen::Map<const Eigen::VectorXd>(static_cast<const double*>(X->x), rhs.size());
+    cholmod_free_dense(&X, &this->Common);
+    return x.allFinite();
+  }
 };
 
 LinearSolver::LinearSolver(Ordering ordering)
   : Impl(new Internals)
 {
-  cholmod_common& common = this->Impl->Cholesky.cholmod();
+  cholmod_common& common = this->Impl->Common;
   // LL^T (a failed factorisation means "not positive definite"), supernodal
   // when the factor is dense enough for BLAS to pay off, simplicial
   // otherwise. Measured here: the two-embedding Newton system (AMD, ~300
@@ -105,10 +476,8 @@ LinearSolver::LinearSolver(Ordering ordering)
   common.supernodal_switch = 200;
   common.nmethods = 1;
   common.method[0].ordering = ordering == Ordering::Amd ? CHOLMOD_AMD : CHOLMOD_METIS;
-  common.postorder = 1;
-  // Failures are handled (and logged) here; CHOLMOD must not print them.
-  this->Impl->Cholesky.cholmod().print = 0;
-  this->Impl->Cholesky.cholmod().error_handler = nullptr;
+  common.postorder = 1; // also what the split factorisation relies on
+  quietCholmod(common);
 }
 
 LinearSolver::~LinearSolver() = default;
@@ -124,8 +493,10 @@ LinearSolveResult LinearSolver::solve(const Eigen::SparseMatrix<double>& H,
     return this->solveByBlocks(H, b, x, patternChanged, log);
   }
   LinearSolveResult result;
+  // Taken before the BLAS guard, which may set the OpenMP thread count to 1.
+  const int threads = omp_get_max_threads();
   const SingleThreadedBlas blasThreads;
-  auto& cholesky = this->Impl->Cholesky;
+  Internals& cholesky = *this->Impl;
   if (patternChanged || !this->Impl->Analysed)
   {
     {
@@ -135,16 +506,15 @@ LinearSolveResult LinearSolver::solve(const Eigen::SparseMatrix<double>& H,
       // orderings, hence rounding, that change from run to run.
       static std::mutex orderingMutex;
       std::lock_guard<std::mutex> lock(orderingMutex);
-      cholesky.analyzePattern(H);
+      cholesky.analyse(H);
     }
     this->Impl->Analysed = true;
     result.analysed = true;
   }
-  cholesky.factorize(H);
-  if (cholesky.info() == Eigen::Success)
+  if (cholesky.factorise(H, threads))
   {
-    x = cholesky.solve(b);
-    result.success = cholesky.info() == Eigen::Success && x.allFinite();
+    result.factorisationThreads = cholesky.FactorisationThreads;
+    result.success = cholesky.solveWith(b, x);
     if (result.success)
     {
       return result;
@@ -176,14 +546,9 @@ LinearSolveResult LinearSolver::solve(const Eigen::SparseMatrix<double>& H,
       double& h = shifted.coeffRef(i, i);
       h += shift * std::max(std::abs(h), floor);
     }
-    cholesky.factorize(shifted);
-    if (cholesky.info() != Eigen::Success)
+    if (cholesky.factorise(shifted, threads) && cholesky.solveWith(b, x))
     {
-      continue;
-    }
-    x = cholesky.solve(b);
-    if (cholesky.info() == Eigen::Success && x.allFinite())
-    {
+      result.factorisationThreads = cholesky.FactorisationThreads;
       std::ostringstream message;
       message << "Cholesky factorisation failed; solved with the diagonal scaled by 1 + " << shift;
       log(Logger::Detail, message.str());
@@ -208,8 +573,7 @@ void LinearSolver::setBlocks(std::vector<int> offsets)
 bool LinearSolver::solveAgain(const Eigen::VectorXd& b, Eigen::VectorXd& x) const
 {
   const SingleThreadedBlas blasThreads;
-  x = this->Impl->Cholesky.solve(b);
-  return this->Impl->Cholesky.info() == Eigen::Success && x.allFinite();
+  return this->Impl->solveWith(b, x);
 }
 
 LinearSolveResult LinearSolver::solveByBlocks(const Eigen::SparseMatrix<double>& H,

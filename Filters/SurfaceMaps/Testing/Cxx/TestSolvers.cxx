@@ -6,7 +6,9 @@
 #include <omp.h>
 
 #include <cmath>
+#include <cstring>
 #include <stdexcept>
+#include <utility>
 #include <vector>
 
 using namespace surfacemaps;
@@ -177,6 +179,91 @@ TEST(LinearSolver, KeepsTheCallersOpenMPThreadCount)
     ASSERT_TRUE(solver.solve(H, Eigen::VectorXd::Ones(300), x, true).success);
     EXPECT_EQ(omp_get_max_threads(), threads);
   }
+  omp_set_num_threads(before);
+}
+
+namespace
+{
+// Upper triangle of a grid Laplacian with two coupled variables per node (the
+// Newton systems' 2x2 block structure), made positive definite, with values
+// that vary from entry to entry.
+Eigen::SparseMatrix<double> gridSystem(int side)
+{
+  const int nodes = side * side;
+  std::vector<Eigen::Triplet<double>> t;
+  auto var = [&](int x, int y, int c) { return 2 * (x + side * y) + c; };
+  for (int y = 0; y < side; ++y)
+  {
+    for (int x = 0; x < side; ++x)
+    {
+      const double w = 1.0 + 0.5 * std::sin(0.37 * x + 0.11 * y * y);
+      for (int c = 0; c < 2; ++c)
+      {
+        t.emplace_back(var(x, y, c), var(x, y, c), 8.5 * w + c);
+      }
+      t.emplace_back(var(x, y, 0), var(x, y, 1), 0.3 * w);
+      for (const auto& [dx, dy] : { std::pair{ 1, 0 }, std::pair{ 0, 1 }, std::pair{ 1, 1 } })
+      {
+        if (x + dx < side && y + dy < side)
+        {
+          for (int a = 0; a < 2; ++a)
+          {
+            for (int b = 0; b < 2; ++b)
+            {
+              const int i = var(x, y, a), j = var(x + dx, y + dy, b);
+              t.emplace_back(std::min(i, j), std::max(i, j), a == b ? -w : 0.1 * w);
+            }
+          }
+        }
+      }
+    }
+  }
+  Eigen::SparseMatrix<double> H(2 * nodes, 2 * nodes);
+  H.setFromTriplets(t.begin(), t.end());
+  return H;
+}
+} // namespace
+
+// A factorisation split over threads along the elimination tree gives the
+// serial factor bit for bit: the same solution, to the last bit, for one
+// thread and for two (the map's results must not depend on the thread count).
+TEST(LinearSolver, SplitFactorisationIsTheSerialOneBitForBit)
+{
+  const int before = omp_get_max_threads();
+  const Eigen::SparseMatrix<double> H = gridSystem(90);
+  const Eigen::VectorXd b = Eigen::VectorXd::LinSpaced(H.rows(), -1.0, 2.0).array().sin();
+  Eigen::VectorXd serial, split;
+  omp_set_num_threads(1);
+  LinearSolver one;
+  const LinearSolveResult r1 = one.solve(H, b, serial, true);
+  ASSERT_TRUE(r1.success);
+  EXPECT_EQ(r1.factorisationThreads, 1);
+  omp_set_num_threads(2);
+  LinearSolver two;
+  for (int round = 0; round < 2; ++round) // the analysed factor, then a refactorisation
+  {
+    const LinearSolveResult r2 = two.solve(H, b, split, round == 0);
+    ASSERT_TRUE(r2.success);
+    EXPECT_EQ(r2.factorisationThreads, 2);
+    ASSERT_EQ(split.size(), serial.size());
+    EXPECT_EQ(0, std::memcmp(split.data(), serial.data(), sizeof(double) * split.size()));
+  }
+  const Eigen::VectorXd residual = H.selfadjointView<Eigen::Upper>() * split - b;
+  EXPECT_LT(residual.norm(), 1e-10 * b.norm());
+
+  // A matrix that is not positive definite fails as in the serial solve and
+  // is regularised the same way.
+  Eigen::SparseMatrix<double> indefinite = H;
+  indefinite.coeffRef(7, 7) = -50.0;
+  indefinite.coeffRef(H.rows() - 3, H.rows() - 3) = -50.0;
+  omp_set_num_threads(1);
+  const LinearSolveResult s1 = one.solve(indefinite, b, serial, false);
+  omp_set_num_threads(2);
+  const LinearSolveResult s2 = two.solve(indefinite, b, split, false);
+  ASSERT_TRUE(s1.success && s2.success);
+  EXPECT_GT(s1.shift, 0.0);
+  EXPECT_EQ(s1.shift, s2.shift);
+  EXPECT_EQ(0, std::memcmp(split.data(), serial.data(), sizeof(double) * split.size()));
   omp_set_num_threads(before);
 }
 
