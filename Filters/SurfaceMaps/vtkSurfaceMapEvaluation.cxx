@@ -25,6 +25,7 @@
 #include "vtkStaticCellLocator.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
@@ -56,16 +57,84 @@ void addCellArray(vtkPolyData* output, const char* name, const std::vector<doubl
   output->GetCellData()->AddArray(array);
 }
 
-// The largest closest-point distance from a set of points to a surface, on
-// all threads. Each thread queries a locator of its own, built on a shallow
-// copy of the surface: VTK 9.1 does not document vtkStaticCellLocator's
-// queries as thread-safe, and a locator costs about as much as a few thousand
-// of the queries. The maximum does not depend on how the points are split.
+// Points of a triangle mesh at which its distance to another surface is
+// measured, each once: the vertices that no triangle uses, the triangles'
+// vertices, the edges' midpoints and the triangles' centroids, in that order.
+// The points [0, vertices) are all vertices (the Hausdorff distance), the
+// points [sampledFrom, end) the samples inside the triangles (the two-sided
+// distance).
+struct DistanceSamples
+{
+  std::vector<Eigen::Vector3d> points;
+  std::size_t vertices = 0;
+  std::size_t sampledFrom = 0;
+};
+
+DistanceSamples distanceSamples(vtkPolyData* surface)
+{
+  const surfacemaps::PolygonMesh mesh = vtkSurfaceMapsConversion::ToPolygonMesh(surface);
+  const int nv = static_cast<int>(mesh.points.size());
+  std::vector<char> used(nv, 0);
+  std::vector<std::array<int, 2>> edges;
+  for (std::size_t f = 0; f < mesh.numberOfFaces(); ++f)
+  {
+    if (mesh.faceSize(f) != 3)
+    {
+      continue;
+    }
+    const int* t = mesh.face(f);
+    for (int k = 0; k < 3; ++k)
+    {
+      used[t[k]] = 1;
+      edges.push_back({ std::min(t[k], t[(k + 1) % 3]), std::max(t[k], t[(k + 1) % 3]) });
+    }
+  }
+  std::sort(edges.begin(), edges.end());
+  edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
+  DistanceSamples samples;
+  samples.points.reserve(nv + edges.size() + mesh.numberOfFaces());
+  for (int pass = 0; pass < 2; ++pass)
+  {
+    for (int v = 0; v < nv; ++v)
+    {
+      if (used[v] == pass)
+      {
+        samples.points.push_back(mesh.points[v]);
+      }
+    }
+    if (pass == 0)
+    {
+      samples.sampledFrom = samples.points.size();
+    }
+  }
+  samples.vertices = samples.points.size();
+  for (const auto& e : edges)
+  {
+    samples.points.push_back(0.5 * mesh.points[e[0]] + 0.5 * mesh.points[e[1]]);
+  }
+  for (std::size_t f = 0; f < mesh.numberOfFaces(); ++f)
+  {
+    if (mesh.faceSize(f) == 3)
+    {
+      const int* t = mesh.face(f);
+      samples.points.push_back((1 / 3.0) * mesh.points[t[0]] + (1 / 3.0) * mesh.points[t[1]] +
+        (1 / 3.0) * mesh.points[t[2]]);
+    }
+  }
+  return samples;
+}
+
+// The largest closest-point distances from samples to a surface (over the
+// vertices and over the samples inside the triangles), on all threads. Each
+// thread queries a locator of its own, built on a shallow copy of the
+// surface: VTK 9.1 does not document vtkStaticCellLocator's queries as
+// thread-safe, and a locator costs about as much as a few thousand of the
+// queries. The maxima do not depend on how the points are split.
 class LargestDistance
 {
 public:
-  LargestDistance(const std::vector<Eigen::Vector3d>& points, vtkPolyData* surface)
-    : Points(points)
+  LargestDistance(const DistanceSamples& samples, vtkPolyData* surface)
+    : Samples(samples)
     , Surface(surface)
   {
   }
@@ -79,7 +148,6 @@ public:
     query.Surface->ShallowCopy(this->Surface);
     query.Locator->SetDataSet(query.Surface);
     query.Locator->BuildLocator();
-    query.Largest = 0.0;
   }
 
   void operator()(vtkIdType begin, vtkIdType end)
@@ -91,8 +159,16 @@ public:
       vtkIdType cellId;
       int subId;
       query.Locator->FindClosestPoint(
-        this->Points[i].data(), closest, query.Cell, cellId, subId, distance2);
-      query.Largest = std::max(query.Largest, distance2);
+        this->Samples.points[i].data(), closest, query.Cell, cellId, subId, distance2);
+      const std::size_t k = static_cast<std::size_t>(i);
+      if (k < this->Samples.vertices)
+      {
+        query.LargestVertex = std::max(query.LargestVertex, distance2);
+      }
+      if (k >= this->Samples.sampledFrom)
+      {
+        query.LargestSampled = std::max(query.LargestSampled, distance2);
+      }
     }
   }
 
@@ -100,11 +176,14 @@ public:
   {
     for (const Query& query : this->Queries)
     {
-      this->Result = std::max(this->Result, std::sqrt(query.Largest));
+      this->Vertex = std::max(this->Vertex, std::sqrt(query.LargestVertex));
+      this->Sampled = std::max(this->Sampled, std::sqrt(query.LargestSampled));
     }
   }
 
-  double Result = 0.0;
+  /// Over the vertices; over the samples inside the triangles.
+  double Vertex = 0.0;
+  double Sampled = 0.0;
 
 private:
   struct Query
@@ -112,62 +191,25 @@ private:
     vtkSmartPointer<vtkPolyData> Surface;
     vtkSmartPointer<vtkStaticCellLocator> Locator;
     vtkSmartPointer<vtkGenericCell> Cell;
-    double Largest = 0.0;
+    double LargestVertex = 0.0;
+    double LargestSampled = 0.0;
   };
-  const std::vector<Eigen::Vector3d>& Points;
+  const DistanceSamples& Samples;
   vtkPolyData* Surface;
   vtkSMPThreadLocal<Query> Queries;
 };
 
-double largestDistance(const std::vector<Eigen::Vector3d>& points, vtkPolyData* surface)
+// The largest distances from `from`'s vertices and from its samples inside
+// triangles to the surface `to`: {over the vertices, over the samples}.
+std::array<double, 2> largestDistances(vtkPolyData* from, vtkPolyData* to)
 {
+  const DistanceSamples samples = distanceSamples(from);
   // The shallow copies share the surface's cells: build them once, before
   // the threads read them.
-  surface->BuildCells();
-  LargestDistance largest(points, surface);
-  vtkSMPTools::For(0, static_cast<vtkIdType>(points.size()), 1024, largest);
-  return largest.Result;
-}
-
-// Largest distance from a vertex of `original` to the surface `approximation`.
-double largestVertexDistance(vtkPolyData* original, vtkPolyData* approximation)
-{
-  std::vector<Eigen::Vector3d> points(original->GetNumberOfPoints());
-  for (vtkIdType i = 0; i < original->GetNumberOfPoints(); ++i)
-  {
-    original->GetPoint(i, points[i].data());
-  }
-  return largestDistance(points, approximation);
-}
-
-// Largest distance from points sampled inside the triangles of `from` (their
-// vertices, edge midpoints and centroids) to the surface `to`.
-double largestSampledDistance(vtkPolyData* from, vtkPolyData* to)
-{
-  const surfacemaps::PolygonMesh mesh = vtkSurfaceMapsConversion::ToPolygonMesh(from);
-  const double weights[7][3] = { { 1, 0, 0 },
-    { 0, 1, 0 },
-    { 0, 0, 1 },
-    { 0.5, 0.5, 0 },
-    { 0, 0.5, 0.5 },
-    { 0.5, 0, 0.5 },
-    { 1 / 3.0, 1 / 3.0, 1 / 3.0 } };
-  std::vector<Eigen::Vector3d> points;
-  points.reserve(7 * mesh.numberOfFaces());
-  for (std::size_t f = 0; f < mesh.numberOfFaces(); ++f)
-  {
-    if (mesh.faceSize(f) != 3)
-    {
-      continue;
-    }
-    const int* t = mesh.face(f);
-    for (const auto& w : weights)
-    {
-      points.push_back(
-        w[0] * mesh.points[t[0]] + w[1] * mesh.points[t[1]] + w[2] * mesh.points[t[2]]);
-    }
-  }
-  return largestDistance(points, to);
+  to->BuildCells();
+  LargestDistance largest(samples, to);
+  vtkSMPTools::For(0, static_cast<vtkIdType>(samples.points.size()), 1024, largest);
+  return { largest.Vertex, largest.Sampled };
 }
 
 double percentOfDiagonal(double distance, vtkPolyData* reference)
@@ -318,11 +360,10 @@ void addApproximationErrors(vtkPolyData* output,
     {
       continue;
     }
-    addField(output,
-      sides[k][0],
-      percentOfDiagonal(largestVertexDistance(originals[k], approximations[k]), originals[k]));
-    const double twoSided = std::max(largestSampledDistance(originals[k], approximations[k]),
-      largestSampledDistance(approximations[k], originals[k]));
+    const std::array<double, 2> there = largestDistances(originals[k], approximations[k]);
+    addField(output, sides[k][0], percentOfDiagonal(there[0], originals[k]));
+    const double twoSided =
+      std::max(there[1], largestDistances(approximations[k], originals[k])[1]);
     addField(output, sides[k][1], percentOfDiagonal(twoSided, originals[k]));
   }
 }
