@@ -24,7 +24,7 @@ double sphericalDegree(const std::vector<Eigen::Vector3d>& points,
   // order varies with the threads, far below what rounding the degree needs.
   const long long n = static_cast<long long>(triangles.size());
   double sum = 0.0;
-#pragma omp parallel for reduction(+ : sum) schedule(static) if (n > 20000)
+#pragma omp parallel for reduction(+ : sum) schedule(static) if (n > 2000)
   for (long long f = 0; f < n; ++f)
   {
     const auto& t = triangles[f];

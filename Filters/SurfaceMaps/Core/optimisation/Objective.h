@@ -140,7 +140,7 @@ private:
     double* hessians) const
   {
     using T = Dual<N, WithHessian>;
-#pragma omp parallel for schedule(static) if (ne > ParallelDerivativeThreshold)
+#pragma omp parallel for schedule(dynamic, 64) if (ne > ParallelDerivativeThreshold)
     for (int e = 0; e < ne; ++e)
     {
       const T energy = this->Functor(e, this->template seededPoints<T>(points, e));
