@@ -303,7 +303,6 @@ struct LinearSolver::Internals
   int FactorisationThreads = 1;
   std::vector<int> Blocks;
   std::vector<std::unique_ptr<LinearSolver>> BlockSolvers;
-  bool Analysed = false;
 
   Internals() { cholmod_start(&this->Common); }
   ~Internals()
@@ -359,37 +358,41 @@ struct LinearSolver::Internals
       this->Split = splitRows(*S, parent, threads);
     }
     RowSplit& split = this->Split;
-    const int parallelLists = static_cast<int>(split.lists.size()) - 1;
-    bool ok = true;
-    if (parallelLists < 1)
+    const int parallelLists = std::max(0, static_cast<int>(split.lists.size()) - 1);
+    // What cholmod_factorize does before its rows: LL^T as asked, a symbolic
+    // factor allocated (exactly the space the analysis counted) and made the
+    // identity, a numeric one emptied. Done here because the rows below may
+    // be factorised in several calls.
+    L->is_ll = this->Common.final_ll;
+    if (L->xtype == CHOLMOD_PATTERN)
     {
-      ok = cholmod_factorize(&A, L, &this->Common);
+      const double grow2 = this->Common.grow2;
+      if (this->Common.final_pack)
+      {
+        this->Common.grow2 = 0;
+      }
+      const bool allocated =
+        cholmod_change_factor(CHOLMOD_REAL, L->is_ll, false, false, true, L, &this->Common);
+      this->Common.grow2 = grow2;
+      if (!allocated)
+      {
+        cholmod_free_sparse(&S, &this->Common);
+        throw std::bad_alloc();
+      }
     }
     else
     {
-      // What cholmod_rowfac does before a whole factorisation: a symbolic
-      // factor becomes the identity, a numeric one is emptied.
-      L->is_ll = this->Common.final_ll;
-      if (L->xtype == CHOLMOD_PATTERN)
-      {
-        const double grow2 = this->Common.grow2;
-        if (this->Common.final_pack)
-        {
-          this->Common.grow2 = 0; // exactly the space the analysis counted
-        }
-        ok = cholmod_change_factor(CHOLMOD_REAL, L->is_ll, false, false, true, L, &this->Common);
-        this->Common.grow2 = grow2;
-        if (!ok)
-        {
-          cholmod_free_sparse(&S, &this->Common);
-          throw std::bad_alloc();
-        }
-      }
-      else
-      {
-        L->minor = L->n;
-        std::fill(static_cast<int*>(L->nz), static_cast<int*>(L->nz) + n, 1);
-      }
+      L->minor = L->n;
+      std::fill(static_cast<int*>(L->nz), static_cast<int*>(L->nz) + n, 1);
+    }
+    double beta[2] = { 0.0, 0.0 };
+    bool ok = true;
+    if (parallelLists == 0)
+    {
+      ok = cholmod_rowfac(S, nullptr, beta, 0, n, L, &this->Common);
+    }
+    else
+    {
       while (static_cast<int>(this->ThreadCommons.size()) < parallelLists - 1)
       {
         auto common = std::make_unique<cholmod_common>();
@@ -402,7 +405,6 @@ struct LinearSolver::Internals
       // definite sets L->minor, which rows of other threads may read; the
       // factorisation then fails whatever they read, as the serial one does.
       this->FactorisationThreads = std::min(threads, parallelLists);
-      double beta[2] = { 0.0, 0.0 };
       std::vector<char> listOk(parallelLists, 1);
 #pragma omp parallel for schedule(static, 1) num_threads(this->FactorisationThreads)
       for (int t = 0; t < parallelLists; ++t)
@@ -419,7 +421,7 @@ struct LinearSolver::Internals
           L,
           common);
       }
-      ok = ok && std::all_of(listOk.begin(), listOk.end(), [](char c) { return c != 0; }) &&
+      ok = std::all_of(listOk.begin(), listOk.end(), [](char c) { return c != 0; }) &&
         cholmod_rowfac_mask2(S,
           nullptr,
           beta,
@@ -430,17 +432,17 @@ struct LinearSolver::Internals
           split.next.data(),
           L,
           &this->Common);
-      // cholmod_factorize's final form.
-      ok = ok &&
-        (this->Common.final_asis ||
-          cholmod_change_factor(L->xtype,
-            L->is_ll,
-            false,
-            this->Common.final_pack,
-            this->Common.final_monotonic,
-            L,
-            &this->Common));
     }
+    // cholmod_factorize's final form.
+    ok = ok &&
+      (this->Common.final_asis ||
+        cholmod_change_factor(L->xtype,
+          L->is_ll,
+          false,
+          this->Common.final_pack,
+          this->Common.final_monotonic,
+          L,
+          &this->Common));
     cholmod_free_sparse(&S, &this->Common);
     return ok && L->minor == L->n;
   }
@@ -497,7 +499,7 @@ LinearSolveResult LinearSolver::solve(const Eigen::SparseMatrix<double>& H,
   const int threads = omp_get_max_threads();
   const SingleThreadedBlas blasThreads;
   Internals& cholesky = *this->Impl;
-  if (patternChanged || !this->Impl->Analysed)
+  if (patternChanged || !cholesky.Factor)
   {
     {
       // METIS (nested dissection orderings) keeps its random state in
@@ -508,7 +510,6 @@ LinearSolveResult LinearSolver::solve(const Eigen::SparseMatrix<double>& H,
       std::lock_guard<std::mutex> lock(orderingMutex);
       cholesky.analyse(H);
     }
-    this->Impl->Analysed = true;
     result.analysed = true;
   }
   if (cholesky.factorise(H, threads))
