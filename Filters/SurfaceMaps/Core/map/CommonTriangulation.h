@@ -151,12 +151,37 @@ public:
   /// corners' lift triangles a, b, c of input i (CoverageEnergy's density).
   double coverageDensity(int i, int a, int b, int c) const;
 
-  /// Energy of the per-triangle terms (barrier, mesh quality, map distortion)
-  /// of one triangle, weighted; +inf if invalid.
+  /// The weighted per-triangle terms of one triangle that do not depend on
+  /// its target length, and its lifted triangles' Gram entries (which the
+  /// mesh-quality term needs with the length). Remeshing computes them once
+  /// and asks two questions: triangleEnergyBound before it walks on the
+  /// spheres for the length, triangleEnergy after.
+  struct TriangleTerms
+  {
+    bool valid = true; ///< false: a barrier term is infinite
+    PerInput<double> barrier, coverage;
+    PerInput<std::array<double, 3>> lifted;
+    /// Per pair of the map distortion term.
+    PerInput<double> map;
+  };
+  TriangleTerms triangleTerms(const MapVertex& a, const MapVertex& b, const MapVertex& c) const;
+
+  /// Energy of the per-triangle terms (barrier, mesh quality, coverage, map
+  /// distortion) of one triangle, weighted; +inf if invalid.
+  double triangleEnergy(const TriangleTerms& terms, double length) const;
   double triangleEnergy(const MapVertex& a,
     const MapVertex& b,
     const MapVertex& c,
-    double length) const;
+    double length) const
+  {
+    return this->triangleEnergy(this->triangleTerms(a, b, c), length);
+  }
+  /// A lower bound of triangleEnergy(terms, length) over every length, with
+  /// the same terms summed in the same order (so it holds in floating point
+  /// as well): the mesh-quality term at its smallest value over lengths
+  /// (meshQualityBound). Every term is >= 0, so a sum of bounds that already
+  /// exceeds what an edit may cost rejects it without any target length.
+  double triangleEnergyBound(const TriangleTerms& terms) const;
   /// Weighted approximation energy of sample s of input i in a triangle.
   double sampleEnergy(int i,
     int s,
@@ -172,18 +197,17 @@ public:
   /// det > minDet on every sphere: what a new triangle must be.
   bool validTriangle(const MapVertex& a, const MapVertex& b, const MapVertex& c) const;
 
-  /// Energy of a local configuration: triangles over `vertices` with target
-  /// lengths, plus the samples of each input (which must lie in the union of
-  /// the triangles on that input's sphere). With `validate`, a triangle that
-  /// is not positively oriented (exact predicate) or has det <= minDet on any
-  /// sphere makes the configuration invalid (+inf). `assignment`, if given,
-  /// receives the local triangle of each sample; a sample in no triangle
-  /// makes the configuration invalid.
+  /// Energy of a local configuration: triangles over `vertices` whose
+  /// triangleEnergy values are `triangleEnergies`, plus the samples of each
+  /// input (which must lie in the union of the triangles on that input's
+  /// sphere). `assignment`, if given, receives the local triangle of each
+  /// sample; a sample in no triangle makes the configuration invalid (+inf).
+  /// `perTriangle`, if given, receives each triangle's energy with its
+  /// samples'.
   double localEnergy(const std::vector<MapVertex>& vertices,
     const std::vector<std::array<int, 3>>& triangles,
-    const std::vector<double>& lengths,
+    const std::vector<double>& triangleEnergies,
     const std::vector<std::vector<int>>& samples,
-    bool validate,
     LocalAssignment* assignment,
     std::vector<double>* perTriangle = nullptr) const;
 

@@ -34,13 +34,12 @@ double CommonTriangulation::coverageDensity(int i, int a, int b, int c) const
   return (d[a] + d[b] + d[c]) / 3.0;
 }
 
-double CommonTriangulation::triangleEnergy(const MapVertex& a,
+CommonTriangulation::TriangleTerms CommonTriangulation::triangleTerms(const MapVertex& a,
   const MapVertex& b,
-  const MapVertex& c,
-  double length) const
+  const MapVertex& c) const
 {
   const MapEnergyWeights& w = this->weights;
-  double energy = 0.0;
+  TriangleTerms terms;
   for (int i = 0; i < this->numberOfInputs(); ++i)
   {
     if (w.barrier > 0.0)
@@ -48,20 +47,21 @@ double CommonTriangulation::triangleEnergy(const MapVertex& a,
       const double barrier = exactOrientationBarrier(a.g[i], b.g[i], c.g[i]);
       if (!std::isfinite(barrier))
       {
-        return Infinity;
+        terms.valid = false;
+        return terms;
       }
-      energy += w.barrier * barrier;
+      terms.barrier.push_back(w.barrier * barrier);
     }
     if (w.mesh > 0.0)
     {
-      energy += w.mesh * meshQualityEnergy<double>(a.lifted[i], b.lifted[i], c.lifted[i], length);
+      terms.lifted.push_back(gramEntries(a.lifted[i], b.lifted[i], c.lifted[i]));
     }
     if (w.coverage > 0.0)
     {
-      energy += w.coverage *
+      terms.coverage.push_back(w.coverage *
         coverageEnergy<double>({ a.g[i], b.g[i], c.g[i] },
           { a.lifted[i], b.lifted[i], c.lifted[i] },
-          this->coverageDensity(i, a.liftTriangle[i], b.liftTriangle[i], c.liftTriangle[i]));
+          this->coverageDensity(i, a.liftTriangle[i], b.liftTriangle[i], c.liftTriangle[i])));
     }
   }
   if (w.map > 0.0)
@@ -69,12 +69,63 @@ double CommonTriangulation::triangleEnergy(const MapVertex& a,
     for (const auto& pair : this->Pairs)
     {
       const int i = pair[0], j = pair[1];
-      energy += w.map *
+      terms.map.push_back(w.map *
         mapDistortionEnergy<double>(
-          { a.lifted[i], b.lifted[i], c.lifted[i] }, { a.lifted[j], b.lifted[j], c.lifted[j] });
+          { a.lifted[i], b.lifted[i], c.lifted[i] }, { a.lifted[j], b.lifted[j], c.lifted[j] }));
     }
   }
+  return terms;
+}
+
+namespace
+{
+/// The sum of a triangle's terms in one fixed order (per input: barrier,
+/// mesh quality, coverage; then the pairs' distortion), the mesh-quality
+/// term of input i given by meshTerm(i).
+template<typename MeshTerm>
+double sumOfTerms(const CommonTriangulation::TriangleTerms& terms, int inputs, MeshTerm meshTerm)
+{
+  if (!terms.valid)
+  {
+    return Infinity;
+  }
+  double energy = 0.0;
+  for (int i = 0; i < inputs; ++i)
+  {
+    if (!terms.barrier.empty())
+    {
+      energy += terms.barrier[i];
+    }
+    if (!terms.lifted.empty())
+    {
+      energy += meshTerm(i);
+    }
+    if (!terms.coverage.empty())
+    {
+      energy += terms.coverage[i];
+    }
+  }
+  for (double map : terms.map)
+  {
+    energy += map;
+  }
   return std::isfinite(energy) ? energy : Infinity;
+}
+} // namespace
+
+double CommonTriangulation::triangleEnergy(const TriangleTerms& terms, double length) const
+{
+  const double w = this->weights.mesh;
+  return sumOfTerms(terms,
+    this->numberOfInputs(),
+    [&](int i) { return w * meshQualityOfGram<double>(terms.lifted[i], length); });
+}
+
+double CommonTriangulation::triangleEnergyBound(const TriangleTerms& terms) const
+{
+  const double w = this->weights.mesh;
+  return sumOfTerms(
+    terms, this->numberOfInputs(), [&](int i) { return w * meshQualityBound(terms.lifted[i]); });
 }
 
 double CommonTriangulation::sampleEnergy(int i,
@@ -134,33 +185,20 @@ bool CommonTriangulation::validTriangle(const MapVertex& a,
 
 double CommonTriangulation::localEnergy(const std::vector<MapVertex>& vertices,
   const std::vector<std::array<int, 3>>& triangles,
-  const std::vector<double>& lengths,
+  const std::vector<double>& triangleEnergies,
   const std::vector<std::vector<int>>& samples,
-  bool validate,
   LocalAssignment* assignment,
   std::vector<double>* perTriangle) const
 {
   const int n = this->numberOfInputs();
   double energy = 0.0;
+  for (double e : triangleEnergies)
+  {
+    energy += e;
+  }
   if (perTriangle)
   {
-    perTriangle->assign(triangles.size(), 0.0);
-  }
-  for (std::size_t t = 0; t < triangles.size(); ++t)
-  {
-    const MapVertex& a = vertices[triangles[t][0]];
-    const MapVertex& b = vertices[triangles[t][1]];
-    const MapVertex& c = vertices[triangles[t][2]];
-    if (validate && !this->validTriangle(a, b, c))
-    {
-      return Infinity;
-    }
-    const double e = this->triangleEnergy(a, b, c, lengths[t]);
-    energy += e;
-    if (perTriangle)
-    {
-      (*perTriangle)[t] += e;
-    }
+    *perTriangle = triangleEnergies;
   }
   if (assignment)
   {

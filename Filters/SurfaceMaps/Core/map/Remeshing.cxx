@@ -21,6 +21,8 @@ using FaceHandle = OpenMesh::FaceHandle;
 struct LocalEdit
 {
   std::vector<VertexHandle> handles;
+  /// The vertices before the edit; evaluate() turns them into the vertices
+  /// after it (the moved one moved, the split's new one appended).
   std::vector<MapVertex> vertices;
   std::vector<std::array<int, 3>> before;
   std::vector<double> beforeLengths;
@@ -39,6 +41,33 @@ struct LocalEdit
   double cachedBefore = 0.0;
   bool beforeCached = true;
   std::vector<double> afterEnergies;
+  /// evaluate()'s terms and energies of the triangles the edit creates
+  /// (without their samples).
+  std::vector<CommonTriangulation::TriangleTerms> afterTerms;
+  std::vector<double> afterTriangleEnergies;
+
+  /// Back to a new edit, keeping the vectors' storage: candidates are
+  /// evaluated by the hundred thousand, each on one scratch edit per thread
+  /// (a MapVertex is a few hundred bytes).
+  void clear()
+  {
+    this->handles.clear();
+    this->vertices.clear();
+    this->before.clear();
+    this->beforeLengths.clear();
+    this->faces.clear();
+    this->samples.clear();
+    this->moved = MapVertex();
+    this->movedIndex = -1;
+    this->after.clear();
+    this->afterLengths.clear();
+    this->assignment.clear();
+    this->cachedBefore = 0.0;
+    this->beforeCached = true;
+    this->afterEnergies.clear();
+    this->afterTerms.clear();
+    this->afterTriangleEnergies.clear();
+  }
 };
 
 int localIndex(const CommonTriangulation& T, LocalEdit& edit, VertexHandle v)
@@ -87,8 +116,24 @@ void gatherSamples(const CommonTriangulation& T, LocalEdit& edit)
   }
 }
 
-/// Energy before minus energy after; fills the edit's after lengths and
-/// sample assignment. With a finite minGain, an edit that cannot gain more
+/// The energies of triangles over `vertices` with the given target lengths.
+std::vector<double> triangleEnergies(const CommonTriangulation& T,
+  const std::vector<MapVertex>& vertices,
+  const std::vector<std::array<int, 3>>& triangles,
+  const std::vector<double>& lengths)
+{
+  std::vector<double> energies(triangles.size());
+  for (std::size_t t = 0; t < triangles.size(); ++t)
+  {
+    const auto& tri = triangles[t];
+    energies[t] =
+      T.triangleEnergy(vertices[tri[0]], vertices[tri[1]], vertices[tri[2]], lengths[t]);
+  }
+  return energies;
+}
+
+/// Energy before minus energy after; turns the edit's vertices into those
+/// after it and fills its after lengths, energies and sample assignment. With a finite minGain, an edit that cannot gain more
 /// than it (its new triangles alone already cost as much as the old
 /// configuration, and sample energies are >= 0) is answered with NoGain
 /// before its samples are located: cheaper, same edits applied.
@@ -102,8 +147,12 @@ double evaluate(const CommonTriangulation& T,
   }
   const double before = edit.beforeCached
     ? edit.cachedBefore
-    : T.localEnergy(edit.vertices, edit.before, edit.beforeLengths, edit.samples, false, nullptr);
-  std::vector<MapVertex> afterVertices = edit.vertices;
+    : T.localEnergy(edit.vertices,
+        edit.before,
+        triangleEnergies(T, edit.vertices, edit.before, edit.beforeLengths),
+        edit.samples,
+        nullptr);
+  std::vector<MapVertex>& afterVertices = edit.vertices;
   if (edit.movedIndex >= static_cast<int>(afterVertices.size()))
   {
     afterVertices.push_back(edit.moved);
@@ -120,25 +169,44 @@ double evaluate(const CommonTriangulation& T,
     }
   }
   // Every triangle's energy is >= 0 (the barrier's -log(det / 6) is, as
-  // det <= 1 on the unit sphere), so the running sum only grows: the edit is
-  // answered as soon as its first triangles cost what it may, before the
-  // target lengths (walks on every sphere) of the others.
+  // det <= 1 on the unit sphere), so the running sum only grows, and so does
+  // a running sum of lower bounds below it: the edit is answered as soon as
+  // its first triangles cost what it may, first with the mesh-quality terms
+  // at their smallest over all target lengths (no walk on any sphere), then
+  // with the target lengths.
   const bool bounded = std::isfinite(minGain) && std::isfinite(before);
+  std::vector<CommonTriangulation::TriangleTerms>& terms = edit.afterTerms;
+  terms.resize(edit.after.size());
+  double bound = 0.0;
+  for (std::size_t t = 0; t < edit.after.size(); ++t)
+  {
+    const auto& tri = edit.after[t];
+    terms[t] = T.triangleTerms(afterVertices[tri[0]], afterVertices[tri[1]], afterVertices[tri[2]]);
+    if (bounded)
+    {
+      bound += T.triangleEnergyBound(terms[t]);
+      if (!(before - bound > minGain))
+      {
+        return NoGain;
+      }
+    }
+  }
   edit.afterLengths.assign(edit.after.size(), 1.0);
+  std::vector<double>& energies = edit.afterTriangleEnergies;
+  energies.resize(edit.after.size());
   double triangles = 0.0;
   for (std::size_t t = 0; t < edit.after.size(); ++t)
   {
     const auto& tri = edit.after[t];
-    const MapVertex& a = afterVertices[tri[0]];
-    const MapVertex& b = afterVertices[tri[1]];
-    const MapVertex& c = afterVertices[tri[2]];
     if (T.weights.mesh > 0.0)
     {
-      edit.afterLengths[t] = T.targetLength(a, b, c);
+      edit.afterLengths[t] =
+        T.targetLength(afterVertices[tri[0]], afterVertices[tri[1]], afterVertices[tri[2]]);
     }
+    energies[t] = T.triangleEnergy(terms[t], edit.afterLengths[t]);
     if (bounded)
     {
-      triangles += T.triangleEnergy(a, b, c, edit.afterLengths[t]);
+      triangles += energies[t];
       if (!(before - triangles > minGain))
       {
         return NoGain;
@@ -146,13 +214,8 @@ double evaluate(const CommonTriangulation& T,
     }
   }
   gatherSamples(T, edit);
-  const double after = T.localEnergy(afterVertices,
-    edit.after,
-    edit.afterLengths,
-    edit.samples,
-    false, // validated above
-    &edit.assignment,
-    &edit.afterEnergies);
+  const double after = T.localEnergy(
+    afterVertices, edit.after, energies, edit.samples, &edit.assignment, &edit.afterEnergies);
   if (!std::isfinite(before) || !std::isfinite(after))
   {
     return NoGain;
@@ -340,7 +403,8 @@ double gainOf(const CommonTriangulation& T,
   Build build,
   double minGain = -std::numeric_limits<double>::infinity())
 {
-  LocalEdit edit;
+  thread_local LocalEdit edit;
+  edit.clear();
   if (!build(T, handle, edit))
   {
     return NoGain;

@@ -241,6 +241,70 @@ TEST(MapEnergies, TermsVanishOrAreMinimalWhereTheyShould)
   EXPECT_NEAR(approximationEnergy<double>(d2, 2.0, 0.2), 2.0 * 1e-3 / (8e-3 - 1e-3), 1e-12);
 }
 
+// Remeshing rejects edits on meshQualityBound before it looks up any target
+// length, so the bound must stay below the energy at every length (or edits
+// would be lost) and should be its minimum (or it would reject less).
+TEST(MapEnergies, MeshQualityBoundIsTheSmallestValueOverLengths)
+{
+  std::mt19937 random(7);
+  std::uniform_real_distribution<double> uniform(-1.0, 1.0);
+  for (int k = 0; k < 200; ++k)
+  {
+    const Eigen::Vector3d a(uniform(random), uniform(random), uniform(random));
+    const Eigen::Vector3d b(uniform(random), uniform(random), uniform(random));
+    // Every tenth triangle a sliver.
+    const Eigen::Vector3d c = k % 10 == 0
+      ? Eigen::Vector3d(0.5 * (a + b) + 1e-6 * Eigen::Vector3d(uniform(random), 1.0, 0.0))
+      : Eigen::Vector3d(uniform(random), uniform(random), uniform(random));
+    const std::array<double, 3> gram = gramEntries(a, b, c);
+    const double bound = meshQualityBound(gram);
+    double smallest = std::numeric_limits<double>::infinity();
+    for (double length = 1e-4; length < 1e4; length *= 1.001)
+    {
+      const double e = meshQualityOfGram(gram, length);
+      ASSERT_LE(bound, e) << "triangle " << k << ", length " << length;
+      smallest = std::min(smallest, e);
+    }
+    EXPECT_LE(smallest, bound * (1.0 + 1e-5)) << "triangle " << k;
+    EXPECT_EQ(meshQualityOfGram(gram, 0.3), meshQualityEnergy<double>(a, b, c, 0.3));
+  }
+}
+
+TEST(MapEnergies, TriangleEnergyBoundIsBelowTheEnergyAtEveryLength)
+{
+  MapEnergyWeights w;
+  w.barrier = 0.01;
+  w.mesh = 0.5;
+  w.coverage = 0.1;
+  w.map = 1.0;
+  EnergyCase c(w);
+  const CommonTriangulation& T = *c.T;
+  int faces = 0;
+  for (auto f : T.mesh().faces())
+  {
+    auto fv = T.mesh().cfv_iter(f);
+    const MapVertex a = T.vertex(*fv), b = T.vertex(*++fv), cc = T.vertex(*++fv);
+    const CommonTriangulation::TriangleTerms terms = T.triangleTerms(a, b, cc);
+    const double bound = T.triangleEnergyBound(terms);
+    ASSERT_TRUE(std::isfinite(bound));
+    // The same value, bit for bit, as from the vertices.
+    const double length = T.targetLength(f);
+    EXPECT_EQ(T.triangleEnergy(terms, length), T.triangleEnergy(a, b, cc, length));
+    double smallest = std::numeric_limits<double>::infinity();
+    for (double l = 1e-3; l < 1e2; l *= 1.01)
+    {
+      const double e = T.triangleEnergy(terms, l);
+      ASSERT_LE(bound, e) << "face " << f.idx() << ", length " << l;
+      smallest = std::min(smallest, e);
+    }
+    // Each input's mesh term is bounded at its own best length, the energy
+    // has one length for both: close to, not at, the smallest energy.
+    EXPECT_LE(smallest - bound, 1e-2 * smallest) << "face " << f.idx();
+    ++faces;
+  }
+  EXPECT_GT(faces, 0);
+}
+
 TEST(MapEnergies, LiftIsTheBarycentricInverseOfTheEmbedding)
 {
   const Eigen::Vector3d A(0, 0, 0), B(2, 0, 0), C(0, 1, 1);
