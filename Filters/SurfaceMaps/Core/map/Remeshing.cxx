@@ -133,10 +133,11 @@ std::vector<double> triangleEnergies(const CommonTriangulation& T,
 }
 
 /// Energy before minus energy after; turns the edit's vertices into those
-/// after it and fills its after lengths, energies and sample assignment. With a finite minGain, an edit that cannot gain more
-/// than it (its new triangles alone already cost as much as the old
-/// configuration, and sample energies are >= 0) is answered with NoGain
-/// before its samples are located: cheaper, same edits applied.
+/// after it and fills its after lengths, energies and sample assignment.
+/// With a finite minGain, an edit that cannot gain more than it (its new
+/// triangles alone already cost as much as the old configuration, and
+/// sample energies are >= 0) is answered with NoGain before its samples are
+/// located: cheaper, same edits applied.
 double evaluate(const CommonTriangulation& T,
   LocalEdit& edit,
   double minGain = -std::numeric_limits<double>::infinity())
