@@ -301,6 +301,8 @@ struct LinearSolver::Internals
   RowSplit Split;
   // How many threads the last factorisation ran on.
   int FactorisationThreads = 1;
+  // analyse() was called for the next solve's pattern.
+  bool AnalysedAhead = false;
   std::vector<int> Blocks;
   std::vector<std::unique_ptr<LinearSolver>> BlockSolvers;
 
@@ -325,6 +327,17 @@ struct LinearSolver::Internals
       throw std::bad_alloc();
     }
     this->Split.valid = false;
+  }
+
+  void analyseLocked(const Eigen::SparseMatrix<double>& H)
+  {
+    // METIS (nested dissection orderings) keeps its random state in globals
+    // and reseeds per call: concurrent analyses (several embeddings at once)
+    // would draw from each other's sequence and give orderings, hence
+    // rounding, that change from run to run.
+    static std::mutex orderingMutex;
+    std::lock_guard<std::mutex> lock(orderingMutex);
+    this->analyse(H);
   }
 
   /// Numeric factorisation of H (the analysed pattern) on up to `threads`
@@ -484,6 +497,16 @@ LinearSolver::LinearSolver(Ordering ordering)
 
 LinearSolver::~LinearSolver() = default;
 
+void LinearSolver::analyse(const Eigen::SparseMatrix<double>& pattern)
+{
+  if (this->Impl->Blocks.size() > 2)
+  {
+    return; // block solves analyse each block in solve()
+  }
+  this->Impl->analyseLocked(pattern);
+  this->Impl->AnalysedAhead = true;
+}
+
 LinearSolveResult LinearSolver::solve(const Eigen::SparseMatrix<double>& H,
   const Eigen::VectorXd& b,
   Eigen::VectorXd& x,
@@ -499,19 +522,14 @@ LinearSolveResult LinearSolver::solve(const Eigen::SparseMatrix<double>& H,
   const int threads = omp_get_max_threads();
   const SingleThreadedBlas blasThreads;
   Internals& cholesky = *this->Impl;
-  if (patternChanged || !cholesky.Factor)
+  const bool ahead = cholesky.AnalysedAhead;
+  cholesky.AnalysedAhead = false;
+  if ((patternChanged && !ahead) || !cholesky.Factor)
   {
-    {
-      // METIS (nested dissection orderings) keeps its random state in
-      // globals and reseeds per call: concurrent analyses (several
-      // embeddings at once) would draw from each other's sequence and give
-      // orderings, hence rounding, that change from run to run.
-      static std::mutex orderingMutex;
-      std::lock_guard<std::mutex> lock(orderingMutex);
-      cholesky.analyse(H);
-    }
+    cholesky.analyseLocked(H);
     result.analysed = true;
   }
+  result.analysed = result.analysed || (patternChanged && ahead);
   if (cholesky.factorise(H, threads))
   {
     result.factorisationThreads = cholesky.FactorisationThreads;

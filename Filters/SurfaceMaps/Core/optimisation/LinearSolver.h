@@ -57,6 +57,13 @@ public:
   LinearSolver(const LinearSolver&) = delete;
   LinearSolver& operator=(const LinearSolver&) = delete;
 
+  /// Symbolic analysis of the sparsity pattern (upper triangle; values are
+  /// not read) of the matrix the next solve() gets with patternChanged set,
+  /// so that the analysis can run beside other work (Objective::hessian's
+  /// newPattern). That solve() then does not analyse again. Nothing to do for
+  /// block solves.
+  void analyse(const Eigen::SparseMatrix<double>& pattern);
+
   LinearSolveResult solve(const Eigen::SparseMatrix<double>& H,
     const Eigen::VectorXd& b,
     Eigen::VectorXd& x,

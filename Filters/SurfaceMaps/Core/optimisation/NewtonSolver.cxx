@@ -25,7 +25,12 @@ NewtonStepResult newtonStep(Objective& objective,
   Eigen::SparseMatrix<double> H;
   bool patternChanged = false;
   auto clock = std::chrono::steady_clock::now();
-  result.energyBefore = objective.hessian(points, options.projectionEps, g, H, &patternChanged);
+  result.energyBefore = objective.hessian(points,
+    options.projectionEps,
+    g,
+    H,
+    &patternChanged,
+    [&solver](const Eigen::SparseMatrix<double>& pattern) { solver.analyse(pattern); });
   result.derivativeSeconds = secondsSince(clock);
   result.energyAfter = result.energyBefore;
   if (!std::isfinite(result.energyBefore))

@@ -1,8 +1,12 @@
 #include "optimisation/Objective.h"
 
+#include <omp.h>
+
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <cstdint>
+#include <exception>
 #include <stdexcept>
 
 namespace surfacemaps
@@ -119,10 +123,43 @@ double Objective::assembleGradient(const SpherePoints& points, Eigen::VectorXd& 
   return total;
 }
 
+void ObjectiveTerm::evaluateDerivatives(const SpherePoints& points,
+  double projectionEps,
+  double* values,
+  double* gradients,
+  double* hessians) const
+{
+  const int ne = this->numberOfElements();
+  const int chunks = (ne + DerivativeChunk - 1) / DerivativeChunk;
+#pragma omp parallel for schedule(dynamic, 1) if (ne > ParallelDerivativeThreshold)
+  for (int c = 0; c < chunks; ++c)
+  {
+    this->evaluateDerivatives(points,
+      projectionEps,
+      c * DerivativeChunk,
+      std::min(ne, (c + 1) * DerivativeChunk),
+      values,
+      gradients,
+      hessians);
+  }
+}
+
 void Objective::evaluateDerivatives(const SpherePoints& points,
   double projectionEps,
-  bool withHessian)
+  bool withHessian,
+  const std::function<void()>& alongside)
 {
+  // All terms' elements in one list of chunks, taken by the threads in turn:
+  // one parallel region instead of one per term, so no thread waits at the
+  // end of each term. Elements write their own slots, so the results do not
+  // depend on which thread evaluates what.
+  struct Chunk
+  {
+    Entry* entry;
+    int first, last;
+  };
+  std::vector<Chunk> chunks;
+  long long elements = 0;
   for (Entry& entry : this->Terms)
   {
     const int ne = entry.Term->numberOfElements();
@@ -133,11 +170,44 @@ void Objective::evaluateDerivatives(const SpherePoints& points,
     {
       entry.Hessians.resize(ne * n * n);
     }
-    entry.Term->evaluateDerivatives(points,
-      projectionEps,
-      entry.Values.data(),
-      entry.Gradients.data(),
-      withHessian ? entry.Hessians.data() : nullptr);
+    for (int first = 0; first < ne; first += ObjectiveTerm::DerivativeChunk)
+    {
+      chunks.push_back({ &entry, first, std::min(ne, first + ObjectiveTerm::DerivativeChunk) });
+    }
+    elements += ne;
+  }
+  std::atomic<std::size_t> next{ 0 };
+  std::exception_ptr error;
+  const bool parallel = alongside || elements > ObjectiveTerm::ParallelDerivativeThreshold;
+#pragma omp parallel if (parallel)
+  {
+    if (alongside && omp_get_thread_num() == 0)
+    {
+      // Exceptions must not leave the parallel region.
+      try
+      {
+        alongside();
+      }
+      catch (...)
+      {
+        error = std::current_exception();
+      }
+    }
+    for (std::size_t c = next++; c < chunks.size(); c = next++)
+    {
+      Entry& entry = *chunks[c].entry;
+      entry.Term->evaluateDerivatives(points,
+        projectionEps,
+        chunks[c].first,
+        chunks[c].last,
+        entry.Values.data(),
+        entry.Gradients.data(),
+        withHessian ? entry.Hessians.data() : nullptr);
+    }
+  }
+  if (error)
+  {
+    std::rethrow_exception(error);
   }
 }
 
@@ -145,20 +215,6 @@ double Objective::gradient(const SpherePoints& points, Eigen::VectorXd& gradient
 {
   this->evaluateDerivatives(points, 0.0, false);
   return this->assembleGradient(points, gradient);
-}
-
-void Objective::buildPattern(const SpherePoints& points)
-{
-  // Every unlocked point owns two consecutive variables, so the Hessian is
-  // made of 2x2 blocks: collect the upper-triangle blocks (block row <= block
-  // column) column by column (four times fewer than single entries), then lay
-  // out the entries.
-  const int nvars = points.numberOfVariables();
-  const BlockColumns blocks = this->blockColumns(points);
-  this->layOutPattern(nvars, blocks);
-  this->buildScatter(points, blocks);
-  this->PatternVariables = nvars;
-  this->PatternValid = true;
 }
 
 Objective::BlockColumns Objective::blockColumns(const SpherePoints& points) const
@@ -333,18 +389,44 @@ double Objective::hessian(const SpherePoints& points,
   double projectionEps,
   Eigen::VectorXd& gradient,
   Eigen::SparseMatrix<double>& hessian,
-  bool* patternChanged)
+  bool* patternChanged,
+  const std::function<void(const Eigen::SparseMatrix<double>&)>& newPattern)
 {
   const bool rebuild = !this->PatternValid || this->PatternVariables != points.numberOfVariables();
   if (rebuild)
   {
-    this->buildPattern(points);
+    // Every unlocked point owns two consecutive variables, so the Hessian is
+    // made of 2x2 blocks: collect the upper-triangle blocks (block row <=
+    // block column) column by column (four times fewer than single entries),
+    // then lay out the entries. Collecting is serial work, so one thread does
+    // it (and the caller's work on a new pattern) while the others evaluate
+    // the elements' derivatives; the scatter positions need both.
+    const int nvars = points.numberOfVariables();
+    BlockColumns blocks;
+    this->evaluateDerivatives(points,
+      projectionEps,
+      true,
+      [&]()
+      {
+        blocks = this->blockColumns(points);
+        this->layOutPattern(nvars, blocks);
+        if (!this->PatternUnchanged && newPattern)
+        {
+          newPattern(this->Pattern);
+        }
+      });
+    this->buildScatter(points, blocks);
+    this->PatternVariables = nvars;
+    this->PatternValid = true;
+  }
+  else
+  {
+    this->evaluateDerivatives(points, projectionEps, true);
   }
   if (patternChanged)
   {
     *patternChanged = rebuild && !this->PatternUnchanged;
   }
-  this->evaluateDerivatives(points, projectionEps, true);
   const double total = this->assembleGradient(points, gradient);
 
   hessian = this->Pattern; // same structure, zero values

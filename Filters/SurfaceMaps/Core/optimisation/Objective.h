@@ -10,6 +10,7 @@
 
 #include <array>
 #include <cstdint>
+#include <functional>
 #include <limits>
 #include <memory>
 #include <string>
@@ -38,12 +39,30 @@ public:
   /// Values, gradients (n per element) and, if hessians is not null, Hessians
   /// (n*n per element, column-major) projected to eigenvalues >= projectionEps
   /// (a negative projectionEps leaves them as they are, e.g. for derivative
-  /// checks); n = 2 * pointsPerElement().
+  /// checks); n = 2 * pointsPerElement(). Elements [first, last) only, on the
+  /// calling thread, into their own slots of arrays over all elements: callers
+  /// split the elements between threads (see evaluateDerivatives).
   virtual void evaluateDerivatives(const SpherePoints& points,
     double projectionEps,
+    int first,
+    int last,
     double* values,
     double* gradients,
     double* hessians) const = 0;
+
+  /// The same for all elements, on all threads.
+  void evaluateDerivatives(const SpherePoints& points,
+    double projectionEps,
+    double* values,
+    double* gradients,
+    double* hessians) const;
+
+  /// Elements per unit of work when the elements are split between threads
+  /// (a derivative costs microseconds, so a chunk amortises taking it).
+  static constexpr int DerivativeChunk = 64;
+  /// Below this many elements, derivatives stay on one thread (waking
+  /// threads takes microseconds).
+  static constexpr int ParallelDerivativeThreshold = 200;
 };
 
 /// An ObjectiveTerm from an energy functor over NV sphere points:
@@ -62,11 +81,9 @@ class ElementTerm : public ObjectiveTerm
 {
 public:
   static constexpr int N = 2 * NV;
-  // Below these element counts a parallel loop costs more than it saves
-  // (waking threads takes microseconds; a value takes tens of nanoseconds,
-  // a derivative microseconds).
+  // Below this element count a parallel loop costs more than it saves
+  // (waking threads takes microseconds; a value takes tens of nanoseconds).
   static constexpr int ParallelValueThreshold = 2000;
-  static constexpr int ParallelDerivativeThreshold = 200;
 
   ElementTerm(std::string name, Energy energy)
     : Name(std::move(name))
@@ -113,20 +130,22 @@ public:
     }
   }
 
+  using ObjectiveTerm::evaluateDerivatives;
   void evaluateDerivatives(const SpherePoints& points,
     double projectionEps,
+    int first,
+    int last,
     double* values,
     double* gradients,
     double* hessians) const override
   {
-    const int ne = this->numberOfElements();
     if (hessians)
     {
-      this->evaluate<true>(points, projectionEps, ne, values, gradients, hessians);
+      this->evaluate<true>(points, projectionEps, first, last, values, gradients, hessians);
     }
     else
     {
-      this->evaluate<false>(points, projectionEps, ne, values, gradients, hessians);
+      this->evaluate<false>(points, projectionEps, first, last, values, gradients, hessians);
     }
   }
 
@@ -134,14 +153,14 @@ private:
   template<bool WithHessian>
   void evaluate(const SpherePoints& points,
     double projectionEps,
-    int ne,
+    int first,
+    int last,
     double* values,
     double* gradients,
     double* hessians) const
   {
     using T = Dual<N, WithHessian>;
-#pragma omp parallel for schedule(dynamic, 64) if (ne > ParallelDerivativeThreshold)
-    for (int e = 0; e < ne; ++e)
+    for (int e = first; e < last; ++e)
     {
       const T energy = this->Functor(e, this->template seededPoints<T>(points, e));
       values[e] = energy.val;
@@ -176,8 +195,11 @@ public:
   using ElementTerm<NV, Energy>::ElementTerm;
   static constexpr int N = 2 * NV;
 
+  using ObjectiveTerm::evaluateDerivatives;
   void evaluateDerivatives(const SpherePoints& points,
     double projectionEps,
+    int first,
+    int last,
     double* values,
     double* gradients,
     double* hessians) const override
@@ -185,13 +207,10 @@ public:
     if (!hessians || projectionEps < 0.0 || !this->useGaussNewton())
     {
       ElementTerm<NV, Energy>::evaluateDerivatives(
-        points, projectionEps, values, gradients, hessians);
+        points, projectionEps, first, last, values, gradients, hessians);
       return;
     }
-    const int ne = this->numberOfElements();
-#pragma omp parallel for schedule(                                                                 \
-  static) if (ne > ElementTerm <NV, Energy>::ParallelDerivativeThreshold)
-    for (int e = 0; e < ne; ++e)
+    for (int e = first; e < last; ++e)
     {
       Eigen::Map<Eigen::Matrix<double, N, 1>> gradient(gradients + static_cast<std::size_t>(e) * N);
       Eigen::Map<Eigen::Matrix<double, N, N>> H(hessians + static_cast<std::size_t>(e) * N * N);
@@ -201,10 +220,7 @@ public:
   }
 
 protected:
-  virtual bool useGaussNewton() const
-  {
-    return true;
-  }
+  virtual bool useGaussNewton() const { return true; }
   /// Element e's value; its gradient and Gauss-Newton Hessian into the maps.
   virtual double gaussNewton(const SpherePoints& points,
     int e,
@@ -239,12 +255,16 @@ public:
   /// Energy, gradient and projected Hessian (upper triangle, column-major
   /// compressed; projectionEps < 0: not projected). `patternChanged` tells whether the sparsity
   /// pattern differs from the previous call (so a solver must re-analyse it); clear() and
-  /// structureChanged() keep the previous pattern for that comparison.
+  /// structureChanged() keep the previous pattern for that comparison. `newPattern`, if given,
+  /// is called with a changed pattern (zero values) before the Hessian is complete, on one thread
+  /// while the others evaluate element derivatives: a solver's symbolic analysis fits there
+  /// (parallel regions it opens run on that one thread).
   double hessian(const SpherePoints& points,
     double projectionEps,
     Eigen::VectorXd& gradient,
     Eigen::SparseMatrix<double>& hessian,
-    bool* patternChanged = nullptr);
+    bool* patternChanged = nullptr,
+    const std::function<void(const Eigen::SparseMatrix<double>&)>& newPattern = {});
 
 private:
   struct Entry
@@ -266,14 +286,18 @@ private:
     std::vector<int> start;
     std::vector<int> rows;
   };
-  void buildPattern(const SpherePoints& points);
   BlockColumns blockColumns(const SpherePoints& points) const;
   /// Lays out Pattern from the blocks (remembering whether it changed).
   void layOutPattern(int nvars, const BlockColumns& blocks);
   /// Each element's Hessian entries' positions in Pattern's value array.
   void buildScatter(const SpherePoints& points, const BlockColumns& blocks);
   double assembleGradient(const SpherePoints& points, Eigen::VectorXd& gradient);
-  void evaluateDerivatives(const SpherePoints& points, double projectionEps, bool withHessian);
+  /// Every term's element derivatives on all threads; `alongside`, if given,
+  /// runs first on one of them.
+  void evaluateDerivatives(const SpherePoints& points,
+    double projectionEps,
+    bool withHessian,
+    const std::function<void()>& alongside = {});
 
   std::vector<Entry> Terms;
   bool PatternValid = false;

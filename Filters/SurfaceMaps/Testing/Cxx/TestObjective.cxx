@@ -8,7 +8,9 @@
 #include <gtest/gtest.h>
 #include <omp.h>
 
+#include <cstring>
 #include <random>
+#include <stdexcept>
 
 using namespace surfacemaps;
 using namespace surfacemaps::testing;
@@ -204,6 +206,56 @@ TEST(Objective, ReportsWhetherTheHessianPatternChanged)
   points.setLocked(0, true);
   objective.hessian(points, 1e-9, g, H, &changed);
   EXPECT_TRUE(changed);
+}
+
+TEST(Objective, NewPatternIsHandedOverOnceAndTheHessianStaysTheSame)
+{
+  const PolygonMesh ico = makeIcosphere(2);
+  SpherePoints points = perturbedSphere(ico, 0.1, 5);
+  Objective objective;
+  objective.addTerm(std::make_shared<ElementTerm<3, EqualDetEnergy>>(
+    "area", EqualDetEnergy{ ico.triangles(), 0.05 }));
+  Eigen::VectorXd g, gPlain;
+  Eigen::SparseMatrix<double> H, HPlain;
+  int calls = 0;
+  Eigen::Index handedNonZeros = -1;
+  auto newPattern = [&](const Eigen::SparseMatrix<double>& pattern)
+  {
+    ++calls;
+    handedNonZeros = pattern.nonZeros();
+  };
+  bool changed = false;
+  const double e = objective.hessian(points, 1e-9, g, H, &changed, newPattern);
+  EXPECT_TRUE(changed);
+  EXPECT_EQ(calls, 1);
+  EXPECT_EQ(handedNonZeros, H.nonZeros());
+  objective.structureChanged(); // rebuilt, but the same pattern
+  objective.hessian(points, 1e-9, g, H, &changed, newPattern);
+  EXPECT_FALSE(changed);
+  EXPECT_EQ(calls, 1);
+
+  // Evaluated without the hand-over (derivatives on their own): the same
+  // energy, gradient and Hessian bit for bit.
+  Objective plain;
+  plain.addTerm(std::make_shared<ElementTerm<3, EqualDetEnergy>>(
+    "area", EqualDetEnergy{ ico.triangles(), 0.05 }));
+  EXPECT_EQ(plain.hessian(points, 1e-9, gPlain, HPlain), e);
+  ASSERT_EQ(gPlain.size(), g.size());
+  EXPECT_EQ(0, std::memcmp(gPlain.data(), g.data(), sizeof(double) * g.size()));
+  ASSERT_EQ(HPlain.nonZeros(), H.nonZeros());
+  EXPECT_EQ(0, std::memcmp(HPlain.valuePtr(), H.valuePtr(), sizeof(double) * H.nonZeros()));
+
+  // An exception on the pattern's side leaves the parallel region and
+  // reaches the caller.
+  objective.structureChanged();
+  points.setLocked(0, true);
+  EXPECT_THROW(objective.hessian(points,
+                 1e-9,
+                 g,
+                 H,
+                 &changed,
+                 [](const Eigen::SparseMatrix<double>&) { throw std::runtime_error("analysis"); }),
+    std::runtime_error);
 }
 
 TEST(Objective, InvalidElementMakesTheEnergyInfinite)

@@ -267,6 +267,34 @@ TEST(LinearSolver, SplitFactorisationIsTheSerialOneBitForBit)
   omp_set_num_threads(before);
 }
 
+TEST(LinearSolver, AnalysisAheadIsTheSolvesOwnBitForBit)
+{
+  const Eigen::SparseMatrix<double> H = gridSystem(40);
+  const Eigen::VectorXd b = Eigen::VectorXd::LinSpaced(H.rows(), -1.0, 2.0).array().cos();
+  Eigen::VectorXd own, ahead;
+  LinearSolver plain;
+  ASSERT_TRUE(plain.solve(H, b, own, true).success);
+
+  // The pattern alone (values zero) analysed before the solve.
+  Eigen::SparseMatrix<double> pattern = H;
+  std::fill(pattern.valuePtr(), pattern.valuePtr() + pattern.nonZeros(), 0.0);
+  LinearSolver early;
+  early.analyse(pattern);
+  const LinearSolveResult r = early.solve(H, b, ahead, true);
+  ASSERT_TRUE(r.success);
+  EXPECT_TRUE(r.analysed);
+  ASSERT_EQ(ahead.size(), own.size());
+  EXPECT_EQ(0, std::memcmp(ahead.data(), own.data(), sizeof(double) * own.size()));
+
+  // The analysis is used once: a later changed pattern is analysed again.
+  const Eigen::SparseMatrix<double> smaller = gridSystem(30);
+  const Eigen::VectorXd c = Eigen::VectorXd::Ones(smaller.rows());
+  Eigen::VectorXd x;
+  ASSERT_TRUE(early.solve(smaller, c, x, true).success);
+  const Eigen::VectorXd residual = smaller.selfadjointView<Eigen::Upper>() * x - c;
+  EXPECT_LT(residual.norm(), 1e-10 * c.norm());
+}
+
 TEST(LineSearch, ArmijoBacktracking)
 {
   // f(t) = (t - 0.3)^2 along direction with slope -0.6 at t = 0.
