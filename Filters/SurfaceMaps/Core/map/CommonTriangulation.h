@@ -196,6 +196,15 @@ public:
   /// Whether a triangle is positively oriented (exact predicate) with
   /// det > minDet on every sphere: what a new triangle must be.
   bool validTriangle(const MapVertex& a, const MapVertex& b, const MapVertex& c) const;
+  /// The same test on one sphere.
+  static bool validOnSphere(const Eigen::Vector3d& a,
+    const Eigen::Vector3d& b,
+    const Eigen::Vector3d& c);
+  /// Vertex v's point on sphere i.
+  const Eigen::Vector3d& spherePoint(OpenMesh::VertexHandle v, int i) const
+  {
+    return this->Mesh.property(this->G[i], v);
+  }
 
   /// Energy of a local configuration: triangles over `vertices` whose
   /// triangleEnergy values are `triangleEnergies`, plus the samples of each

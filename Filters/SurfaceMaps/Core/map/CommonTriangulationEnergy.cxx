@@ -175,12 +175,19 @@ bool CommonTriangulation::validTriangle(const MapVertex& a,
 {
   for (int i = 0; i < this->numberOfInputs(); ++i)
   {
-    if (!(a.g[i].dot(b.g[i].cross(c.g[i])) > minDet) || orient3dOrigin(a.g[i], b.g[i], c.g[i]) <= 0)
+    if (!validOnSphere(a.g[i], b.g[i], c.g[i]))
     {
       return false;
     }
   }
   return true;
+}
+
+bool CommonTriangulation::validOnSphere(const Eigen::Vector3d& a,
+  const Eigen::Vector3d& b,
+  const Eigen::Vector3d& c)
+{
+  return a.dot(b.cross(c)) > minDet && orient3dOrigin(a, b, c) > 0;
 }
 
 double CommonTriangulation::localEnergy(const std::vector<MapVertex>& vertices,

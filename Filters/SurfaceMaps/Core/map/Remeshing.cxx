@@ -259,6 +259,31 @@ bool collapseKeepsManifold(const HalfedgeMesh& mesh, const EdgeStar& s)
   return common == 2;
 }
 
+// Whether a triangle the edit creates is valid on every sphere, from the
+// sphere points alone: its corners are mesh vertices, except `moved`, which
+// stands at `movedPoints` (one per sphere) if it is a valid handle. This is
+// the test evaluate() makes on the built edit, on the same points, so it
+// decides the same; made before building, it spares the vertex copies and
+// walks of the fifth of the collapses and the quarter of the flips that fail
+// it.
+bool validAfterEdit(const CommonTriangulation& T,
+  const std::array<VertexHandle, 3>& corners,
+  VertexHandle moved = VertexHandle(),
+  const PerInput<Eigen::Vector3d>& movedPoints = {})
+{
+  for (int i = 0; i < T.numberOfInputs(); ++i)
+  {
+    auto point = [&](VertexHandle v) -> const Eigen::Vector3d&
+    { return v == moved ? movedPoints[i] : T.spherePoint(v, i); };
+    if (!CommonTriangulation::validOnSphere(
+          point(corners[0]), point(corners[1]), point(corners[2])))
+    {
+      return false;
+    }
+  }
+  return true;
+}
+
 bool buildSplit(const CommonTriangulation& T, OpenMesh::EdgeHandle e, LocalEdit& edit)
 {
   const HalfedgeMesh& mesh = T.mesh();
@@ -304,6 +329,29 @@ bool buildCollapse(const CommonTriangulation& T, OpenMesh::HalfedgeHandle h, Loc
       faces.push_back(f);
     }
   }
+  // u and v merge at their midpoint on every sphere (as T.midpoint puts it).
+  PerInput<Eigen::Vector3d> merged(T.numberOfInputs());
+  for (int i = 0; i < T.numberOfInputs(); ++i)
+  {
+    merged[i] = (T.spherePoint(s.u, i) + T.spherePoint(s.v, i)).normalized();
+  }
+  for (FaceHandle f : faces)
+  {
+    if (f == f0 || f == f1)
+    {
+      continue;
+    }
+    std::array<VertexHandle, 3> corners;
+    int k = 0;
+    for (auto w : mesh.fv_range(f))
+    {
+      corners[k++] = w == s.u ? s.v : w;
+    }
+    if (!validAfterEdit(T, corners, s.v, merged))
+    {
+      return false;
+    }
+  }
   for (FaceHandle f : faces)
   {
     addFace(T, edit, f);
@@ -336,7 +384,8 @@ bool buildFlip(const CommonTriangulation& T, OpenMesh::EdgeHandle e, LocalEdit& 
   }
   const EdgeStar s = edgeStar(mesh, mesh.halfedge_handle(e, 0));
   if ((T.landmark(s.x) >= 0 && T.landmark(s.y) >= 0) || mesh.valence(s.u) <= 3 ||
-    mesh.valence(s.v) <= 3)
+    mesh.valence(s.v) <= 3 || !validAfterEdit(T, { s.u, s.y, s.x }) ||
+    !validAfterEdit(T, { s.y, s.v, s.x }))
   {
     return false;
   }
