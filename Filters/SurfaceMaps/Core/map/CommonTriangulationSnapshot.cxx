@@ -24,7 +24,7 @@ void CommonTriangulation::snapshot(Snapshot& s, SpherePoints& points, bool lockL
   {
     s.lengths.push_back(this->Mesh.property(this->Length, f));
   }
-  s.neighbours = triangleNeighbours(s.triangles);
+  s.neighbours = faceNeighbours(this->Mesh);
   s.embeddedTriangles.assign(n, s.triangles);
   std::vector<Eigen::Vector3d> positions(static_cast<std::size_t>(n) * nv);
   s.liftTriangle.assign(positions.size(), -1);

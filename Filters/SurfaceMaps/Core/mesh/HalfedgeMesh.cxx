@@ -63,4 +63,33 @@ std::vector<std::array<int, 3>> faceTriangles(const HalfedgeMesh& mesh)
   return triangles;
 }
 
+std::vector<std::array<int, 3>> faceNeighbours(const HalfedgeMesh& mesh)
+{
+  // Entries of faceTriangles: faces in order, deleted ones skipped.
+  std::vector<int> entry(mesh.n_faces(), -1);
+  int count = 0;
+  for (const auto fh : mesh.faces())
+  {
+    entry[fh.idx()] = count++;
+  }
+  std::vector<std::array<int, 3>> neighbours(count, { -1, -1, -1 });
+  for (const auto fh : mesh.faces())
+  {
+    auto fv = mesh.cfv_iter(fh);
+    const std::array<OpenMesh::VertexHandle, 3> corners{ *fv, *++fv, *++fv };
+    for (const auto h : mesh.fh_range(fh))
+    {
+      const auto from = mesh.from_vertex_handle(h), to = mesh.to_vertex_handle(h);
+      int k = 0;
+      while (corners[k] == from || corners[k] == to)
+      {
+        ++k;
+      }
+      const auto across = mesh.opposite_face_handle(h);
+      neighbours[entry[fh.idx()]][k] = across.is_valid() ? entry[across.idx()] : -1;
+    }
+  }
+  return neighbours;
+}
+
 } // namespace surfacemaps

@@ -32,6 +32,12 @@ HalfedgeMesh toHalfedgeMesh(const PolygonMesh& mesh);
 /// (deleted faces skipped; after garbage collection entry f is face f).
 std::vector<std::array<int, 3>> faceTriangles(const HalfedgeMesh& mesh);
 
+/// For every entry of faceTriangles(mesh), the entries of the faces across
+/// its three edges: entry k is across the edge opposite corner k, -1 where
+/// that edge is on a boundary. Read off the half-edges, where a search over
+/// the triangles alone (triangleNeighbours) sorts all directed edges.
+std::vector<std::array<int, 3>> faceNeighbours(const HalfedgeMesh& mesh);
+
 /// Points and triangles of a half-edge mesh (no texture coordinates).
 PolygonMesh toPolygonMesh(const HalfedgeMesh& mesh);
 

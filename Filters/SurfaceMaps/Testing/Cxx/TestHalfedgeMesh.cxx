@@ -1,3 +1,4 @@
+#include "geometry/SphereLocator.h"
 #include "mesh/HalfedgeMesh.h"
 #include "mesh/MeshValidation.h"
 #include "mesh/Primitives.h"
@@ -57,4 +58,35 @@ TEST(HalfedgeMesh, RejectsNonManifoldInput)
   quad.points = { { 0, 0, 0 }, { 1, 0, 0 }, { 1, 1, 0 }, { 0, 1, 0 } };
   quad.addFace({ 0, 1, 2, 3 });
   EXPECT_THROW(toHalfedgeMesh(quad), std::invalid_argument);
+}
+
+TEST(HalfedgeMesh, FaceNeighboursAreTheTrianglesNeighbours)
+{
+  HalfedgeMesh mesh = toHalfedgeMesh(makeIcosphere(2));
+  EXPECT_EQ(faceNeighbours(mesh), triangleNeighbours(faceTriangles(mesh)));
+  // After edits, with deleted faces not yet collected and after collecting.
+  mesh.request_vertex_status();
+  mesh.request_edge_status();
+  mesh.request_face_status();
+  int collapsed = 0;
+  for (const auto eh : mesh.edges())
+  {
+    const auto h = mesh.halfedge_handle(eh, 0);
+    if (collapsed < 10 && !mesh.status(eh).deleted() && mesh.is_collapse_ok(h) &&
+      mesh.valence(mesh.to_vertex_handle(mesh.next_halfedge_handle(h))) > 4 &&
+      mesh.valence(
+        mesh.to_vertex_handle(mesh.next_halfedge_handle(mesh.opposite_halfedge_handle(h)))) > 4)
+    {
+      mesh.collapse(h);
+      ++collapsed;
+    }
+  }
+  ASSERT_EQ(collapsed, 10);
+  EXPECT_EQ(faceNeighbours(mesh), triangleNeighbours(faceTriangles(mesh)));
+  mesh.garbage_collection();
+  EXPECT_EQ(faceNeighbours(mesh), triangleNeighbours(faceTriangles(mesh)));
+  for (const auto& n : faceNeighbours(mesh))
+  {
+    EXPECT_TRUE(n[0] >= 0 && n[1] >= 0 && n[2] >= 0);
+  }
 }
