@@ -9,6 +9,7 @@
 #include <omp.h>
 
 #include <cstring>
+#include <memory>
 #include <random>
 #include <stdexcept>
 
@@ -32,6 +33,13 @@ struct EqualDetEnergy
     return d * d;
   }
 };
+
+// An EqualDetEnergy term over the triangles, towards det 0.05.
+std::shared_ptr<ObjectiveTerm> equalDetTerm(std::vector<std::array<int, 3>> triangles)
+{
+  return std::make_shared<ElementTerm<3, EqualDetEnergy>>(
+    "area", EqualDetEnergy{ std::move(triangles), 0.05 });
+}
 
 SpherePoints perturbedSphere(const PolygonMesh& m, double amount, unsigned seed)
 {
@@ -158,8 +166,7 @@ TEST(Objective, ProjectedHessianIsPositiveDefinite)
   const PolygonMesh ico = makeIcosphere(1);
   SpherePoints points = perturbedSphere(ico, 0.1, 3);
   Objective objective;
-  objective.addTerm(std::make_shared<ElementTerm<3, EqualDetEnergy>>(
-    "area", EqualDetEnergy{ ico.triangles(), 0.05 }));
+  objective.addTerm(equalDetTerm(ico.triangles()));
   Eigen::VectorXd g;
   Eigen::SparseMatrix<double> H;
   objective.hessian(points, 1e-9, g, H);
@@ -176,13 +183,8 @@ TEST(Objective, ReportsWhetherTheHessianPatternChanged)
 {
   const PolygonMesh ico = makeIcosphere(1);
   SpherePoints points = perturbedSphere(ico, 0.1, 3);
-  auto term = [&](std::vector<std::array<int, 3>> triangles)
-  {
-    return std::make_shared<ElementTerm<3, EqualDetEnergy>>(
-      "area", EqualDetEnergy{ std::move(triangles), 0.05 });
-  };
   Objective objective;
-  objective.addTerm(term(ico.triangles()));
+  objective.addTerm(equalDetTerm(ico.triangles()));
   Eigen::VectorXd g;
   Eigen::SparseMatrix<double> H;
   bool changed = false;
@@ -192,14 +194,14 @@ TEST(Objective, ReportsWhetherTheHessianPatternChanged)
   EXPECT_FALSE(changed);
   // Rebuilt from the same elements (e.g. the next iteration without edits).
   objective.clear();
-  objective.addTerm(term(ico.triangles()));
+  objective.addTerm(equalDetTerm(ico.triangles()));
   objective.hessian(points, 1e-9, g, H, &changed);
   EXPECT_FALSE(changed);
   // Fewer elements: fewer couplings.
   auto fewer = ico.triangles();
   fewer.resize(fewer.size() / 2);
   objective.clear();
-  objective.addTerm(term(fewer));
+  objective.addTerm(equalDetTerm(fewer));
   objective.hessian(points, 1e-9, g, H, &changed);
   EXPECT_TRUE(changed);
   // A locked point removes variables.
@@ -213,8 +215,7 @@ TEST(Objective, NewPatternIsHandedOverOnceAndTheHessianStaysTheSame)
   const PolygonMesh ico = makeIcosphere(2);
   SpherePoints points = perturbedSphere(ico, 0.1, 5);
   Objective objective;
-  objective.addTerm(std::make_shared<ElementTerm<3, EqualDetEnergy>>(
-    "area", EqualDetEnergy{ ico.triangles(), 0.05 }));
+  objective.addTerm(equalDetTerm(ico.triangles()));
   Eigen::VectorXd g, gPlain;
   Eigen::SparseMatrix<double> H, HPlain;
   int calls = 0;
@@ -237,8 +238,7 @@ TEST(Objective, NewPatternIsHandedOverOnceAndTheHessianStaysTheSame)
   // Evaluated without the hand-over (derivatives on their own): the same
   // energy, gradient and Hessian bit for bit.
   Objective plain;
-  plain.addTerm(std::make_shared<ElementTerm<3, EqualDetEnergy>>(
-    "area", EqualDetEnergy{ ico.triangles(), 0.05 }));
+  plain.addTerm(equalDetTerm(ico.triangles()));
   EXPECT_EQ(plain.hessian(points, 1e-9, gPlain, HPlain), e);
   ASSERT_EQ(gPlain.size(), g.size());
   EXPECT_EQ(0, std::memcmp(gPlain.data(), g.data(), sizeof(double) * g.size()));
