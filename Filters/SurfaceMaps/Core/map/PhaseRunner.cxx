@@ -213,7 +213,10 @@ NewtonStepResult PhaseRunner::newtonIteration(const MapPhase& phase,
   newton.log = this->Options.log;
   const NewtonStepResult step = newtonStep(objective, points, solver, newton);
   clock = Clock::now();
-  if (!this->T.update(snapshot, points))
+  // The snapshot's lift triangles and sample assignment are the last trial's:
+  // when that trial is the step taken they are current (an update would walk
+  // nowhere), otherwise they are brought to the points now.
+  if (!step.lastTrialTaken && !this->T.update(snapshot, points))
   {
     throw std::logic_error("the accepted Newton step left an invalid embedding");
   }

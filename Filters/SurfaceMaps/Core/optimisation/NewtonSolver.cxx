@@ -80,11 +80,19 @@ NewtonStepResult newtonStep(Objective& objective,
   };
 
   const std::vector<Eigen::Vector3d> start = points.positions();
+  // The last trial evaluated: along the plain or the held step, its step, and
+  // whether acceptTrial passed (so whatever it computed is current).
+  bool lastHeld = false;
+  double lastStep = 0.0;
+  bool lastAccepted = false;
   auto energyAlong = [&](const Eigen::VectorXd& direction, double t)
   {
     points.setPositions(start);
     points.retract(direction, t);
-    if (options.acceptTrial && !options.acceptTrial(points))
+    lastHeld = &direction != &d;
+    lastStep = t;
+    lastAccepted = !options.acceptTrial || options.acceptTrial(points);
+    if (!lastAccepted)
     {
       return std::numeric_limits<double>::infinity();
     }
@@ -100,6 +108,7 @@ NewtonStepResult newtonStep(Objective& objective,
   result.lineSearchTrials = ls.trials;
   LineSearchResult taken = ls;
   double takenFirst = initialStep;
+  bool takenHeld = false;
 
   if (options.blockingPoints && !(ls.success && ls.step == initialStep))
   {
@@ -144,6 +153,7 @@ NewtonStepResult newtonStep(Objective& objective,
         taken = heldSearch;
         takenFirst = heldFirst;
         d = held;
+        takenHeld = true;
         result.heldPoints = count;
       }
     }
@@ -153,7 +163,9 @@ NewtonStepResult newtonStep(Objective& objective,
   points.setPositions(start);
   if (taken.success)
   {
+    // The same operations as the trial's, so the same points bit for bit.
     points.retract(d, taken.step);
+    result.lastTrialTaken = lastAccepted && lastHeld == takenHeld && lastStep == taken.step;
     points.recentreBases();
     result.step = taken.step;
     result.energyAfter = taken.energy;

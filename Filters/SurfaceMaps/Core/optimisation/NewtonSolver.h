@@ -52,6 +52,10 @@ struct NewtonStepResult
   bool regularised = false;
   /// The points moved (line search succeeded).
   bool moved = false;
+  /// The step taken was the last trial evaluated and acceptTrial passed it:
+  /// what acceptTrial computed from the trial's points (e.g. where they lie
+  /// on the inputs) holds for the points as they are now.
+  bool lastTrialTaken = false;
   /// Points held still in the step taken (0: the plain Newton step).
   int heldPoints = 0;
   /// The line search failed or cut its first trial by more than 100 times

@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <numeric>
 #include <random>
 
 using namespace surfacemaps;
@@ -259,4 +260,65 @@ TEST(NewtonSolver, LockedPointsStayPut)
   minimize(problem.objective, problem.points, options);
   EXPECT_EQ(problem.points.position(0), p0);
   EXPECT_EQ(problem.points.position(17), p17);
+}
+
+TEST(NewtonSolver, LastTrialTakenMeansTheTrialsPointsAreTheFinalOnes)
+{
+  // acceptTrial remembers the points of the last trial it passed, as a
+  // caller's point location would. lastTrialTaken must promise that these
+  // are the final points, bit for bit.
+  std::vector<Eigen::Vector3d> lastPassed;
+  int calls = 0;
+  int rejectCall = -1;
+  NewtonOptions options;
+  options.acceptTrial = [&](const SpherePoints& trial)
+  {
+    if (++calls == rejectCall)
+    {
+      return false;
+    }
+    lastPassed = trial.positions();
+    return true;
+  };
+  auto finalMatches = [&](const SpherePoints& points) { return lastPassed == points.positions(); };
+
+  // The full step at the first trial.
+  Problem first(0.05);
+  LinearSolver solver;
+  NewtonStepResult step = newtonStep(first.objective, first.points, solver, options);
+  ASSERT_TRUE(step.moved);
+  EXPECT_EQ(step.lineSearchTrials, 1);
+  EXPECT_TRUE(step.lastTrialTaken);
+  EXPECT_TRUE(finalMatches(first.points));
+
+  // The first trial rejected, so the plain search takes a shorter step and a
+  // second search runs with points held. Holding point 0 gives the better
+  // step: taken, and its trial was the last.
+  calls = 0;
+  rejectCall = 1;
+  options.blockingPoints = [](const SpherePoints&) { return std::vector<int>{ 0 }; };
+  Problem second(0.05);
+  LinearSolver other;
+  step = newtonStep(second.objective, second.points, other, options);
+  ASSERT_TRUE(step.moved);
+  EXPECT_EQ(step.heldPoints, 1);
+  EXPECT_TRUE(step.lastTrialTaken);
+  EXPECT_TRUE(finalMatches(second.points));
+
+  // Holding half of the points gives the worse step: the plain one is taken,
+  // but the held search's trials came after it.
+  calls = 0;
+  options.blockingPoints = [](const SpherePoints& trial)
+  {
+    std::vector<int> half(trial.size() / 2);
+    std::iota(half.begin(), half.end(), 0);
+    return half;
+  };
+  Problem third(0.05);
+  LinearSolver another;
+  step = newtonStep(third.objective, third.points, another, options);
+  ASSERT_TRUE(step.moved);
+  EXPECT_EQ(step.heldPoints, 0);
+  EXPECT_FALSE(step.lastTrialTaken);
+  EXPECT_FALSE(finalMatches(third.points));
 }
