@@ -140,7 +140,7 @@ MapVertex CommonTriangulation::midpoint(OpenMesh::VertexHandle u, OpenMesh::Vert
   MapVertex m = this->vertex(u);
   for (int i = 0; i < this->numberOfInputs(); ++i)
   {
-    m.g[i] = (m.g[i] + this->Mesh.property(this->G[i], v)).normalized();
+    m.g[i] = this->sphereMidpoint(u, v, i);
   }
   m.landmark = -1;
   this->relocate(m);

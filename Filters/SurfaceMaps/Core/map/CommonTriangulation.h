@@ -130,6 +130,11 @@ public:
   void setVertex(OpenMesh::VertexHandle v, const MapVertex& data);
   /// A new vertex at the normalised midpoint of u and v on every sphere.
   MapVertex midpoint(OpenMesh::VertexHandle u, OpenMesh::VertexHandle v) const;
+  /// That midpoint's point on sphere i.
+  Eigen::Vector3d sphereMidpoint(OpenMesh::VertexHandle u, OpenMesh::VertexHandle v, int i) const
+  {
+    return (this->Mesh.property(this->G[i], u) + this->Mesh.property(this->G[i], v)).normalized();
+  }
   /// Moves vertex data to sphere points g (per input), locating them on the
   /// inputs by a walk from the current lift triangles.
   void relocate(MapVertex& vertex) const;

@@ -329,11 +329,11 @@ bool buildCollapse(const CommonTriangulation& T, OpenMesh::HalfedgeHandle h, Loc
       faces.push_back(f);
     }
   }
-  // u and v merge at their midpoint on every sphere (as T.midpoint puts it).
+  // u and v merge at their midpoint on every sphere (where T.midpoint puts it).
   PerInput<Eigen::Vector3d> merged(T.numberOfInputs());
   for (int i = 0; i < T.numberOfInputs(); ++i)
   {
-    merged[i] = (T.spherePoint(s.u, i) + T.spherePoint(s.v, i)).normalized();
+    merged[i] = T.sphereMidpoint(s.u, s.v, i);
   }
   for (FaceHandle f : faces)
   {
