@@ -280,45 +280,48 @@ TEST(NewtonSolver, LastTrialTakenMeansTheTrialsPointsAreTheFinalOnes)
     lastPassed = trial.positions();
     return true;
   };
-  auto finalMatches = [&](const SpherePoints& points) { return lastPassed == points.positions(); };
+  // One Newton step on a fresh problem; whether its final points are the
+  // last passed trial's.
+  bool finalMatches = false;
+  auto stepOnce = [&]()
+  {
+    calls = 0;
+    Problem problem(0.05);
+    LinearSolver solver;
+    const NewtonStepResult step = newtonStep(problem.objective, problem.points, solver, options);
+    finalMatches = lastPassed == problem.points.positions();
+    return step;
+  };
 
   // The full step at the first trial.
-  Problem first(0.05);
-  LinearSolver solver;
-  NewtonStepResult step = newtonStep(first.objective, first.points, solver, options);
+  NewtonStepResult step = stepOnce();
   ASSERT_TRUE(step.moved);
   EXPECT_EQ(step.lineSearchTrials, 1);
   EXPECT_TRUE(step.lastTrialTaken);
-  EXPECT_TRUE(finalMatches(first.points));
+  EXPECT_TRUE(finalMatches);
 
   // The first trial rejected, so the plain search takes a shorter step and a
   // second search runs with points held. Holding point 0 gives the better
   // step: taken, and its trial was the last.
-  calls = 0;
   rejectCall = 1;
   options.blockingPoints = [](const SpherePoints&) { return std::vector<int>{ 0 }; };
-  Problem second(0.05);
-  LinearSolver other;
-  step = newtonStep(second.objective, second.points, other, options);
+  step = stepOnce();
   ASSERT_TRUE(step.moved);
   EXPECT_EQ(step.heldPoints, 1);
   EXPECT_TRUE(step.lastTrialTaken);
-  EXPECT_TRUE(finalMatches(second.points));
+  EXPECT_TRUE(finalMatches);
 
   // Holding half of the points gives the worse step: the plain one is taken,
   // but the held search's trials came after it.
-  calls = 0;
   options.blockingPoints = [](const SpherePoints& trial)
   {
     std::vector<int> half(trial.size() / 2);
     std::iota(half.begin(), half.end(), 0);
     return half;
   };
-  Problem third(0.05);
-  LinearSolver another;
-  step = newtonStep(third.objective, third.points, another, options);
+  step = stepOnce();
   ASSERT_TRUE(step.moved);
   EXPECT_EQ(step.heldPoints, 0);
   EXPECT_FALSE(step.lastTrialTaken);
-  EXPECT_FALSE(finalMatches(third.points));
+  EXPECT_FALSE(finalMatches);
 }
