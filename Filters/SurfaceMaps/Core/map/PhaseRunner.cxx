@@ -5,6 +5,8 @@
 #include "map/Remeshing.h"
 #include "optimisation/NewtonSolver.h"
 
+#include <omp.h>
+
 #include <algorithm>
 #include <chrono>
 #include <sstream>
@@ -199,6 +201,19 @@ NewtonStepResult PhaseRunner::newtonIteration(const MapPhase& phase,
   NewtonOptions newton;
   newton.maxPointStep = this->Options.maxPointStep;
   newton.acceptTrial = [&](const SpherePoints& trial) { return this->T.update(snapshot, trial); };
+  // A second trial slot: its own copy of the snapshot (update() writes the
+  // lifts and the sample assignment) and an objective over it.
+  CommonTriangulation::Snapshot second;
+  Objective secondObjective;
+  if (omp_get_max_threads() > 1)
+  {
+    second = snapshot;
+    this->T.buildObjective(second, this->Targets, secondObjective);
+    newton.trialSlots.count = 2;
+    newton.trialSlots.objective = [&](int) -> const Objective& { return secondObjective; };
+    newton.trialSlots.accept = [&](int, const SpherePoints& trial)
+    { return this->T.update(second, trial); };
+  }
   bool raised = false;
   newton.blockingPoints = [&](const SpherePoints& trial)
   {
@@ -213,10 +228,16 @@ NewtonStepResult PhaseRunner::newtonIteration(const MapPhase& phase,
   newton.log = this->Options.log;
   const NewtonStepResult step = newtonStep(objective, points, solver, newton);
   clock = Clock::now();
-  // The snapshot's lift triangles and sample assignment are the last trial's:
-  // when that trial is the step taken they are current (an update would walk
+  // A slot's lift triangles and sample assignment are its last trial's: when
+  // that trial is the step taken they are current (an update would walk
   // nowhere), otherwise they are brought to the points now.
-  if (!step.lastTrialTaken && !this->T.update(snapshot, points))
+  if (step.takenTrialSlot == 1)
+  {
+    snapshot.liftTriangle.swap(second.liftTriangle);
+    snapshot.lifts.swap(second.lifts);
+    snapshot.sampleTriangle.swap(second.sampleTriangle);
+  }
+  else if (step.takenTrialSlot != 0 && !this->T.update(snapshot, points))
   {
     throw std::logic_error("the accepted Newton step left an invalid embedding");
   }

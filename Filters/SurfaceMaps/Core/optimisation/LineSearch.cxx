@@ -1,6 +1,13 @@
 #include "optimisation/LineSearch.h"
 
+#include <omp.h>
+
+#include <algorithm>
+#include <atomic>
 #include <cmath>
+#include <exception>
+#include <limits>
+#include <vector>
 
 namespace surfacemaps
 {
@@ -29,6 +36,88 @@ LineSearchResult armijoBacktracking(const std::function<double(double)>& energyA
       result.energy = f;
       return result;
     }
+  }
+  return result;
+}
+
+LineSearchResult armijoBacktracking(const SlotEnergy& energyAt,
+  int slots,
+  double f0,
+  double slope,
+  double initialStep,
+  const LineSearchOptions& options)
+{
+  if (slots <= 1)
+  {
+    return armijoBacktracking(
+      [&energyAt](double t) { return energyAt(0, t); }, f0, slope, initialStep, options);
+  }
+  LineSearchResult result;
+  result.energy = f0;
+  if (!(slope < 0.0) || !std::isfinite(f0) || options.maxTrials <= 0)
+  {
+    return result;
+  }
+  const int trials = options.maxTrials;
+  // The same repeated multiplication as the one-by-one search: the same steps.
+  std::vector<double> steps(trials);
+  double t = initialStep;
+  for (int k = 0; k < trials; ++k, t *= options.shrink)
+  {
+    steps[k] = t;
+  }
+  std::vector<double> energies(trials, std::numeric_limits<double>::quiet_NaN());
+  auto passes = [&](int k)
+  { return std::isfinite(energies[k]) && energies[k] <= f0 + options.armijo * steps[k] * slope; };
+  // Trials are handed out in order; a slot takes the next one as soon as it
+  // is free (a trial rejected early is cheap), and none is handed out past
+  // the first one known to pass. Every trial before a passing one has been
+  // handed out, and each is finished when the loop ends, so the first
+  // passing trial in order is the one-by-one search's.
+  std::atomic<int> next{ 0 };
+  std::atomic<int> firstPassing{ trials };
+  std::exception_ptr error;
+#pragma omp parallel num_threads(slots)
+  {
+    const int slot = omp_get_thread_num();
+    for (;;)
+    {
+      const int k = next++;
+      if (k >= trials || k > firstPassing.load())
+      {
+        break;
+      }
+      try
+      {
+        energies[k] = energyAt(slot, steps[k]);
+      }
+      catch (...)
+      {
+#pragma omp critical(surfacemapsLineSearchError)
+        error = std::current_exception();
+        firstPassing = -1;
+        break;
+      }
+      if (passes(k))
+      {
+        int known = firstPassing.load();
+        while (k < known && !firstPassing.compare_exchange_weak(known, k))
+        {
+        }
+      }
+    }
+  }
+  if (error)
+  {
+    std::rethrow_exception(error);
+  }
+  const int taken = firstPassing.load();
+  result.trials = std::min(taken + 1, trials);
+  if (taken < trials)
+  {
+    result.success = true;
+    result.step = steps[taken];
+    result.energy = energies[taken];
   }
   return result;
 }

@@ -21,6 +21,7 @@ struct LineSearchResult
   bool success = false;
   double step = 0.0;
   double energy = 0.0;
+  /// Trials up to the one taken (all of them if none passed).
   int trials = 0;
 };
 
@@ -29,6 +30,22 @@ struct LineSearchResult
 /// the energy at step t; a non-finite value (an inverted element, a wrong
 /// embedding degree) rejects the trial.
 LineSearchResult armijoBacktracking(const std::function<double(double)>& energyAt,
+  double f0,
+  double slope,
+  double initialStep,
+  const LineSearchOptions& options = LineSearchOptions());
+
+/// energyAt(slot, t): the energy at step t, evaluated in slot `slot`.
+using SlotEnergy = std::function<double(int, double)>;
+
+/// The same search with trials evaluated concurrently in `slots` slots, one
+/// thread each (slot numbers 0 .. slots - 1, a slot's calls one after the
+/// other): trials are handed out in order to whichever slot is free, none
+/// past the first one known to pass. The result, `trials` included, is the
+/// one-by-one search's; up to slots - 1 trials after the one taken are
+/// evaluated in vain. An exception from energyAt is rethrown.
+LineSearchResult armijoBacktracking(const SlotEnergy& energyAt,
+  int slots,
   double f0,
   double slope,
   double initialStep,

@@ -1,7 +1,9 @@
 #include "optimisation/NewtonSolver.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <limits>
 #include <sstream>
 
 namespace surfacemaps
@@ -80,31 +82,49 @@ NewtonStepResult newtonStep(Objective& objective,
   };
 
   const std::vector<Eigen::Vector3d> start = points.positions();
-  // The last trial evaluated: along the plain or the held step, its step, and
-  // whether acceptTrial passed (so whatever it computed is current).
-  bool lastHeld = false;
-  double lastStep = 0.0;
-  bool lastAccepted = false;
-  auto energyAlong = [&](const Eigen::VectorXd& direction, double t)
+  const int slots = options.trialSlots.objective && options.trialSlots.accept
+    ? std::max(1, options.trialSlots.count)
+    : 1;
+  // Slot s >= 1 retracts its own copy of the points (same bases as slot 0's).
+  std::vector<SpherePoints> slotPoints(slots - 1, points);
+  // Per slot, the last trial it evaluated: along the plain or the held step,
+  // its step, and whether its check passed (so whatever it computed is
+  // current).
+  struct LastTrial
   {
-    points.setPositions(start);
-    points.retract(direction, t);
-    lastHeld = &direction != &d;
-    lastStep = t;
-    lastAccepted = !options.acceptTrial || options.acceptTrial(points);
-    if (!lastAccepted)
+    bool held = false;
+    double step = 0.0;
+    bool accepted = false;
+  };
+  std::vector<LastTrial> last(slots);
+  auto trialIn = [&](int slot, const Eigen::VectorXd& direction, double t)
+  {
+    SpherePoints& trial = slot == 0 ? points : slotPoints[slot - 1];
+    trial.setPositions(start);
+    trial.retract(direction, t);
+    LastTrial& record = last[slot];
+    record.held = &direction != &d;
+    record.step = t;
+    record.accepted = slot == 0 ? !options.acceptTrial || options.acceptTrial(trial)
+                                : options.trialSlots.accept(slot, trial);
+    if (!record.accepted)
     {
       return std::numeric_limits<double>::infinity();
     }
-    return objective.value(points);
+    return (slot == 0 ? objective : options.trialSlots.objective(slot)).value(trial);
+  };
+  auto search = [&](const Eigen::VectorXd& direction, double directionSlope, double first)
+  {
+    return armijoBacktracking([&](int slot, double t) { return trialIn(slot, direction, t); },
+      slots,
+      result.energyBefore,
+      directionSlope,
+      first,
+      options.lineSearch);
   };
   clock = std::chrono::steady_clock::now();
   const double initialStep = firstStep(d);
-  const LineSearchResult ls = armijoBacktracking([&](double t) { return energyAlong(d, t); },
-    result.energyBefore,
-    slope,
-    initialStep,
-    options.lineSearch);
+  const LineSearchResult ls = search(d, slope, initialStep);
   result.lineSearchTrials = ls.trials;
   LineSearchResult taken = ls;
   double takenFirst = initialStep;
@@ -141,12 +161,7 @@ NewtonStepResult newtonStep(Objective& objective,
     if (count > 0 && heldSlope < 0.0)
     {
       const double heldFirst = firstStep(held);
-      const LineSearchResult heldSearch = armijoBacktracking(
-        [&](double t) { return energyAlong(held, t); },
-        result.energyBefore,
-        heldSlope,
-        heldFirst,
-        options.lineSearch);
+      const LineSearchResult heldSearch = search(held, heldSlope, heldFirst);
       result.lineSearchTrials += heldSearch.trials;
       if (heldSearch.success && (!ls.success || heldSearch.energy < ls.energy))
       {
@@ -165,7 +180,14 @@ NewtonStepResult newtonStep(Objective& objective,
   {
     // The same operations as the trial's, so the same points bit for bit.
     points.retract(d, taken.step);
-    result.lastTrialTaken = lastAccepted && lastHeld == takenHeld && lastStep == taken.step;
+    for (int slot = 0; slot < slots; ++slot)
+    {
+      const LastTrial& record = last[slot];
+      if (record.accepted && record.held == takenHeld && record.step == taken.step)
+      {
+        result.takenTrialSlot = slot;
+      }
+    }
     points.recentreBases();
     result.step = taken.step;
     result.energyAfter = taken.energy;

@@ -12,6 +12,20 @@
 namespace surfacemaps
 {
 
+/// Line-search trials evaluated concurrently, one per thread (see
+/// NewtonOptions::trialSlots).
+struct TrialSlots
+{
+  /// Trials evaluated at once; 1: one by one.
+  int count = 1;
+  /// Slot s >= 1's objective: the same energy as the step's objective, over
+  /// the slot's own copy of whatever the trial check updates.
+  std::function<const Objective&(int slot)> objective;
+  /// Slot s >= 1's trial check (acceptTrial's counterpart), touching only
+  /// the slot's own state, so that slots can run at once.
+  std::function<bool(int slot, const SpherePoints&)> accept;
+};
+
 struct NewtonOptions
 {
   /// Element Hessian eigenvalues are clamped to at least this.
@@ -33,6 +47,15 @@ struct NewtonOptions
   /// (on surface maps, a handful of triangles that invert on a sphere within
   /// a few per cent of the step); holding those lets the others move on.
   std::function<std::vector<int>(const SpherePoints&)> blockingPoints;
+  /// Optional: line-search trials evaluated trialSlots.count at a time, one
+  /// per thread, each slot taking the next trial in order when it is free.
+  /// Slot 0 is the step's own points, objective and acceptTrial; slot s >= 1
+  /// retracts its own copy of the points and calls trialSlots.accept(s, .)
+  /// and trialSlots.objective(s). The first trial in order that passes is
+  /// taken, so the step is the one-by-one search's (bit for bit when the
+  /// slots compute what slot 0 would); a trial's own evaluation stays on its
+  /// thread.
+  TrialSlots trialSlots;
   Logger log;
 };
 
@@ -52,10 +75,11 @@ struct NewtonStepResult
   bool regularised = false;
   /// The points moved (line search succeeded).
   bool moved = false;
-  /// The step taken was the last trial evaluated and acceptTrial passed it:
-  /// what acceptTrial computed from the trial's points (e.g. where they lie
-  /// on the inputs) holds for the points as they are now.
-  bool lastTrialTaken = false;
+  /// The trial slot whose last trial is the step taken, with its check
+  /// passed (acceptTrial for slot 0, trialSlots.accept otherwise): what that
+  /// check computed from the trial's points (e.g. where they lie on the
+  /// inputs) holds for the points as they are now. -1: no slot's.
+  int takenTrialSlot = -1;
   /// Points held still in the step taken (0: the plain Newton step).
   int heldPoints = 0;
   /// The line search failed or cut its first trial by more than 100 times

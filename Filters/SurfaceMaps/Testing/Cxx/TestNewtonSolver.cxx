@@ -262,10 +262,10 @@ TEST(NewtonSolver, LockedPointsStayPut)
   EXPECT_EQ(problem.points.position(17), p17);
 }
 
-TEST(NewtonSolver, LastTrialTakenMeansTheTrialsPointsAreTheFinalOnes)
+TEST(NewtonSolver, TakenTrialSlotMeansTheTrialsPointsAreTheFinalOnes)
 {
   // acceptTrial remembers the points of the last trial it passed, as a
-  // caller's point location would. lastTrialTaken must promise that these
+  // caller's point location would. takenTrialSlot 0 must promise that these
   // are the final points, bit for bit.
   std::vector<Eigen::Vector3d> lastPassed;
   int calls = 0;
@@ -297,7 +297,7 @@ TEST(NewtonSolver, LastTrialTakenMeansTheTrialsPointsAreTheFinalOnes)
   NewtonStepResult step = stepOnce();
   ASSERT_TRUE(step.moved);
   EXPECT_EQ(step.lineSearchTrials, 1);
-  EXPECT_TRUE(step.lastTrialTaken);
+  EXPECT_EQ(step.takenTrialSlot, 0);
   EXPECT_TRUE(finalMatches);
 
   // The first trial rejected, so the plain search takes a shorter step and a
@@ -308,7 +308,7 @@ TEST(NewtonSolver, LastTrialTakenMeansTheTrialsPointsAreTheFinalOnes)
   step = stepOnce();
   ASSERT_TRUE(step.moved);
   EXPECT_EQ(step.heldPoints, 1);
-  EXPECT_TRUE(step.lastTrialTaken);
+  EXPECT_EQ(step.takenTrialSlot, 0);
   EXPECT_TRUE(finalMatches);
 
   // Holding half of the points gives the worse step: the plain one is taken,
@@ -322,6 +322,90 @@ TEST(NewtonSolver, LastTrialTakenMeansTheTrialsPointsAreTheFinalOnes)
   step = stepOnce();
   ASSERT_TRUE(step.moved);
   EXPECT_EQ(step.heldPoints, 0);
-  EXPECT_FALSE(step.lastTrialTaken);
+  EXPECT_EQ(step.takenTrialSlot, -1);
   EXPECT_FALSE(finalMatches);
+}
+
+TEST(NewtonSolver, ConcurrentTrialsTakeTheOneByOneStepBitForBit)
+{
+  // Trials that move point 0 farther than a fraction of its free move are
+  // rejected, so the searches run many trials (plain, then held). Slots
+  // remember the points of their last passed trial; the slot reported as
+  // holding the step taken must hold the final points.
+  Problem free(0.05);
+  const std::vector<Eigen::Vector3d> start = free.points.positions();
+  LinearSolver freeSolver;
+  newtonStep(free.objective, free.points, freeSolver);
+  const double freeMove = (free.points.position(0) - start[0]).norm();
+  ASSERT_GT(freeMove, 0.0);
+  auto passes = [&](const SpherePoints& trial)
+  { return (trial.position(0) - start[0]).norm() < 0.05 * freeMove; };
+
+  struct Run
+  {
+    NewtonStepResult step;
+    std::vector<Eigen::Vector3d> final;
+    std::vector<Eigen::Vector3d> inTakenSlot;
+  };
+  auto runWith = [&](int slots, bool hold)
+  {
+    std::vector<std::vector<Eigen::Vector3d>> lastPassed(slots);
+    NewtonOptions options;
+    options.acceptTrial = [&](const SpherePoints& trial)
+    {
+      const bool ok = passes(trial);
+      if (ok)
+      {
+        lastPassed[0] = trial.positions();
+      }
+      return ok;
+    };
+    if (hold)
+    {
+      options.blockingPoints = [&](const SpherePoints& trial)
+      { return passes(trial) ? std::vector<int>{} : std::vector<int>{ 0 }; };
+    }
+    Problem problem(0.05);
+    options.trialSlots.count = slots;
+    options.trialSlots.objective = [&](int) -> const Objective& { return problem.objective; };
+    options.trialSlots.accept = [&](int slot, const SpherePoints& trial)
+    {
+      const bool ok = passes(trial);
+      if (ok)
+      {
+        lastPassed[slot] = trial.positions();
+      }
+      return ok;
+    };
+    LinearSolver solver;
+    Run run;
+    run.step = newtonStep(problem.objective, problem.points, solver, options);
+    run.final = problem.points.positions();
+    if (run.step.takenTrialSlot >= 0)
+    {
+      run.inTakenSlot = lastPassed[run.step.takenTrialSlot];
+    }
+    return run;
+  };
+
+  for (const bool hold : { false, true })
+  {
+    const Run one = runWith(1, hold);
+    ASSERT_TRUE(one.step.moved);
+    ASSERT_GT(one.step.lineSearchTrials, 4);
+    EXPECT_EQ(one.step.heldPoints > 0, hold);
+    for (const int slots : { 2, 3 })
+    {
+      const Run many = runWith(slots, hold);
+      EXPECT_EQ(many.final, one.final) << slots << " slots, hold " << hold;
+      EXPECT_EQ(many.step.step, one.step.step);
+      EXPECT_EQ(many.step.energyAfter, one.step.energyAfter);
+      EXPECT_EQ(many.step.lineSearchTrials, one.step.lineSearchTrials);
+      EXPECT_EQ(many.step.heldPoints, one.step.heldPoints);
+      if (many.step.takenTrialSlot >= 0)
+      {
+        EXPECT_EQ(many.inTakenSlot, many.final);
+      }
+    }
+  }
 }

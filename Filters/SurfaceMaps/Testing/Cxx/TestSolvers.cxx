@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 #include <omp.h>
 
+#include <atomic>
 #include <cmath>
 #include <cstring>
 #include <stdexcept>
@@ -304,6 +305,70 @@ TEST(LineSearch, ArmijoBacktracking)
   EXPECT_LE(r.energy, f(0.0) + 1e-4 * r.step * -0.6);
   EXPECT_LT(r.step, 0.6);
   EXPECT_GT(r.trials, 1);
+}
+
+TEST(LineSearch, ConcurrentSlotsTakeTheOneByOneStep)
+{
+  // Non-finite above t = 0.2 (cheap to reject), not enough decrease down to
+  // t ~ 0.05: the one-by-one search needs several trials. Any number of
+  // slots must take the same step (the same number, made by the same
+  // multiplications), report the same trial count, call each slot from one
+  // thread at a time and evaluate at most slots - 1 trials in vain.
+  auto f = [](double t)
+  { return t > 0.2 ? std::numeric_limits<double>::infinity() : 1.0 - t + 30.0 * t * t; };
+  const LineSearchResult one = armijoBacktracking(f, 1.0, -1.0, 1.0);
+  ASSERT_TRUE(one.success);
+  ASSERT_GT(one.trials, 5);
+  for (const int slots : { 1, 2, 3, 4 })
+  {
+    std::vector<std::atomic<int>> busy(slots);
+    std::atomic<int> evaluated{ 0 };
+    std::atomic<bool> overlapped{ false };
+    const LineSearchResult many = armijoBacktracking(
+      [&](int slot, double t)
+      {
+        EXPECT_GE(slot, 0);
+        EXPECT_LT(slot, slots);
+        overlapped = overlapped || ++busy[slot] > 1;
+        ++evaluated;
+        const double energy = f(t);
+        --busy[slot];
+        return energy;
+      },
+      slots,
+      1.0,
+      -1.0,
+      1.0);
+    EXPECT_FALSE(overlapped);
+    EXPECT_EQ(many.step, one.step) << slots << " slots";
+    EXPECT_EQ(many.energy, one.energy);
+    EXPECT_EQ(many.trials, one.trials);
+    EXPECT_GE(evaluated, one.trials);
+    EXPECT_LT(evaluated, one.trials + slots);
+  }
+  // No trial passes: every trial up to maxTrials is evaluated once.
+  LineSearchOptions few;
+  few.maxTrials = 5;
+  std::atomic<int> evaluated{ 0 };
+  const LineSearchResult none = armijoBacktracking(
+    [&](int, double)
+    {
+      ++evaluated;
+      return std::numeric_limits<double>::infinity();
+    },
+    2,
+    1.0,
+    -1.0,
+    1.0,
+    few);
+  EXPECT_FALSE(none.success);
+  EXPECT_EQ(none.trials, 5);
+  EXPECT_EQ(evaluated, 5);
+  // An exception in a slot reaches the caller.
+  EXPECT_THROW(
+    armijoBacktracking(
+      [](int, double) -> double { throw std::runtime_error("trial"); }, 2, 1.0, -1.0, 1.0),
+    std::runtime_error);
 }
 
 TEST(LineSearch, NonFiniteTrialsAreRejected)
