@@ -77,8 +77,17 @@ LineSearchResult armijoBacktracking(const SlotEnergy& energyAt,
   std::atomic<int> next{ 0 };
   std::atomic<int> firstPassing{ trials };
   std::exception_ptr error;
+  // The threads beyond one per slot go to the parallel loops inside each
+  // trial (a nested level, for this region only).
+  const int inner = std::max(1, omp_get_max_threads() / slots);
+  const int levels = omp_get_max_active_levels();
+  if (inner > 1)
+  {
+    omp_set_max_active_levels(std::max(levels, omp_get_active_level() + 2));
+  }
 #pragma omp parallel num_threads(slots)
   {
+    omp_set_num_threads(inner);
     const int slot = omp_get_thread_num();
     for (;;)
     {
@@ -107,6 +116,7 @@ LineSearchResult armijoBacktracking(const SlotEnergy& energyAt,
       }
     }
   }
+  omp_set_max_active_levels(levels);
   if (error)
   {
     std::rethrow_exception(error);

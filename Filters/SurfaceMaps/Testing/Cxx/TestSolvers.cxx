@@ -364,6 +364,32 @@ TEST(LineSearch, ConcurrentSlotsTakeTheOneByOneStep)
   EXPECT_FALSE(none.success);
   EXPECT_EQ(none.trials, 5);
   EXPECT_EQ(evaluated, 5);
+  // The caller's threads beyond one per slot go to the slots' own parallel
+  // loops, for the search only.
+  const int before = omp_get_max_threads();
+  const int levels = omp_get_max_active_levels();
+  omp_set_num_threads(4);
+  std::atomic<int> innerThreads{ 0 };
+  armijoBacktracking(
+    [&](int, double t)
+    {
+      int count = 0;
+#pragma omp parallel
+      {
+#pragma omp atomic
+        ++count;
+      }
+      innerThreads = count;
+      return f(t);
+    },
+    2,
+    1.0,
+    -1.0,
+    1.0);
+  EXPECT_EQ(innerThreads, 2);
+  EXPECT_EQ(omp_get_max_threads(), 4);
+  EXPECT_EQ(omp_get_max_active_levels(), levels);
+  omp_set_num_threads(before);
   // An exception in a slot reaches the caller.
   EXPECT_THROW(
     armijoBacktracking(

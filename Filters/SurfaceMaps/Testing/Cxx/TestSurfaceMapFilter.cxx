@@ -451,8 +451,9 @@ TEST(SurfaceMapFilter, MappedFirstInputReusesTheMap)
 }
 
 // NumberOfThreads changes how fast, not what: the same map bit for bit with
-// one and two threads, and the caller's OpenMP thread count is its own again
-// after the update.
+// one, two and four threads (line-search trials one at a time, in two slots,
+// in two slots of two threads each), and the caller's OpenMP thread count is
+// its own again after the update.
 TEST(SurfaceMapFilter, NumberOfThreadsGivesTheSameMapAndIsRestored)
 {
   vtkSmartPointer<vtkPolyData> a = ellipsoid(2, 1.0, 0.8, 0.6);
@@ -460,7 +461,7 @@ TEST(SurfaceMapFilter, NumberOfThreadsGivesTheSameMapAndIsRestored)
   const int callers = surfacemaps::ScopedThreadCount::current() + 2;
   const surfacemaps::ScopedThreadCount caller(callers);
   std::vector<std::vector<double>> points;
-  for (int threads : { 1, 2 })
+  for (int threads : { 1, 2, 4 })
   {
     SCOPED_TRACE("threads " + std::to_string(threads));
     vtkNew<vtkSurfaceMapFilter> filter;
@@ -487,6 +488,7 @@ TEST(SurfaceMapFilter, NumberOfThreadsGivesTheSameMapAndIsRestored)
     points.push_back(xyz);
   }
   EXPECT_EQ(points[0], points[1]);
+  EXPECT_EQ(points[0], points[2]);
 }
 
 TEST(SurfaceMapFilter, RefinementSettingsReachTheEngine)
