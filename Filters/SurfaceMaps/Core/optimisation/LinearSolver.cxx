@@ -9,11 +9,13 @@
 
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <cmath>
 #include <memory>
 #include <new>
 #include <sstream>
 #include <stdexcept>
+#include <thread>
 #include <vector>
 
 namespace surfacemaps
@@ -94,8 +96,8 @@ private:
 // CHOLMOD's simplicial factorisation runs on one thread. Its supernodal one
 // can use threads inside BLAS, but the map's Newton systems (about 115 flops
 // per factor entry) factorise faster simplicial than supernodal. With AMD
-// orderings the rows near the root hold about half of the work and stay
-// serial.
+// orderings the rows near the root (the remainder) hold about half of the
+// work; RemainderPipeline computes them on two threads.
 struct RowSplit
 {
   /// Each list's rows, ascending and linked through `next` (CHOLMOD's
@@ -103,6 +105,9 @@ struct RowSplit
   /// once; the last list is the remainder.
   std::vector<std::array<int, 2>> lists;
   std::vector<int> next;
+  /// The elimination tree and the remainder's rows, ascending.
+  std::vector<int> parent;
+  std::vector<int> remainder;
   /// The thread count it was made for; whether it is up to date.
   int threads = 0;
   bool valid = false;
@@ -281,8 +286,235 @@ RowSplit splitRows(const cholmod_sparse& S, const std::vector<int>& parent, int 
   }
   link(rows);
   split.lists.back()[1] = n;
+  split.parent = parent;
+  split.remainder = rows;
   return split;
 }
+
+// The remainder's rows (about half of the work, mostly one chain of rows
+// near the root that form a dense block) on two threads at once: the threads
+// take the rows in turn, and a row goes on while the row before it is still
+// being computed. Row k's numbers are those cholmod_rowfac computes for an
+// LL^T factor, in its order: k's pattern in the order of its row-subtree
+// walk (the elimination tree's parent stands for the first off-diagonal
+// entry of a column, which is the parent once the rows below are done), then
+// for each column i of it the same divisions and subtractions. What row k
+// reads of the row before it is that row's entries in the columns of k's
+// pattern and its diagonal, so a thread waits, column by column, until the
+// row before has stored its entry in that column (LastRow) if that row's
+// pattern holds the column (PendingRow, published in row order). Entries
+// reach each column in row order, as in the serial factorisation, so the
+// factor is the serial one bit for bit.
+class RemainderPipeline
+{
+public:
+  /// Whether the pipeline can factorise the remainder of L from S: an LL^T
+  /// factor, S packed, sorted and upper, every column with room for its final
+  /// count (the analysis allocated exactly that).
+  static bool applies(const cholmod_sparse& S, const cholmod_factor& L)
+  {
+    if (!L.is_ll || L.is_super || L.xtype != CHOLMOD_REAL || L.itype != CHOLMOD_INT ||
+      S.xtype != CHOLMOD_REAL || S.itype != CHOLMOD_INT || !S.packed || !S.sorted || S.stype <= 0)
+    {
+      return false;
+    }
+    const int n = static_cast<int>(L.n);
+    const int* Lp = static_cast<const int*>(L.p);
+    const int* Lnext = static_cast<const int*>(L.next);
+    const int* counts = static_cast<const int*>(L.ColCount);
+    for (int i = 0; i < n; ++i)
+    {
+      if (Lp[Lnext[i]] - Lp[i] < counts[i])
+      {
+        return false;
+      }
+    }
+    return true;
+  }
+
+  /// Rows `rows` (ascending, their descendants done) of L; false if a pivot
+  /// is not positive (L.minor then below L.n, as cholmod_rowfac leaves it).
+  bool factorise(const cholmod_sparse& S,
+    const std::vector<int>& parent,
+    const std::vector<int>& rows,
+    cholmod_factor& L)
+  {
+    const int n = static_cast<int>(L.n);
+    const int m = static_cast<int>(rows.size());
+    if (static_cast<int>(this->Size) != n)
+    {
+      this->PendingRow.reset(new std::atomic<int>[n]);
+      this->LastRow.reset(new std::atomic<int>[n]);
+      this->Size = n;
+    }
+    for (int i = 0; i < n; ++i)
+    {
+      this->PendingRow[i].store(-1, std::memory_order_relaxed);
+      this->LastRow[i].store(-1, std::memory_order_relaxed);
+    }
+    std::unique_ptr<std::atomic<int>[]> published(new std::atomic<int>[m]);
+    for (int j = 0; j < m; ++j)
+    {
+      published[j].store(0, std::memory_order_relaxed);
+    }
+    for (Workspace& w : this->Threads)
+    {
+      w.values.assign(n, 0.0);
+      w.flag.assign(n, -1);
+      w.stack.resize(n);
+      w.wait.resize(n);
+    }
+    const int* Sp = static_cast<const int*>(S.p);
+    const int* Si = static_cast<const int*>(S.i);
+    const double* Sx = static_cast<const double*>(S.x);
+    const int* Lp = static_cast<const int*>(L.p);
+    int* Li = static_cast<int*>(L.i);
+    double* Lx = static_cast<double*>(L.x);
+    int* Lnz = static_cast<int*>(L.nz);
+    std::size_t* minor = &L.minor;
+    auto minorNow = [minor]() { return __atomic_load_n(minor, __ATOMIC_RELAXED); };
+    auto lowerMinor = [minor](std::size_t k)
+    {
+      std::size_t known = __atomic_load_n(minor, __ATOMIC_RELAXED);
+      while (k < known &&
+        !__atomic_compare_exchange_n(minor, &known, k, true, __ATOMIC_RELAXED, __ATOMIC_RELAXED))
+      {
+      }
+    };
+#pragma omp parallel num_threads(2)
+    {
+      // One thread alone (no second one granted) takes every row in order;
+      // its waits are then always met.
+      const int stride = omp_get_num_threads();
+      Workspace& w = this->Threads[omp_get_thread_num()];
+      for (int j = omp_get_thread_num(); j < m; j += stride)
+      {
+        const int k = rows[j];
+        // Scatter column k of S and walk the row subtree: cholmod_rowfac's
+        // pattern order (mark j: the marks only grow).
+        int top = n;
+        w.flag[k] = j;
+        for (int p = Sp[k]; p < Sp[k + 1]; ++p)
+        {
+          int i = Si[p];
+          if (i > k)
+          {
+            break;
+          }
+          w.values[i] = Sx[p];
+          int length = 0;
+          for (; i < k && i != -1 && w.flag[i] < j; i = parent[i])
+          {
+            w.stack[length++] = i;
+            w.flag[i] = j;
+          }
+          while (length > 0)
+          {
+            w.stack[--top] = w.stack[--length];
+          }
+        }
+        double dk = w.values[k] + 0.0; // + beta, as cholmod_rowfac adds it
+        w.values[k] = 0.0;
+        // Publish the pattern after the row before has published its own,
+        // noting the columns that row is still to store.
+        const int previous = j > 0 ? rows[j - 1] : -1;
+        if (j > 0)
+        {
+          for (int spins = 0; !published[j - 1].load(std::memory_order_acquire); ++spins)
+          {
+            pause(spins);
+          }
+        }
+        for (int s = top; s < n; ++s)
+        {
+          const int pending = this->PendingRow[w.stack[s]].exchange(k, std::memory_order_acq_rel);
+          w.wait[s] = previous >= 0 && pending == previous;
+        }
+        this->PendingRow[k].store(k, std::memory_order_relaxed);
+        published[j].store(1, std::memory_order_release);
+
+        for (int s = top; s < n; ++s)
+        {
+          const int i = w.stack[s];
+          if (w.wait[s])
+          {
+            for (int spins = 0; this->LastRow[i].load(std::memory_order_acquire) < previous;
+                 ++spins)
+            {
+              pause(spins);
+            }
+          }
+          double y = w.values[i];
+          w.values[i] = 0.0;
+          const int count = Lnz[i];
+          int p = Lp[i];
+          const int end = p + count;
+          const double di = Lx[p];
+          double lki;
+          if (static_cast<std::size_t>(i) >= minorNow() || di == 0)
+          {
+            lki = 0.0;
+            p = end;
+          }
+          else
+          {
+            y = y / di;
+            for (++p; p < end; ++p)
+            {
+              w.values[Li[p]] -= Lx[p] * y;
+            }
+            lki = y;
+            dk -= y * y;
+          }
+          Li[p] = k;
+          Lx[p] = lki;
+          Lnz[i] = count + 1;
+          this->LastRow[i].store(k, std::memory_order_release);
+        }
+        const int p = Lp[k];
+        Li[p] = k;
+        if (static_cast<std::size_t>(k) >= minorNow())
+        {
+          dk = 0.0;
+        }
+        else if (dk <= 0.0)
+        {
+          dk = 0.0;
+          lowerMinor(static_cast<std::size_t>(k));
+        }
+        Lx[p] = std::sqrt(dk);
+        this->LastRow[k].store(k, std::memory_order_release);
+      }
+    }
+    return minorNow() == L.n;
+  }
+
+private:
+  // Waits are short (the row before is one column ahead) unless the other
+  // thread lost its core: then give the core up.
+  static void pause(int spins)
+  {
+    if (spins > 4000)
+    {
+      std::this_thread::yield();
+      return;
+    }
+#if defined(__x86_64__) || defined(__i386__)
+    __builtin_ia32_pause();
+#endif
+  }
+  struct Workspace
+  {
+    std::vector<double> values;
+    std::vector<int> flag;
+    std::vector<int> stack;
+    std::vector<char> wait;
+  };
+  std::array<Workspace, 2> Threads;
+  std::unique_ptr<std::atomic<int>[]> PendingRow;
+  std::unique_ptr<std::atomic<int>[]> LastRow;
+  std::size_t Size = 0;
+};
 
 void quietCholmod(cholmod_common& common)
 {
@@ -299,6 +531,7 @@ struct LinearSolver::Internals
   // Workspaces of the further threads of a split factorisation.
   std::vector<std::unique_ptr<cholmod_common>> ThreadCommons;
   RowSplit Split;
+  RemainderPipeline Pipeline;
   // How many threads the last factorisation ran on.
   int FactorisationThreads = 1;
   // analyse() was called for the next solve's pattern.
@@ -434,17 +667,26 @@ struct LinearSolver::Internals
           L,
           common);
       }
-      ok = std::all_of(listOk.begin(), listOk.end(), [](char c) { return c != 0; }) &&
-        cholmod_rowfac_mask2(S,
-          nullptr,
-          beta,
-          split.lists.back()[0],
-          split.lists.back()[1],
-          nullptr,
-          0,
-          split.next.data(),
-          L,
-          &this->Common);
+      ok = std::all_of(listOk.begin(), listOk.end(), [](char c) { return c != 0; });
+      if (ok && this->FactorisationThreads > 1 && split.remainder.size() > 1 &&
+        RemainderPipeline::applies(*S, *L))
+      {
+        ok = this->Pipeline.factorise(*S, split.parent, split.remainder, *L);
+      }
+      else
+      {
+        ok = ok &&
+          cholmod_rowfac_mask2(S,
+            nullptr,
+            beta,
+            split.lists.back()[0],
+            split.lists.back()[1],
+            nullptr,
+            0,
+            split.next.data(),
+            L,
+            &this->Common);
+      }
     }
     // cholmod_factorize's final form.
     ok = ok &&
