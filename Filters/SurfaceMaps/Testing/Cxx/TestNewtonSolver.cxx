@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <functional>
 #include <numeric>
 #include <random>
 
@@ -91,6 +92,21 @@ struct PullEnergy
     return this->weight * d.squaredNorm();
   }
 };
+
+// Whether a trial moved point 0 farther than `fraction` of the move one
+// unconstrained Newton step gives it on a fresh problem: a constraint that
+// only point 0 runs into.
+std::function<bool(const SpherePoints&)> pointZeroMovesBeyond(double fraction)
+{
+  Problem problem(0.05);
+  const Eigen::Vector3d start = problem.points.position(0);
+  LinearSolver solver;
+  newtonStep(problem.objective, problem.points, solver);
+  const double limit = fraction * (problem.points.position(0) - start).norm();
+  EXPECT_GT(limit, 0.0);
+  return [start, limit](const SpherePoints& trial)
+  { return (trial.position(0) - start).norm() > limit; };
+}
 
 } // namespace
 
@@ -332,14 +348,8 @@ TEST(NewtonSolver, ConcurrentTrialsTakeTheOneByOneStepBitForBit)
   // rejected, so the searches run many trials (plain, then held). Slots
   // remember the points of their last passed trial; the slot reported as
   // holding the step taken must hold the final points.
-  Problem free(0.05);
-  const std::vector<Eigen::Vector3d> start = free.points.positions();
-  LinearSolver freeSolver;
-  newtonStep(free.objective, free.points, freeSolver);
-  const double freeMove = (free.points.position(0) - start[0]).norm();
-  ASSERT_GT(freeMove, 0.0);
-  auto passes = [&](const SpherePoints& trial)
-  { return (trial.position(0) - start[0]).norm() < 0.05 * freeMove; };
+  const auto blocked = pointZeroMovesBeyond(0.05);
+  auto passes = [&](const SpherePoints& trial) { return !blocked(trial); };
 
   struct Run
   {
