@@ -53,8 +53,8 @@ struct NewtonOptions
   /// retracts its own copy of the points and calls trialSlots.accept(s, .)
   /// and trialSlots.objective(s). The first trial in order that passes is
   /// taken, so the step is the one-by-one search's (bit for bit when the
-  /// slots compute what slot 0 would); a trial's own evaluation stays on its
-  /// thread.
+  /// slots compute what slot 0 would). Threads beyond one per slot run the
+  /// parallel loops inside each slot's trial.
   TrialSlots trialSlots;
   Logger log;
 };
