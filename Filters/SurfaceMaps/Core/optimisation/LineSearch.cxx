@@ -12,6 +12,17 @@
 namespace surfacemaps
 {
 
+namespace
+{
+// Armijo's sufficient decrease at step t; a non-finite energy (an invalid
+// trial) never passes. Both searches decide with it, so they take the same
+// step.
+bool passesArmijo(double f, double t, double f0, double slope, const LineSearchOptions& options)
+{
+  return std::isfinite(f) && f <= f0 + options.armijo * t * slope;
+}
+} // namespace
+
 LineSearchResult armijoBacktracking(const std::function<double(double)>& energyAt,
   double f0,
   double slope,
@@ -29,7 +40,7 @@ LineSearchResult armijoBacktracking(const std::function<double(double)>& energyA
   {
     const double f = energyAt(t);
     result.trials = trial + 1;
-    if (std::isfinite(f) && f <= f0 + options.armijo * t * slope)
+    if (passesArmijo(f, t, f0, slope, options))
     {
       result.success = true;
       result.step = t;
@@ -67,8 +78,7 @@ LineSearchResult armijoBacktracking(const SlotEnergy& energyAt,
     steps[k] = t;
   }
   std::vector<double> energies(trials, std::numeric_limits<double>::quiet_NaN());
-  auto passes = [&](int k)
-  { return std::isfinite(energies[k]) && energies[k] <= f0 + options.armijo * steps[k] * slope; };
+  auto passes = [&](int k) { return passesArmijo(energies[k], steps[k], f0, slope, options); };
   // Trials are handed out in order; a slot takes the next one as soon as it
   // is free (a trial rejected early is cheap), and none is handed out past
   // the first one known to pass. Every trial before a passing one has been
