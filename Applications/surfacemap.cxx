@@ -4,6 +4,7 @@
 
 #include "vtkLogger.h"
 #include "vtkOutputWindow.h"
+#include "vtkSurfaceMapFilter.h"
 
 #include <cerrno>
 #include <cstdio>
@@ -85,6 +86,9 @@ int main(int argc, char* argv[])
   vtkOutputWindow::GetInstance()->SetDisplayModeToNever();
   vtkLogger::SetStderrVerbosity(vtkLogger::VERBOSITY_OFF);
   surfacemap::installSignalHandlers();
+  // One job per process: freed factor-sized buffers are worth keeping for the
+  // next Newton step rather than returning them to the system.
+  vtkSurfaceMapFilter::KeepFreedMemoryForReuse();
 
   std::vector<std::string> args;
   int verbosity = 0;

@@ -5,6 +5,7 @@
 #include "vtkSurfaceMapsConversion.h"
 #include "vtkSurfaceMapsErrorGuard.h"
 
+#include "base/FreedMemory.h"
 #include "base/ThreadCount.h"
 #include "map/MapPresets.h"
 #include "map/MapSettings.h"
@@ -284,6 +285,11 @@ vtkSurfaceMapSettingDefinition(TargetError, double) vtkSurfaceMapSettingDefiniti
                                                   int vtkSurfaceMapFilter::GetNumberOfSettings()
 {
   return static_cast<int>(table().size());
+}
+
+bool vtkSurfaceMapFilter::KeepFreedMemoryForReuse()
+{
+  return surfacemaps::keepFreedMemoryForReuse();
 }
 
 const char* vtkSurfaceMapFilter::GetSettingName(int i)

@@ -598,6 +598,8 @@ def summary(report):
 def main(argv=None, comm=None):
     """The command line; `comm` (an mpi4py communicator or Serial) when the caller already has one."""
     args = parse_args(argv)
+    # A program that runs maps and exits: keep freed factor-sized buffers for the next Newton step.
+    surfacemaps.vtkSurfaceMapFilter.KeepFreedMemoryForReuse()
     comm = comm or communicator(args.no_mpi)
     if comm is None:
         return 0

@@ -1,6 +1,8 @@
 """The Python package: import, readers, validation, pipelines."""
 
 import os
+import subprocess
+import sys
 
 import pytest
 
@@ -18,6 +20,21 @@ def test_classes_are_exported():
     assert issubclass(surfacemaps.vtkSurfaceMeshReader, vtkAlgorithm)
     assert issubclass(surfacemaps.vtkSurfaceMeshValidator, vtkAlgorithm)
     assert surfacemaps.__version__
+
+
+def test_keep_freed_memory_for_reuse_is_applied_unless_the_user_set_malloc_tunables():
+    # A fresh process each: the setting is process-wide and cannot be undone.
+    def applied(tunables):
+        env = {k: v for k, v in os.environ.items() if k != "GLIBC_TUNABLES"}
+        if tunables:
+            env["GLIBC_TUNABLES"] = tunables
+        code = "import surfacemaps; print(surfacemaps.vtkSurfaceMapFilter.KeepFreedMemoryForReuse())"
+        r = subprocess.run([sys.executable, "-c", code], env=env, capture_output=True, text=True, timeout=60)
+        assert r.returncode == 0, r.stderr
+        return r.stdout.strip()
+
+    assert applied(None) == "True"
+    assert applied("glibc.malloc.trim_threshold=4096") == "False"
 
 
 def test_read_mesh_every_format():
