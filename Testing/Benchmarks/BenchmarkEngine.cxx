@@ -269,7 +269,8 @@ void measureIterations(Objective& objective,
   for (int it = 0; it < iterations; ++it)
   {
     const double t0 = now();
-    const NewtonStepResult step = newtonStep(objective, points, solver, options);
+    ObjectiveProblem problem(objective);
+    const NewtonStepResult step = newtonStep(problem, points, solver, options);
     total += now() - t0;
     derivatives += step.derivativeSeconds;
     solve += step.solveSeconds;
@@ -352,8 +353,9 @@ int main(int argc, char* argv[])
   LinearSolver solver(settings.ordering);
   NewtonOptions options;
   options.maxPointStep = std::tan(75.0 * M_PI / 180.0);
+  ObjectiveProblem newtonProblem(objective);
   const NewtonStepResult first =
-    newtonStep(objective, problem.points, solver, options); // builds the pattern
+    newtonStep(newtonProblem, problem.points, solver, options); // builds the pattern
   measureIterations(objective, problem.points, solver, options, settings.repeat, settings.threads);
   measureDerivatives(objective, problem.points, settings.repeat, settings.threads);
   std::printf("| first iteration (pattern, symbolic analysis) | %d | %.4f s |\n",

@@ -454,8 +454,9 @@ private:
     newton.maxPointStep = this->Options.maxPointStep;
     newton.log = this->Options.log;
     const Triangles& triangles = energy.triangles;
-    newton.acceptTrial = [&triangles](const SpherePoints& p)
-    { return std::lround(sphericalDegree(p.positions(), triangles)) == 1; };
+    ObjectiveProblem problem(objective,
+      [&triangles](const SpherePoints& p)
+      { return std::lround(sphericalDegree(p.positions(), triangles)) == 1; });
     double energyNow = std::numeric_limits<double>::infinity();
     const int most = std::max(iterations, extendedIterations);
     const int squeezeCap = this->Options.squeezedRatio > 0.0 ? squeezedIterations : 0;
@@ -469,7 +470,7 @@ private:
         break;
       }
       term->energy().chordArea = inputAreaOf(points.positions(), triangles);
-      const NewtonStepResult step = newtonStep(objective, points, solver, newton);
+      const NewtonStepResult step = newtonStep(problem, points, solver, newton);
       ++result.newtonIterations;
       result.derivativeSeconds += step.derivativeSeconds;
       result.solveSeconds += step.solveSeconds;

@@ -2,10 +2,9 @@
 
 #include "base/Aborted.h"
 #include "geometry/Predicates.h"
+#include "map/MapNewtonProblem.h"
 #include "map/Remeshing.h"
 #include "optimisation/NewtonSolver.h"
-
-#include <omp.h>
 
 #include <algorithm>
 #include <chrono>
@@ -41,9 +40,8 @@ PhaseRunner::PhaseRunner(CommonTriangulation& T,
   {
     largest = std::max(largest, s.points.size());
   }
-  this->VertexBudget = options.maxVertices > 0
-    ? static_cast<std::size_t>(options.maxVertices)
-    : std::max<std::size_t>(20000, 20 * largest);
+  this->VertexBudget = options.maxVertices > 0 ? static_cast<std::size_t>(options.maxVertices)
+                                               : std::max<std::size_t>(20000, 20 * largest);
 }
 
 double PhaseRunner::landmarkError() const
@@ -87,8 +85,8 @@ MapPhaseReport PhaseRunner::run(const MapPhase& phase)
     if (this->T.mesh().n_vertices() > this->VertexBudget)
     {
       throw std::runtime_error("the common triangulation reached its vertex budget in the " +
-        std::string(name) + " phase (iteration " + std::to_string(it + 1) + "): " +
-        std::to_string(this->T.mesh().n_vertices()) + " vertices, budget " +
+        std::string(name) + " phase (iteration " + std::to_string(it + 1) +
+        "): " + std::to_string(this->T.mesh().n_vertices()) + " vertices, budget " +
         std::to_string(this->VertexBudget) +
         " (MaxVertices, --max-vertices); the target error or error bound asks for a finer T");
     }
@@ -174,76 +172,18 @@ NewtonStepResult PhaseRunner::newtonIteration(const MapPhase& phase,
   MapPhaseReport& report)
 {
   auto clock = Clock::now();
-  CommonTriangulation::Snapshot snapshot;
   SpherePoints points;
-  this->T.snapshot(snapshot, points, phase.lockLandmarks);
-  this->T.buildObjective(snapshot, this->Targets, objective);
-  const int n = this->T.numberOfInputs();
-  std::vector<int> blocks;
-  if (n > 1 && this->Options.blockSolveInputs > 0 && n >= this->Options.blockSolveInputs)
-  {
-    // One block per embedding: SpherePoints numbers the variables in point
-    // order, and the snapshot holds embedding i's points at [i nv, (i + 1) nv).
-    blocks.assign(n + 1, 0);
-    int variables = 0;
-    for (int k = 0; k < points.size(); ++k)
-    {
-      if (k % snapshot.vertices == 0)
-      {
-        blocks[k / snapshot.vertices] = variables;
-      }
-      variables += points.locked(k) ? 0 : 2;
-    }
-    blocks[n] = variables;
-  }
-  solver.setBlocks(std::move(blocks));
+  MapNewtonProblem problem(
+    this->T, this->Targets, objective, points, phase.lockLandmarks, this->Options.blockSolveInputs);
   report.bookkeepingSeconds += secondsSince(clock);
   NewtonOptions newton;
   newton.maxPointStep = this->Options.maxPointStep;
-  newton.acceptTrial = [&](const SpherePoints& trial) { return this->T.update(snapshot, trial); };
-  // A second trial slot: its own copy of the snapshot (update() writes the
-  // lifts and the sample assignment) and an objective over it.
-  CommonTriangulation::Snapshot second;
-  Objective secondObjective;
-  if (omp_get_max_threads() > 1)
-  {
-    second = snapshot;
-    this->T.buildObjective(second, this->Targets, secondObjective);
-    newton.trialSlots.count = 2;
-    newton.trialSlots.objective = [&](int) -> const Objective& { return secondObjective; };
-    newton.trialSlots.accept = [&](int, const SpherePoints& trial)
-    { return this->T.update(second, trial); };
-  }
-  bool raised = false;
-  newton.blockingPoints = [&](const SpherePoints& trial)
-  {
-    if (!raised)
-    {
-      // The first call sees the full Newton step.
-      this->T.raiseBarrier(snapshot, trial);
-      raised = true;
-    }
-    return this->T.invertedCorners(snapshot, trial);
-  };
   newton.log = this->Options.log;
-  const NewtonStepResult step = newtonStep(objective, points, solver, newton);
+  const NewtonStepResult step = newtonStep(problem, points, solver, newton);
   clock = Clock::now();
-  // A slot's lift triangles and sample assignment are its last trial's: when
-  // that trial is the step taken they are current (an update would walk
-  // nowhere), otherwise they are brought to the points now.
-  if (step.takenTrialSlot == 1)
-  {
-    snapshot.liftTriangle.swap(second.liftTriangle);
-    snapshot.lifts.swap(second.lifts);
-    snapshot.sampleTriangle.swap(second.sampleTriangle);
-  }
-  else if (step.takenTrialSlot != 0 && !this->T.update(snapshot, points))
-  {
-    throw std::logic_error("the accepted Newton step left an invalid embedding");
-  }
-  this->T.writeBack(snapshot, points);
+  problem.writeBack(points);
   report.bookkeepingSeconds += secondsSince(clock);
-  report.vertices = snapshot.vertices;
+  report.vertices = problem.vertices();
   return step;
 }
 

@@ -1,10 +1,15 @@
+// SurfaceMaps engine: newtonStep and minimize.
 #include "optimisation/NewtonSolver.h"
 
-#include <algorithm>
+#include "optimisation/HeldPoints.h"
+#include "optimisation/NewtonDirection.h"
+#include "optimisation/TrialSearch.h"
+
+#include <omp.h>
+
 #include <chrono>
 #include <cmath>
 #include <limits>
-#include <sstream>
 
 namespace surfacemaps
 {
@@ -15,9 +20,60 @@ double secondsSince(std::chrono::steady_clock::time_point start)
 {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
+
+// The line search of a step along `direction` and, when its first trial
+// fails and the problem names points that block it, along the step with
+// those held; the better one is taken.
+void searchStep(NewtonProblem& problem,
+  SpherePoints& points,
+  const NewtonDirection& direction,
+  const Eigen::VectorXd& g,
+  const NewtonOptions& options,
+  NewtonStepResult& result)
+{
+  TrialSearch trials(problem, points, omp_get_max_threads() > 1 ? options.trialSlots : 1);
+  const double first = firstStep(points, direction.d, options.maxPointStep);
+  const LineSearchResult plain =
+    trials.search(direction.d, result.energyBefore, direction.slope, first, 0, options.lineSearch);
+  result.lineSearchTrials = plain.trials;
+  LineSearchResult taken = plain;
+  double takenFirst = first;
+  Eigen::VectorXd held;
+  if (!(plain.success && plain.step == first))
+  {
+    held = direction.d;
+    const int count =
+      holdBlockingPoints(problem, points, trials.start(), held, options.maxPointStep);
+    const double heldSlope = held.dot(g);
+    if (count > 0 && heldSlope < 0.0)
+    {
+      const double heldFirst = firstStep(points, held, options.maxPointStep);
+      const LineSearchResult search =
+        trials.search(held, result.energyBefore, heldSlope, heldFirst, 1, options.lineSearch);
+      result.lineSearchTrials += search.trials;
+      if (search.success && (!plain.success || search.energy < plain.energy))
+      {
+        taken = search;
+        takenFirst = heldFirst;
+        result.heldPoints = count;
+      }
+    }
+  }
+  result.stalled = !taken.success || taken.step < 0.01 * takenFirst;
+  if (!taken.success)
+  {
+    trials.restore();
+    return;
+  }
+  const bool holding = result.heldPoints > 0;
+  trials.take(holding ? held : direction.d, taken.step, holding ? 1 : 0);
+  result.step = taken.step;
+  result.energyAfter = taken.energy;
+  result.moved = true;
+}
 } // namespace
 
-NewtonStepResult newtonStep(Objective& objective,
+NewtonStepResult newtonStep(NewtonProblem& problem,
   SpherePoints& points,
   LinearSolver& solver,
   const NewtonOptions& options)
@@ -26,8 +82,9 @@ NewtonStepResult newtonStep(Objective& objective,
   Eigen::VectorXd g;
   Eigen::SparseMatrix<double> H;
   bool patternChanged = false;
+  solver.setBlocks(problem.variableBlocks(points));
   auto clock = std::chrono::steady_clock::now();
-  result.energyBefore = objective.hessian(points,
+  result.energyBefore = problem.objective().hessian(points,
     options.projectionEps,
     g,
     H,
@@ -47,165 +104,33 @@ NewtonStepResult newtonStep(Objective& objective,
     return result;
   }
 
-  Eigen::VectorXd d;
   clock = std::chrono::steady_clock::now();
-  const LinearSolveResult solve = solver.solve(H, -g, d, patternChanged, options.log);
+  const NewtonDirection direction = newtonDirection(g, H, solver, patternChanged, options.log);
   result.solveSeconds = secondsSince(clock);
-  result.regularised = solve.shift > 0.0;
-  double slope = solve.success ? d.dot(g) : 0.0;
-  if (!solve.success || !(slope < 0.0))
-  {
-    d = -g;
-    slope = -g.squaredNorm();
-    result.gradientFallback = true;
-    options.log(Logger::Detail, "Newton direction is no descent direction; using -gradient");
-  }
-  result.decrement = std::sqrt(std::max(0.0, -slope));
-  if (!(slope < 0.0))
+  result.regularised = direction.regularised;
+  result.gradientFallback = direction.gradientFallback;
+  result.decrement = newtonDecrement(direction);
+  if (!(direction.slope < 0.0))
   {
     return result; // zero gradient: nothing to do
   }
-
-  // The first trial step: 1, or less where a point would move farther than the cap.
-  auto firstStep = [&](const Eigen::VectorXd& direction)
-  {
-    double largest = 0.0;
-    for (int i = 0; options.maxPointStep > 0.0 && i < points.size(); ++i)
-    {
-      const int v = points.variable(i);
-      if (v >= 0)
-      {
-        largest = std::max(largest, std::hypot(direction[v], direction[v + 1]));
-      }
-    }
-    return largest > options.maxPointStep ? options.maxPointStep / largest : 1.0;
-  };
-
-  const std::vector<Eigen::Vector3d> start = points.positions();
-  const int slots = options.trialSlots.objective && options.trialSlots.accept
-    ? std::max(1, options.trialSlots.count)
-    : 1;
-  // Slot s >= 1 retracts its own copy of the points (same bases as slot 0's).
-  std::vector<SpherePoints> slotPoints(slots - 1, points);
-  // Per slot, the last trial it evaluated: along the plain or the held step,
-  // its step, and whether its check passed (so whatever it computed is
-  // current).
-  struct LastTrial
-  {
-    bool held = false;
-    double step = 0.0;
-    bool accepted = false;
-  };
-  std::vector<LastTrial> last(slots);
-  auto trialIn = [&](int slot, const Eigen::VectorXd& direction, double t)
-  {
-    SpherePoints& trial = slot == 0 ? points : slotPoints[slot - 1];
-    trial.setPositions(start);
-    trial.retract(direction, t);
-    LastTrial& record = last[slot];
-    record.held = &direction != &d;
-    record.step = t;
-    record.accepted = slot == 0 ? !options.acceptTrial || options.acceptTrial(trial)
-                                : options.trialSlots.accept(slot, trial);
-    if (!record.accepted)
-    {
-      return std::numeric_limits<double>::infinity();
-    }
-    return (slot == 0 ? objective : options.trialSlots.objective(slot)).value(trial);
-  };
-  auto search = [&](const Eigen::VectorXd& direction, double directionSlope, double first)
-  {
-    return armijoBacktracking([&](int slot, double t) { return trialIn(slot, direction, t); },
-      slots,
-      result.energyBefore,
-      directionSlope,
-      first,
-      options.lineSearch);
-  };
   clock = std::chrono::steady_clock::now();
-  const double initialStep = firstStep(d);
-  const LineSearchResult ls = search(d, slope, initialStep);
-  result.lineSearchTrials = ls.trials;
-  LineSearchResult taken = ls;
-  double takenFirst = initialStep;
-  bool takenHeld = false;
-
-  if (options.blockingPoints && !(ls.success && ls.step == initialStep))
-  {
-    // Hold the points that make the first trial invalid, and those that do
-    // once these are held, and so on; then search along what is left.
-    Eigen::VectorXd held = d;
-    int count = 0;
-    const int rounds = 20;
-    for (int round = 0; round < rounds; ++round)
-    {
-      points.setPositions(start);
-      points.retract(held, firstStep(held));
-      int added = 0;
-      for (const int i : options.blockingPoints(points))
-      {
-        const int v = points.variable(i);
-        if (v >= 0 && (held[v] != 0.0 || held[v + 1] != 0.0))
-        {
-          held[v] = held[v + 1] = 0.0;
-          ++added;
-        }
-      }
-      count += added;
-      if (added == 0)
-      {
-        break;
-      }
-    }
-    const double heldSlope = held.dot(g);
-    if (count > 0 && heldSlope < 0.0)
-    {
-      const double heldFirst = firstStep(held);
-      const LineSearchResult heldSearch = search(held, heldSlope, heldFirst);
-      result.lineSearchTrials += heldSearch.trials;
-      if (heldSearch.success && (!ls.success || heldSearch.energy < ls.energy))
-      {
-        taken = heldSearch;
-        takenFirst = heldFirst;
-        d = held;
-        takenHeld = true;
-        result.heldPoints = count;
-      }
-    }
-  }
-  result.stalled = !taken.success || taken.step < 0.01 * takenFirst;
-
-  points.setPositions(start);
-  if (taken.success)
-  {
-    // The same operations as the trial's, so the same points bit for bit.
-    points.retract(d, taken.step);
-    for (int slot = 0; slot < slots; ++slot)
-    {
-      const LastTrial& record = last[slot];
-      if (record.accepted && record.held == takenHeld && record.step == taken.step)
-      {
-        result.takenTrialSlot = slot;
-      }
-    }
-    points.recentreBases();
-    result.step = taken.step;
-    result.energyAfter = taken.energy;
-    result.moved = true;
-  }
+  searchStep(problem, points, direction, g, options, result);
   result.lineSearchSeconds = secondsSince(clock);
   return result;
 }
 
-MinimizeResult minimize(Objective& objective, SpherePoints& points, const MinimizeOptions& options)
+MinimizeResult minimize(NewtonProblem& problem,
+  SpherePoints& points,
+  const MinimizeOptions& options)
 {
   MinimizeResult result;
   LinearSolver solver;
-  result.initialEnergy = objective.value(points);
+  result.initialEnergy = problem.objective().value(points);
   result.finalEnergy = result.initialEnergy;
   for (int it = 0; it < options.maxIterations; ++it)
   {
-    const NewtonStepResult step = newtonStep(objective, points, solver, options.newton);
+    const NewtonStepResult step = newtonStep(problem, points, solver, options.newton);
     result.iterations = it + 1;
     result.finalEnergy = step.energyAfter;
     if (options.callback && !options.callback(it, step))

@@ -1,30 +1,18 @@
-// SurfaceMaps engine: projected Newton on sphere points, step by step.
+// SurfaceMaps engine: projected Newton on sphere points. Owns the step as a
+// composition of its pieces (NewtonDirection, HeldPoints, TrialSearch) and
+// the loop of steps (minimize).
 #pragma once
 
 #include "base/Log.h"
 #include "optimisation/LineSearch.h"
 #include "optimisation/LinearSolver.h"
-#include "optimisation/Objective.h"
+#include "optimisation/NewtonProblem.h"
 #include "optimisation/SpherePoints.h"
 
 #include <functional>
 
 namespace surfacemaps
 {
-
-/// Line-search trials evaluated concurrently, one per thread (see
-/// NewtonOptions::trialSlots).
-struct TrialSlots
-{
-  /// Trials evaluated at once; 1: one by one.
-  int count = 1;
-  /// Slot s >= 1's objective: the same energy as the step's objective, over
-  /// the slot's own copy of whatever the trial check updates.
-  std::function<const Objective&(int slot)> objective;
-  /// Slot s >= 1's trial check (acceptTrial's counterpart), touching only
-  /// the slot's own state, so that slots can run at once.
-  std::function<bool(int slot, const SpherePoints&)> accept;
-};
 
 struct NewtonOptions
 {
@@ -35,27 +23,11 @@ struct NewtonOptions
   /// direction) to respect it. 0 = no cap.
   double maxPointStep = 0.0;
   LineSearchOptions lineSearch;
-  /// Extra validity check of trial positions (e.g. the embedding degree);
-  /// false rejects the trial like an infinite energy. Optional.
-  std::function<bool(const SpherePoints&)> acceptTrial;
-  /// Optional: the points whose trial positions make the trial invalid (e.g.
-  /// the corners of triangles that invert). When the first trial of the
-  /// Newton step is rejected, a second line search runs along the step with
-  /// these points held still (found at the first trial, repeatedly, until
-  /// that trial has none), and the better of the two steps is taken. A step
-  /// is cut for every point by the few points that run into a constraint
-  /// (on surface maps, a handful of triangles that invert on a sphere within
-  /// a few per cent of the step); holding those lets the others move on.
-  std::function<std::vector<int>(const SpherePoints&)> blockingPoints;
-  /// Optional: line-search trials evaluated trialSlots.count at a time, one
-  /// per thread, each slot taking the next trial in order when it is free.
-  /// Slot 0 is the step's own points, objective and acceptTrial; slot s >= 1
-  /// retracts its own copy of the points and calls trialSlots.accept(s, .)
-  /// and trialSlots.objective(s). The first trial in order that passes is
-  /// taken, so the step is the one-by-one search's (bit for bit when the
-  /// slots compute what slot 0 would). Threads beyond one per slot run the
-  /// parallel loops inside each slot's trial.
-  TrialSlots trialSlots;
+  /// Line-search trials evaluated at once, one thread each, when OpenMP has
+  /// more than one thread and the problem gives trial copies
+  /// (NewtonProblem::trialCopy); threads beyond one per slot run the
+  /// parallel loops inside each trial. The step is the one-by-one search's.
+  int trialSlots = 2;
   Logger log;
 };
 
@@ -75,18 +47,13 @@ struct NewtonStepResult
   bool regularised = false;
   /// The points moved (line search succeeded).
   bool moved = false;
-  /// The trial slot whose last trial is the step taken, with its check
-  /// passed (acceptTrial for slot 0, trialSlots.accept otherwise): what that
-  /// check computed from the trial's points (e.g. where they lie on the
-  /// inputs) holds for the points as they are now. -1: no slot's.
-  int takenTrialSlot = -1;
   /// Points held still in the step taken (0: the plain Newton step).
   int heldPoints = 0;
   /// The line search failed or cut its first trial by more than 100 times
   /// (of the step taken, plain or with points held). On a surface map the
   /// cause is mostly a few triangles that invert on a sphere early in the
   /// step (the terms measure lifted triangles and do not see them closing;
-  /// blockingPoints holds their corners), otherwise a kink: elements whose
+  /// NewtonProblem::blockingPoints names their corners), otherwise a kink: elements whose
   /// energy leaves their derivatives' model within the step (T's vertices
   /// are lifted onto the inputs' flat triangles, so the mesh and map terms
   /// bend where a vertex crosses an input edge on the sphere).
@@ -99,10 +66,12 @@ struct NewtonStepResult
 };
 
 /// One projected-Newton step on all unlocked points: derivatives with
-/// projected element Hessians, sparse solve H d = -g, Armijo line search on
-/// the retraction, bases re-centred. Points stay where they are if no trial
-/// is accepted.
-NewtonStepResult newtonStep(Objective& objective,
+/// projected element Hessians (newtonDirection), the Armijo line search on
+/// the retraction (TrialSearch), when its first trial fails a second one with
+/// the blocking points held (holdBlockingPoints) and the better step taken,
+/// bases re-centred. Points stay where they are if no trial is accepted. The
+/// problem's state is left that of the final points.
+NewtonStepResult newtonStep(NewtonProblem& problem,
   SpherePoints& points,
   LinearSolver& solver,
   const NewtonOptions& options = NewtonOptions());
@@ -129,6 +98,8 @@ struct MinimizeResult
 
 /// Newton steps until the decrement is below the tolerance, no step is
 /// possible, the iteration cap is reached, or the callback aborts.
-MinimizeResult minimize(Objective& objective, SpherePoints& points, const MinimizeOptions& options);
+MinimizeResult minimize(NewtonProblem& problem,
+  SpherePoints& points,
+  const MinimizeOptions& options);
 
 } // namespace surfacemaps

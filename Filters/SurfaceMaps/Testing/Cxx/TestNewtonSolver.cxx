@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <functional>
+#include <memory>
 #include <numeric>
 #include <random>
 
@@ -93,6 +94,50 @@ struct PullEnergy
   }
 };
 
+// A problem over an objective whose trial check remembers the points of the
+// last trial it passed, as a caller's point location would; optionally names
+// blocking points and gives trial copies (each with its own memory).
+struct CheckedProblem : NewtonProblem
+{
+  Objective& energy;
+  std::function<bool(const SpherePoints&)> check;
+  std::function<std::vector<int>(const SpherePoints&)> blocking;
+  bool copies = false;
+  std::vector<Eigen::Vector3d> lastPassed;
+
+  CheckedProblem(Objective& objective, std::function<bool(const SpherePoints&)> check)
+    : energy(objective)
+    , check(std::move(check))
+  {
+  }
+  Objective& objective() override { return this->energy; }
+  bool accept(const SpherePoints& trial) override
+  {
+    const bool ok = this->check(trial);
+    if (ok)
+    {
+      this->lastPassed = trial.positions();
+    }
+    return ok;
+  }
+  std::vector<int> blockingPoints(const SpherePoints& trial) override
+  {
+    return this->blocking ? this->blocking(trial) : std::vector<int>{};
+  }
+  std::unique_ptr<NewtonProblem> trialCopy() override
+  {
+    if (!this->copies)
+    {
+      return nullptr;
+    }
+    return std::make_unique<CheckedProblem>(this->energy, this->check);
+  }
+  void adopt(NewtonProblem& copy, const SpherePoints&) override
+  {
+    this->lastPassed = static_cast<CheckedProblem&>(copy).lastPassed;
+  }
+};
+
 // Whether a trial moved point 0 farther than `fraction` of the move one
 // unconstrained Newton step gives it on a fresh problem: a constraint that
 // only point 0 runs into.
@@ -101,7 +146,8 @@ std::function<bool(const SpherePoints&)> pointZeroMovesBeyond(double fraction)
   Problem problem(0.05);
   const Eigen::Vector3d start = problem.points.position(0);
   LinearSolver solver;
-  newtonStep(problem.objective, problem.points, solver);
+  ObjectiveProblem plain(problem.objective);
+  newtonStep(plain, problem.points, solver);
   const double limit = fraction * (problem.points.position(0) - start).norm();
   EXPECT_GT(limit, 0.0);
   return [start, limit](const SpherePoints& trial)
@@ -132,7 +178,8 @@ TEST(NewtonSolver, EqualAreasUnderTheBarrier)
     }
     return true;
   };
-  const MinimizeResult result = minimize(problem.objective, problem.points, options);
+  ObjectiveProblem newton(problem.objective);
+  const MinimizeResult result = minimize(newton, problem.points, options);
 
   EXPECT_TRUE(result.converged);
   // Measured: 14 steps (the decrement falls from 3.3 to 8e-5; the energy
@@ -153,7 +200,8 @@ TEST(NewtonSolver, StepCapScalesTheWholeStep)
   NewtonOptions options;
   options.maxPointStep = 1e-3;
   const std::vector<Eigen::Vector3d> before = problem.points.positions();
-  const NewtonStepResult step = newtonStep(problem.objective, problem.points, solver, options);
+  ObjectiveProblem newton(problem.objective);
+  const NewtonStepResult step = newtonStep(newton, problem.points, solver, options);
   ASSERT_TRUE(step.moved);
   EXPECT_LT(step.energyAfter, step.energyBefore);
   double largest = 0.0;
@@ -182,27 +230,30 @@ TEST(NewtonSolver, StallWhenTheLineSearchCutsTheStep)
     return largest;
   };
   LinearSolver solver;
-  NewtonStepResult step = newtonStep(free.objective, free.points, solver);
+  ObjectiveProblem plain(free.objective);
+  NewtonStepResult step = newtonStep(plain, free.points, solver);
   ASSERT_TRUE(step.moved);
   EXPECT_FALSE(step.stalled);
   const double freeMove = largestMove(free.points);
   ASSERT_GT(freeMove, 0.0);
 
   Problem kinked(0.05);
-  NewtonOptions options;
-  options.acceptTrial = [&](const SpherePoints& trial)
-  { return largestMove(trial) < 1e-3 * freeMove; };
+  ObjectiveProblem kink(kinked.objective,
+    [&](const SpherePoints& trial) { return largestMove(trial) < 1e-3 * freeMove; });
   LinearSolver other;
-  step = newtonStep(kinked.objective, kinked.points, other, options);
+  step = newtonStep(kink, kinked.points, other);
   EXPECT_TRUE(step.moved);
   EXPECT_TRUE(step.stalled);
 
+  // Every trial that moves a point is rejected.
   Problem rejected(0.05);
-  options.acceptTrial = [](const SpherePoints&) { return false; };
+  ObjectiveProblem wall(
+    rejected.objective, [&](const SpherePoints& trial) { return trial.positions() == start; });
   LinearSolver third;
-  step = newtonStep(rejected.objective, rejected.points, third, options);
+  step = newtonStep(wall, rejected.points, third);
   EXPECT_FALSE(step.moved);
   EXPECT_TRUE(step.stalled);
+  EXPECT_EQ(rejected.points.positions(), start);
 }
 
 TEST(NewtonSolver, PointsThatBlockTheStepAreHeld)
@@ -213,25 +264,27 @@ TEST(NewtonSolver, PointsThatBlockTheStepAreHeld)
   Problem free(0.05);
   const std::vector<Eigen::Vector3d> start = free.points.positions();
   LinearSolver solver;
-  newtonStep(free.objective, free.points, solver);
+  ObjectiveProblem unconstrained(free.objective);
+  newtonStep(unconstrained, free.points, solver);
   const double freeMove = (free.points.position(0) - start[0]).norm();
   ASSERT_GT(freeMove, 0.0);
   auto pointZeroMoved = [&](const SpherePoints& trial)
   { return (trial.position(0) - start[0]).norm() > 1e-3 * freeMove; };
+  auto passes = [&](const SpherePoints& trial) { return !pointZeroMoved(trial); };
 
-  NewtonOptions options;
-  options.acceptTrial = [&](const SpherePoints& trial) { return !pointZeroMoved(trial); };
   Problem cut(0.05);
+  CheckedProblem unknown(cut.objective, passes);
   LinearSolver other;
-  const NewtonStepResult plain = newtonStep(cut.objective, cut.points, other, options);
+  const NewtonStepResult plain = newtonStep(unknown, cut.points, other);
   EXPECT_TRUE(plain.stalled);
   EXPECT_EQ(plain.heldPoints, 0);
 
-  options.blockingPoints = [&](const SpherePoints& trial)
-  { return pointZeroMoved(trial) ? std::vector<int>{ 0 } : std::vector<int>{}; };
   Problem held(0.05);
+  CheckedProblem told(held.objective, passes);
+  told.blocking = [&](const SpherePoints& trial)
+  { return pointZeroMoved(trial) ? std::vector<int>{ 0 } : std::vector<int>{}; };
   LinearSolver third;
-  const NewtonStepResult step = newtonStep(held.objective, held.points, third, options);
+  const NewtonStepResult step = newtonStep(told, held.points, third);
   ASSERT_TRUE(step.moved);
   EXPECT_FALSE(step.stalled);
   EXPECT_EQ(step.heldPoints, 1);
@@ -248,9 +301,11 @@ TEST(NewtonSolver, PointsThatBlockTheStepAreHeld)
 TEST(NewtonSolver, TrialCheckAndAbort)
 {
   Problem problem(0.05);
+  const std::vector<Eigen::Vector3d> start = problem.points.positions();
+  ObjectiveProblem wall(
+    problem.objective, [&](const SpherePoints& trial) { return trial.positions() == start; });
   MinimizeOptions options;
-  options.newton.acceptTrial = [](const SpherePoints&) { return false; }; // reject everything
-  MinimizeResult result = minimize(problem.objective, problem.points, options);
+  MinimizeResult result = minimize(wall, problem.points, options);
   EXPECT_FALSE(result.converged);
   EXPECT_EQ(result.iterations, 1);
   EXPECT_NEAR(result.finalEnergy, result.initialEnergy, 1e-12 * result.initialEnergy);
@@ -259,7 +314,8 @@ TEST(NewtonSolver, TrialCheckAndAbort)
   MinimizeOptions abort;
   int calls = 0;
   abort.callback = [&](int, const NewtonStepResult&) { return ++calls < 2; };
-  result = minimize(other.objective, other.points, abort);
+  ObjectiveProblem free(other.objective);
+  result = minimize(free, other.points, abort);
   EXPECT_TRUE(result.aborted);
   EXPECT_EQ(result.iterations, 2);
 }
@@ -273,39 +329,30 @@ TEST(NewtonSolver, LockedPointsStayPut)
   const Eigen::Vector3d p0 = problem.points.position(0), p17 = problem.points.position(17);
   MinimizeOptions options;
   options.maxIterations = 5;
-  minimize(problem.objective, problem.points, options);
+  ObjectiveProblem newton(problem.objective);
+  minimize(newton, problem.points, options);
   EXPECT_EQ(problem.points.position(0), p0);
   EXPECT_EQ(problem.points.position(17), p17);
 }
 
-TEST(NewtonSolver, TakenTrialSlotMeansTheTrialsPointsAreTheFinalOnes)
+TEST(NewtonSolver, TheProblemsLastCheckIsOfTheFinalPoints)
 {
-  // acceptTrial remembers the points of the last trial it passed, as a
-  // caller's point location would. takenTrialSlot 0 must promise that these
-  // are the final points, bit for bit.
-  std::vector<Eigen::Vector3d> lastPassed;
+  // The problem remembers the points of the last trial its check passed, as
+  // a caller's point location would: after the step they must be the final
+  // points bit for bit, whichever trial the step took.
   int calls = 0;
   int rejectCall = -1;
-  NewtonOptions options;
-  options.acceptTrial = [&](const SpherePoints& trial)
-  {
-    if (++calls == rejectCall)
-    {
-      return false;
-    }
-    lastPassed = trial.positions();
-    return true;
-  };
-  // One Newton step on a fresh problem; whether its final points are the
-  // last passed trial's.
-  bool finalMatches = false;
+  auto check = [&](const SpherePoints&) { return ++calls != rejectCall; };
+  std::function<std::vector<int>(const SpherePoints&)> blocking;
   auto stepOnce = [&]()
   {
     calls = 0;
     Problem problem(0.05);
+    CheckedProblem newton(problem.objective, check);
+    newton.blocking = blocking;
     LinearSolver solver;
-    const NewtonStepResult step = newtonStep(problem.objective, problem.points, solver, options);
-    finalMatches = lastPassed == problem.points.positions();
+    const NewtonStepResult step = newtonStep(newton, problem.points, solver);
+    EXPECT_EQ(newton.lastPassed, problem.points.positions());
     return step;
   };
 
@@ -313,23 +360,19 @@ TEST(NewtonSolver, TakenTrialSlotMeansTheTrialsPointsAreTheFinalOnes)
   NewtonStepResult step = stepOnce();
   ASSERT_TRUE(step.moved);
   EXPECT_EQ(step.lineSearchTrials, 1);
-  EXPECT_EQ(step.takenTrialSlot, 0);
-  EXPECT_TRUE(finalMatches);
 
   // The first trial rejected, so the plain search takes a shorter step and a
   // second search runs with points held. Holding point 0 gives the better
   // step: taken, and its trial was the last.
   rejectCall = 1;
-  options.blockingPoints = [](const SpherePoints&) { return std::vector<int>{ 0 }; };
+  blocking = [](const SpherePoints&) { return std::vector<int>{ 0 }; };
   step = stepOnce();
   ASSERT_TRUE(step.moved);
   EXPECT_EQ(step.heldPoints, 1);
-  EXPECT_EQ(step.takenTrialSlot, 0);
-  EXPECT_TRUE(finalMatches);
 
   // Holding half of the points gives the worse step: the plain one is taken,
-  // but the held search's trials came after it.
-  options.blockingPoints = [](const SpherePoints& trial)
+  // although the held search's trials came after it.
+  blocking = [](const SpherePoints& trial)
   {
     std::vector<int> half(trial.size() / 2);
     std::iota(half.begin(), half.end(), 0);
@@ -338,16 +381,14 @@ TEST(NewtonSolver, TakenTrialSlotMeansTheTrialsPointsAreTheFinalOnes)
   step = stepOnce();
   ASSERT_TRUE(step.moved);
   EXPECT_EQ(step.heldPoints, 0);
-  EXPECT_EQ(step.takenTrialSlot, -1);
-  EXPECT_FALSE(finalMatches);
 }
 
 TEST(NewtonSolver, ConcurrentTrialsTakeTheOneByOneStepBitForBit)
 {
   // Trials that move point 0 farther than a fraction of its free move are
-  // rejected, so the searches run many trials (plain, then held). Slots
-  // remember the points of their last passed trial; the slot reported as
-  // holding the step taken must hold the final points.
+  // rejected, so the searches run many trials (plain, then held). Each slot's
+  // problem remembers the points of its last passed trial; the problem must
+  // end with the final points, adopted from whichever slot took the step.
   const auto blocked = pointZeroMovesBeyond(0.05);
   auto passes = [&](const SpherePoints& trial) { return !blocked(trial); };
 
@@ -355,46 +396,25 @@ TEST(NewtonSolver, ConcurrentTrialsTakeTheOneByOneStepBitForBit)
   {
     NewtonStepResult step;
     std::vector<Eigen::Vector3d> final;
-    std::vector<Eigen::Vector3d> inTakenSlot;
+    std::vector<Eigen::Vector3d> remembered;
   };
   auto runWith = [&](int slots, bool hold)
   {
-    std::vector<std::vector<Eigen::Vector3d>> lastPassed(slots);
-    NewtonOptions options;
-    options.acceptTrial = [&](const SpherePoints& trial)
-    {
-      const bool ok = passes(trial);
-      if (ok)
-      {
-        lastPassed[0] = trial.positions();
-      }
-      return ok;
-    };
+    Problem problem(0.05);
+    CheckedProblem newton(problem.objective, passes);
+    newton.copies = true;
     if (hold)
     {
-      options.blockingPoints = [&](const SpherePoints& trial)
+      newton.blocking = [&](const SpherePoints& trial)
       { return passes(trial) ? std::vector<int>{} : std::vector<int>{ 0 }; };
     }
-    Problem problem(0.05);
-    options.trialSlots.count = slots;
-    options.trialSlots.objective = [&](int) -> const Objective& { return problem.objective; };
-    options.trialSlots.accept = [&](int slot, const SpherePoints& trial)
-    {
-      const bool ok = passes(trial);
-      if (ok)
-      {
-        lastPassed[slot] = trial.positions();
-      }
-      return ok;
-    };
+    NewtonOptions options;
+    options.trialSlots = slots;
     LinearSolver solver;
     Run run;
-    run.step = newtonStep(problem.objective, problem.points, solver, options);
+    run.step = newtonStep(newton, problem.points, solver, options);
     run.final = problem.points.positions();
-    if (run.step.takenTrialSlot >= 0)
-    {
-      run.inTakenSlot = lastPassed[run.step.takenTrialSlot];
-    }
+    run.remembered = newton.lastPassed;
     return run;
   };
 
@@ -404,6 +424,7 @@ TEST(NewtonSolver, ConcurrentTrialsTakeTheOneByOneStepBitForBit)
     ASSERT_TRUE(one.step.moved);
     ASSERT_GT(one.step.lineSearchTrials, 4);
     EXPECT_EQ(one.step.heldPoints > 0, hold);
+    EXPECT_EQ(one.remembered, one.final);
     for (const int slots : { 2, 3 })
     {
       const Run many = runWith(slots, hold);
@@ -412,10 +433,7 @@ TEST(NewtonSolver, ConcurrentTrialsTakeTheOneByOneStepBitForBit)
       EXPECT_EQ(many.step.energyAfter, one.step.energyAfter);
       EXPECT_EQ(many.step.lineSearchTrials, one.step.lineSearchTrials);
       EXPECT_EQ(many.step.heldPoints, one.step.heldPoints);
-      if (many.step.takenTrialSlot >= 0)
-      {
-        EXPECT_EQ(many.inTakenSlot, many.final);
-      }
+      EXPECT_EQ(many.remembered, many.final);
     }
   }
 }
