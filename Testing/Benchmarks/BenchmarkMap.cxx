@@ -227,8 +227,9 @@ void printMetrics(const std::vector<MapInput>& inputs, const SurfaceMapResult& r
   for (std::size_t j = 1; j < inputs.size(); ++j)
   {
     const MapMetrics approx = measureMap(r.lifted[0], r.lifted[j], r.triangles);
-    const MapMetrics exact =
-      measureMap(inputs[0].mesh.points, r.mappedFirst[j], inputs[0].mesh.triangles());
+    const MapMetrics exact = measureMap(inputs[0].mesh.points,
+      mappedVertices(r, inputs, 0, static_cast<int>(j)),
+      inputs[0].mesh.triangles());
     double mean0 = 0.0, meanj = 0.0;
     const double min0 = minMeanMinAngle(r.lifted[0], r.triangles, &mean0);
     const double minj = minMeanMinAngle(r.lifted[j], r.triangles, &meanj);

@@ -88,27 +88,6 @@ double keptLandmarkError(const SurfaceMapResult& result,
   return error;
 }
 
-/// The exact map on input 0's vertices: f_0, then T's embedding 0 inverted
-/// (barycentric in T), T's embedding j, f_j inverted (MapTransfer.h).
-void mapFirstInput(const std::vector<MapInput>& inputs,
-  const std::vector<PreparedInput>& surfaces,
-  SurfaceMapResult& result)
-{
-  const int n = static_cast<int>(inputs.size());
-  result.mappedFirst.assign(n, {});
-  result.mappedFirstSource.assign(n, {});
-  for (int j = 0; j < n; ++j)
-  {
-    result.mappedFirstSource[j] = transferVertices(result, inputs, 0, j);
-    result.mappedFirst[j].reserve(result.mappedFirstSource[j].size());
-    for (const SurfacePoint& p : result.mappedFirstSource[j])
-    {
-      result.mappedFirst[j].push_back(
-        evaluateSurfacePoint(inputs[j].mesh.points, surfaces[j].triangles, p));
-    }
-  }
-}
-
 /// The final energy of T, by term.
 MapEnergies energyByTerm(CommonTriangulation& T)
 {
@@ -208,7 +187,6 @@ SurfaceMapResult computeSurfaceMap(const std::vector<MapInput>& inputs,
   {
     result.landmarkError = keptLandmarkError(result, inputs, landmarks);
   }
-  mapFirstInput(inputs, surfaces, result);
   result.energy = energyByTerm(T);
   result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return result;
@@ -241,6 +219,22 @@ std::vector<SurfacePoint> transferVertices(const SurfaceMapResult& map,
     map.inputSpherePositions[to],
     inputs[to].mesh.triangles(),
     options);
+}
+
+std::vector<Eigen::Vector3d> mappedVertices(const SurfaceMapResult& map,
+  const std::vector<MapInput>& inputs,
+  int from,
+  int to)
+{
+  const std::vector<SurfacePoint> located = transferVertices(map, inputs, from, to);
+  const auto triangles = inputs[to].mesh.triangles();
+  std::vector<Eigen::Vector3d> points;
+  points.reserve(located.size());
+  for (const SurfacePoint& p : located)
+  {
+    points.push_back(evaluateSurfacePoint(inputs[to].mesh.points, triangles, p));
+  }
+  return points;
 }
 
 } // namespace surfacemaps

@@ -41,10 +41,6 @@ struct SurfaceMapResult
   std::vector<int> landmarks;
   /// Per input: certificate of T's embedding g_i (all must be bijective).
   std::vector<BijectivityCertificate> certificates;
-  /// Per input j: the exact map applied to input 0's vertices (input 0 on
-  /// input j, original coordinates of j) and where those points lie on j.
-  std::vector<std::vector<Eigen::Vector3d>> mappedFirst;
-  std::vector<std::vector<SurfacePoint>> mappedFirstSource;
   MapEnergies energy;
   std::vector<MapPhaseReport> phases;
   /// Per input: the largest distance of an input vertex (of the
@@ -73,8 +69,15 @@ SurfaceMapResult computeSurfaceMap(const std::vector<MapInput>& inputs,
 /// The vertices of input `from` mapped onto input `to` by the exact map of
 /// `map` (computed from `inputs`): transferPoints (MapTransfer.h) with
 /// f_from's points, the lifts of T on `to` as start triangles, the identity
-/// when from == to. With from = 0 this is SurfaceMapResult::mappedFirstSource[to].
+/// when from == to.
 std::vector<SurfacePoint> transferVertices(const SurfaceMapResult& map,
+  const std::vector<MapInput>& inputs,
+  int from,
+  int to);
+
+/// The vertices of input `from` mapped onto input `to` (transferVertices),
+/// as points in input `to`'s original coordinates: input `from` on input `to`.
+std::vector<Eigen::Vector3d> mappedVertices(const SurfaceMapResult& map,
   const std::vector<MapInput>& inputs,
   int from,
   int to);

@@ -1,6 +1,6 @@
 // The surface map schedule on small inputs with short schedules.
-#include "geometry/MapMetrics.h"
 #include "MapTestInputs.h"
+#include "geometry/MapMetrics.h"
 #include "geometry/SphereLocator.h"
 #include "map/SurfaceMap.h"
 
@@ -133,7 +133,7 @@ TEST(SurfaceMap, SingleInputIsABijectiveRemeshing)
   expectCertified(r);
   ASSERT_EQ(r.lifted.size(), 1u);
   EXPECT_GT(r.lifted[0].size(), 20u);
-  EXPECT_EQ(r.mappedFirst[0], inputs[0].mesh.points); // the identity, exactly
+  EXPECT_EQ(mappedVertices(r, inputs, 0, 0), inputs[0].mesh.points); // the identity, exactly
   // Every lifted vertex lies on its source triangle of the input.
   for (std::size_t v = 0; v < r.lifted[0].size(); ++v)
   {
@@ -156,7 +156,7 @@ TEST(SurfaceMap, ThreeInputsShareOneCertifiedTriangulation)
   for (int i = 0; i < 3; ++i)
   {
     EXPECT_EQ(r.lifted[i].size(), r.lifted[0].size());
-    EXPECT_EQ(r.mappedFirst[i].size(), inputs[0].mesh.points.size());
+    EXPECT_EQ(mappedVertices(r, inputs, 0, i).size(), inputs[0].mesh.points.size());
     const MapMetrics m = measureMap(r.lifted[0], r.lifted[i], r.triangles);
     EXPECT_EQ(m.degenerateTriangles, 0);
     EXPECT_LT(m.symmetricDirichlet, 2.0);
