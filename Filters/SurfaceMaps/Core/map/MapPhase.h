@@ -19,6 +19,18 @@ enum class PhaseKind
 /// "landmarks", "coarse", "fine", "refine", "bound".
 const char* phaseName(PhaseKind kind);
 
+/// When a phase ends before its iteration cap.
+enum class StopRule
+{
+  /// No edit lowers the energy and the Newton decrement is below tolerance.
+  Settled,
+  /// Every landmark is within the tolerance of its target.
+  LandmarksReached,
+  /// Every landmark within the tolerance, then flips and Newton steps only
+  /// (T keeps its vertices) until settled as well.
+  LandmarksReachedThenSettled,
+};
+
 /// Everything the phase runner needs to run one phase.
 struct MapPhase
 {
@@ -33,12 +45,7 @@ struct MapPhase
   double sizingError = 0.0;
   /// Landmark vertices stay where they are (locked out of the Newton step).
   bool lockLandmarks = false;
-  /// The landmark phase's end: when every landmark is within the tolerance
-  /// (otherwise: no edit helps and the Newton decrement is small).
-  bool untilLandmarks = false;
-  /// With untilLandmarks: once reached, go on with flips and Newton steps
-  /// only (no splits or collapses) until that has settled too.
-  bool relaxAfterLandmarks = false;
+  StopRule stop = StopRule::Settled;
 };
 
 /// What one phase did.

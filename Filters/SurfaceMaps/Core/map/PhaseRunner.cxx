@@ -65,7 +65,6 @@ double PhaseRunner::landmarkError() const
 MapPhaseReport PhaseRunner::run(const MapPhase& phase)
 {
   const auto start = Clock::now();
-  const char* name = phaseName(phase.kind);
   if (phase.sizingError > 0.0)
   {
     setCurvatureSizing(
@@ -79,17 +78,11 @@ MapPhaseReport PhaseRunner::run(const MapPhase& phase)
   LinearSolver solver;
   Objective objective;
   bool reached = false;
-  for (int it = 0; it < phase.iterations; ++it)
+  for (int it = 0; it < phase.iterations && !report.converged; ++it)
   {
-    const RemeshingResult edits = this->remeshing(phase.untilLandmarks && reached, report);
-    if (this->T.mesh().n_vertices() > this->VertexBudget)
-    {
-      throw std::runtime_error("the common triangulation reached its vertex budget in the " +
-        std::string(name) + " phase (iteration " + std::to_string(it + 1) +
-        "): " + std::to_string(this->T.mesh().n_vertices()) + " vertices, budget " +
-        std::to_string(this->VertexBudget) +
-        " (MaxVertices, --max-vertices); the target error or error bound asks for a finer T");
-    }
+    // Once the landmarks are reached, T keeps its vertices (StopRule).
+    const RemeshingResult edits = this->remeshing(reached, report);
+    this->checkVertexBudget(phase, it);
     const NewtonStepResult step = this->newtonIteration(phase, solver, objective, report);
     report.iterations = it + 1;
     report.energy = step.energyAfter;
@@ -97,50 +90,74 @@ MapPhaseReport PhaseRunner::run(const MapPhase& phase)
     report.solveSeconds += step.solveSeconds;
     report.lineSearchSeconds += step.lineSearchSeconds;
     report.stalledIterations += step.stalled ? 1 : 0;
-
-    std::ostringstream message;
-    message << name << " iteration " << it + 1 << ": " << report.vertices << " vertices, E "
-            << step.energyAfter << ", decrement " << step.decrement << ", step " << step.step
-            << " (" << step.lineSearchTrials << " trials"
-            << (step.gradientFallback ? ", gradient" : "") << (step.stalled ? ", stalled" : "")
-            << (step.heldPoints > 0 ? ", " + std::to_string(step.heldPoints) + " points held" : "")
-            << "), edits " << edits.splits << "/" << edits.collapses << "/" << edits.flips;
-    this->Options.log(Logger::Detail, message.str());
+    this->logIteration(phase, report, step, edits);
     this->reportProgress(phase, it + 1, report.vertices, step.energyAfter);
-
-    const bool settled = edits.splits + edits.collapses + edits.flips == 0 &&
-      step.decrement < this->Options.decrementTolerance;
-    if (phase.untilLandmarks)
-    {
-      report.landmarkError = this->landmarkError();
-      reached = reached || report.landmarkError < this->Options.landmarkTolerance;
-      if (report.landmarkError < this->Options.landmarkTolerance &&
-        (!phase.relaxAfterLandmarks || settled))
-      {
-        report.converged = true;
-        break;
-      }
-    }
-    else if (settled)
-    {
-      report.converged = true;
-      break;
-    }
+    report.converged = this->stops(phase, edits, step, report, reached);
   }
   report.seconds = secondsSince(start);
+  this->logPhase(phase, report);
+  return report;
+}
+
+bool PhaseRunner::stops(const MapPhase& phase,
+  const RemeshingResult& edits,
+  const NewtonStepResult& step,
+  MapPhaseReport& report,
+  bool& reached) const
+{
+  const bool settled = edits.splits + edits.collapses + edits.flips == 0 &&
+    step.decrement < this->Options.decrementTolerance;
+  if (phase.stop == StopRule::Settled)
+  {
+    return settled;
+  }
+  report.landmarkError = this->landmarkError();
+  const bool within = report.landmarkError < this->Options.landmarkTolerance;
+  reached = reached || within;
+  return within && (phase.stop == StopRule::LandmarksReached || settled);
+}
+
+void PhaseRunner::checkVertexBudget(const MapPhase& phase, int iteration) const
+{
+  if (this->T.mesh().n_vertices() > this->VertexBudget)
+  {
+    throw std::runtime_error("the common triangulation reached its vertex budget in the " +
+      std::string(phaseName(phase.kind)) + " phase (iteration " + std::to_string(iteration + 1) +
+      "): " + std::to_string(this->T.mesh().n_vertices()) + " vertices, budget " +
+      std::to_string(this->VertexBudget) +
+      " (MaxVertices, --max-vertices); the target error or error bound asks for a finer T");
+  }
+}
+
+void PhaseRunner::logIteration(const MapPhase& phase,
+  const MapPhaseReport& report,
+  const NewtonStepResult& step,
+  const RemeshingResult& edits) const
+{
   std::ostringstream message;
-  message << name << " phase: " << report.iterations << " iterations"
+  message << phaseName(phase.kind) << " iteration " << report.iterations << ": " << report.vertices
+          << " vertices, E " << step.energyAfter << ", decrement " << step.decrement << ", step "
+          << step.step << " (" << step.lineSearchTrials << " trials"
+          << (step.gradientFallback ? ", gradient" : "") << (step.stalled ? ", stalled" : "")
+          << (step.heldPoints > 0 ? ", " + std::to_string(step.heldPoints) + " points held" : "")
+          << "), edits " << edits.splits << "/" << edits.collapses << "/" << edits.flips;
+  this->Options.log(Logger::Detail, message.str());
+}
+
+void PhaseRunner::logPhase(const MapPhase& phase, const MapPhaseReport& report) const
+{
+  std::ostringstream message;
+  message << phaseName(phase.kind) << " phase: " << report.iterations << " iterations"
           << (report.converged ? " (converged)" : " (iteration cap)") << ", " << report.vertices
           << " vertices, " << report.seconds << " s";
   this->Options.log(Logger::Info, message.str());
-  if (phase.untilLandmarks && !report.converged)
+  if (phase.stop != StopRule::Settled && !report.converged)
   {
     this->Options.log(Logger::Warning,
       "landmark phase stopped at its cap with landmark error " +
         std::to_string(report.landmarkError) + " (tolerance " +
         std::to_string(this->Options.landmarkTolerance) + "); going on");
   }
-  return report;
 }
 
 RemeshingResult PhaseRunner::remeshing(bool relaxing, MapPhaseReport& report)

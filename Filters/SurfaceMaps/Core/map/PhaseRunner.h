@@ -52,6 +52,20 @@ private:
     LinearSolver& solver,
     Objective& objective,
     MapPhaseReport& report);
+  /// Whether the phase ends after this iteration (its StopRule); updates the
+  /// report's landmark error and whether the landmarks were `reached`.
+  bool stops(const MapPhase& phase,
+    const RemeshingResult& edits,
+    const NewtonStepResult& step,
+    MapPhaseReport& report,
+    bool& reached) const;
+  /// Throws when T has more vertices than the budget.
+  void checkVertexBudget(const MapPhase& phase, int iteration) const;
+  void logIteration(const MapPhase& phase,
+    const MapPhaseReport& report,
+    const NewtonStepResult& step,
+    const RemeshingResult& edits) const;
+  void logPhase(const MapPhase& phase, const MapPhaseReport& report) const;
   void reportProgress(const MapPhase& phase, int iteration, int vertices, double energy);
 
   CommonTriangulation& T;

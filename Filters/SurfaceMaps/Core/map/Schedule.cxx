@@ -62,8 +62,8 @@ MapPhase landmarkPhase(const SurfaceMapOptions& options, const ScheduleContext& 
   phase.weights.barrier = options.landmarkBarrierWeight / context.inputs;
   phase.weights.landmark = options.landmarkWeight / context.inputs;
   phase.weights.exactBarrierHessian = true;
-  phase.untilLandmarks = true;
-  phase.relaxAfterLandmarks = options.relaxLandmarkPhase;
+  phase.stop =
+    options.relaxLandmarkPhase ? StopRule::LandmarksReachedThenSettled : StopRule::LandmarksReached;
   return phase;
 }
 
@@ -102,14 +102,58 @@ std::vector<MapPhase> distortionPhases(const SurfaceMapOptions& options,
   return phases;
 }
 
-int plannedIterations(const SurfaceMapOptions& options, const ScheduleContext& context)
+std::vector<MapStage> mapPlan(const SurfaceMapOptions& options, const ScheduleContext& context)
 {
-  const bool refinement =
-    options.fineIterations > 0 && context.pairs > 0 && options.refinementRounds > 0;
-  return (context.landmarks ? options.landmarkIterations : 0) +
-    std::max(0, options.coarseIterations) + std::max(0, options.fineIterations) +
-    (refinement ? std::min(options.refinementIterations, options.fineIterations) : 0) +
-    (options.maxError > 0.0 ? options.boundIterations : 0);
+  std::vector<MapStage> plan;
+  auto add = [&plan](StageKind kind, MapPhase phase = MapPhase()) {
+    plan.push_back({ kind, std::move(phase) });
+  };
+  if (context.landmarks && options.landmarkIterations > 0)
+  {
+    add(StageKind::Phase, landmarkPhase(options, context));
+  }
+  if (context.landmarks && options.keepLandmarks)
+  {
+    add(StageKind::SnapLandmarks);
+  }
+  add(StageKind::TrackSamples);
+  for (MapPhase& phase : distortionPhases(options, context))
+  {
+    add(StageKind::Phase, std::move(phase));
+  }
+  if (options.fineIterations > 0 && context.pairs > 0 && options.refinementRounds > 0)
+  {
+    add(StageKind::Refinement);
+  }
+  if (options.maxError > 0.0)
+  {
+    add(StageKind::ErrorBound);
+  }
+  return plan;
+}
+
+int plannedIterations(const std::vector<MapStage>& plan, const SurfaceMapOptions& options)
+{
+  int iterations = 0;
+  for (const MapStage& stage : plan)
+  {
+    switch (stage.kind)
+    {
+      case StageKind::Phase:
+        iterations += stage.phase.iterations;
+        break;
+      case StageKind::Refinement:
+        iterations += std::min(options.refinementIterations, options.fineIterations);
+        break;
+      case StageKind::ErrorBound:
+        iterations += options.boundIterations;
+        break;
+      case StageKind::SnapLandmarks:
+      case StageKind::TrackSamples:
+        break;
+    }
+  }
+  return iterations;
 }
 
 } // namespace surfacemaps

@@ -35,8 +35,31 @@ MapPhase finePhase(PhaseKind kind,
 std::vector<MapPhase> distortionPhases(const SurfaceMapOptions& options,
   const ScheduleContext& context);
 
-/// The iterations the schedule is expected to run (for progress): every
-/// planned phase and the first refinement round, which nearly always runs.
-int plannedIterations(const SurfaceMapOptions& options, const ScheduleContext& context);
+/// One step of a surface map's plan.
+enum class StageKind
+{
+  Phase,         ///< run `phase`
+  SnapLandmarks, ///< put every kept landmark exactly on its input vertex
+  TrackSamples,  ///< assign the approximation samples to T's faces from now on
+  Refinement,    ///< DistortionRefinement's rounds, each a Refine phase
+  ErrorBound,    ///< ErrorBound's rounds, each a Refine or Bound phase
+};
+
+struct MapStage
+{
+  StageKind kind = StageKind::Phase;
+  /// The phase of a StageKind::Phase stage.
+  MapPhase phase;
+};
+
+/// The plan of a surface map, in order (DESIGN.md section 1.6): the
+/// landmark phase (with landmarks), snapping kept landmarks, the coarse and
+/// fine phases, the distortion refinement, the error bound (with maxError).
+std::vector<MapStage> mapPlan(const SurfaceMapOptions& options, const ScheduleContext& context);
+
+/// The iterations a plan is expected to run (for progress): every phase,
+/// the first refinement round (which nearly always runs) and the bound
+/// phase.
+int plannedIterations(const std::vector<MapStage>& plan, const SurfaceMapOptions& options);
 
 } // namespace surfacemaps

@@ -122,6 +122,56 @@ MapEnergies energyByTerm(CommonTriangulation& T)
   return energies;
 }
 
+/// Runs one stage of the plan; its phases' reports go to `phases`, the
+/// error bound's per-input bounds to `bounds`.
+void runStage(const MapStage& stage,
+  const SurfaceMapOptions& options,
+  const ScheduleContext& context,
+  CommonTriangulation& T,
+  std::vector<PreparedInput>& surfaces,
+  PhaseRunner& runner,
+  std::vector<MapPhaseReport>& phases,
+  std::vector<double>& bounds)
+{
+  switch (stage.kind)
+  {
+    case StageKind::Phase:
+      phases.push_back(runner.run(stage.phase));
+      break;
+    case StageKind::SnapLandmarks:
+      if (const int missed = runner.snapLandmarks(); missed > 0)
+      {
+        options.log(Logger::Warning,
+          std::to_string(missed) +
+            " landmark positions could not be snapped exactly (the embedding would fold); they "
+            "stay where the landmark phase put them");
+      }
+      break;
+    case StageKind::TrackSamples:
+      T.setTrackSamples(true);
+      break;
+    case StageKind::Refinement:
+    {
+      DistortionRefinement refinement(options, context);
+      while (const std::optional<MapPhase> phase = refinement.next(T, surfaces))
+      {
+        phases.push_back(runner.run(*phase));
+      }
+      break;
+    }
+    case StageKind::ErrorBound:
+    {
+      ErrorBound bound(options, context, surfaces);
+      while (const std::optional<MapPhase> phase = bound.next(T))
+      {
+        phases.push_back(runner.run(*phase));
+      }
+      bounds = bound.bounds();
+      break;
+    }
+  }
+}
+
 } // namespace
 
 SurfaceMapResult computeSurfaceMap(const std::vector<MapInput>& inputs,
@@ -141,44 +191,14 @@ SurfaceMapResult computeSurfaceMap(const std::vector<MapInput>& inputs,
   context.landmarks = !landmarks[0].empty();
   CommonTriangulation T(surfaces, mapPairs(options.pairs, context.inputs));
   context.pairs = static_cast<int>(T.pairs().size());
+  const std::vector<MapStage> plan = mapPlan(options, context);
   PhaseRunner runner(
-    T, surfaces, options, landmarkTargets(surfaces), plannedIterations(options, context));
+    T, surfaces, options, landmarkTargets(surfaces), plannedIterations(plan, options));
   SurfaceMapResult result;
-
-  if (context.landmarks && options.landmarkIterations > 0)
-  {
-    result.phases.push_back(runner.run(landmarkPhase(options, context)));
-  }
-  if (context.landmarks && options.keepLandmarks)
-  {
-    const int missed = runner.snapLandmarks();
-    if (missed > 0)
-    {
-      options.log(Logger::Warning,
-        std::to_string(missed) +
-          " landmark positions could not be snapped exactly (the embedding would fold); they "
-          "stay where the landmark phase put them");
-    }
-  }
-  T.setTrackSamples(true);
-  for (const MapPhase& phase : distortionPhases(options, context))
-  {
-    result.phases.push_back(runner.run(phase));
-  }
-  DistortionRefinement refinement(options, context);
-  while (const std::optional<MapPhase> phase = refinement.next(T, surfaces))
-  {
-    result.phases.push_back(runner.run(*phase));
-  }
   std::vector<double> bounds;
-  if (options.maxError > 0.0)
+  for (const MapStage& stage : plan)
   {
-    ErrorBound bound(options, context, surfaces);
-    while (const std::optional<MapPhase> phase = bound.next(T))
-    {
-      result.phases.push_back(runner.run(*phase));
-    }
-    bounds = bound.bounds();
+    runStage(stage, options, context, T, surfaces, runner, result.phases, bounds);
   }
 
   certifyBaseDistances(T, surfaces, bounds, result.baseDistance, result.errorBound);
