@@ -3,7 +3,7 @@
 
 #include "base/Log.h"
 #include "optimisation/LineSearch.h"
-#include "optimisation/LinearSolver.h"
+#include "optimisation/sparse/LinearSolver.h"
 #include "optimisation/Objective.h"
 #include "optimisation/SpherePoints.h"
 
