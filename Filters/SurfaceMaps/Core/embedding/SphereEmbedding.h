@@ -3,8 +3,8 @@
 
 #include "base/Aborted.h"
 #include "base/Log.h"
-#include "mesh/PolygonMesh.h"
 #include "geometry/SphericalTriangulation.h"
+#include "mesh/PolygonMesh.h"
 
 #include <Eigen/Core>
 

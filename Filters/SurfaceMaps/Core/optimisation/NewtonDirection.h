@@ -3,7 +3,7 @@
 #pragma once
 
 #include "base/Log.h"
-#include "optimisation/LinearSolver.h"
+#include "optimisation/sparse/LinearSolver.h"
 
 #include <Eigen/Core>
 #include <Eigen/SparseCore>

@@ -5,8 +5,8 @@
 
 #include "base/Log.h"
 #include "optimisation/LineSearch.h"
-#include "optimisation/LinearSolver.h"
 #include "optimisation/NewtonProblem.h"
+#include "optimisation/sparse/LinearSolver.h"
 #include "optimisation/SpherePoints.h"
 
 #include <functional>

@@ -1,5 +1,5 @@
 #include "optimisation/LineSearch.h"
-#include "optimisation/LinearSolver.h"
+#include "optimisation/sparse/LinearSolver.h"
 
 #include <Eigen/Cholesky>
 #include <gtest/gtest.h>

@@ -1,4 +1,6 @@
-// SurfaceMaps engine: sparse symmetric positive definite solves (CHOLMOD).
+// SurfaceMaps engine: LinearSolver, the façade of the sparse wing: sparse
+// symmetric positive definite solves (CHOLMOD) for the Newton steps, direct
+// (CholeskyFactor) or by blocks (BlockPreconditionedCG).
 #pragma once
 
 #include "base/Log.h"
@@ -83,14 +85,6 @@ public:
   void setBlocks(std::vector<int> offsets);
 
 private:
-  LinearSolveResult solveByBlocks(const Eigen::SparseMatrix<double>& H,
-    const Eigen::VectorXd& b,
-    Eigen::VectorXd& x,
-    bool patternChanged,
-    const Logger& log);
-  /// Solves with the factor of the last successful solve (same matrix).
-  bool solveAgain(const Eigen::VectorXd& b, Eigen::VectorXd& x) const;
-
   struct Internals;
   std::unique_ptr<Internals> Impl;
 };
