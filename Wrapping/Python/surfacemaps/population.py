@@ -311,7 +311,7 @@ def write_text(path, text):
     def write(temporary):
         with open(temporary, "w", encoding="utf-8") as f:
             f.write(text)
-    surfacemaps._replace_atomically(path, write)
+    surfacemaps.files.replace_atomically(path, write)
 
 
 def write_statistics(statistics, specimens, directory):
