@@ -2,9 +2,10 @@
 #include "AtomicFiles.h"
 #include "Commands.h"
 
+#include "base/FreedMemory.h"
+
 #include "vtkLogger.h"
 #include "vtkOutputWindow.h"
-#include "vtkSurfaceMapFilter.h"
 
 #include <cerrno>
 #include <cstdio>
@@ -125,7 +126,7 @@ int main(int argc, char* argv[])
   surfacemap::installSignalHandlers();
   // One job per process: freed factor-sized buffers are worth keeping for the
   // next Newton step rather than returning them to the system.
-  vtkSurfaceMapFilter::KeepFreedMemoryForReuse();
+  surfacemaps::keepFreedMemoryForReuse();
 
   std::vector<std::string> args;
   int verbosity = 0;
