@@ -1,6 +1,6 @@
 #include "ArrayTransferFlags.h"
 
-#include "CommandSupport.h"
+#include "Arguments.h"
 #include "Commands.h"
 
 #include "vtkSurfaceArrayTransferAlgorithm.h"

@@ -1,6 +1,6 @@
 // surfacemap evaluate: distortion and approximation error of a map, for two
 // meshes or for a map directory.
-#include "CommandSupport.h"
+#include "Arguments.h"
 #include "Commands.h"
 #include "EvaluateMapDirectory.h"
 #include "EvaluateMeshPair.h"

@@ -1,10 +1,15 @@
 #include "EvaluateMapDirectory.h"
 
-#include "CommandSupport.h"
+#include "AtomicFiles.h"
 #include "Commands.h"
 #include "EvaluationOutputs.h"
 #include "EvaluationPictures.h"
+#include "EvaluationSummary.h"
+#include "Json.h"
 #include "MapDirectory.h"
+#include "MeshFiles.h"
+#include "OutputDirectory.h"
+#include "Terminal.h"
 
 #include "vtkPointData.h"
 #include "vtkPolyData.h"
@@ -12,7 +17,6 @@
 
 #include <cstdio>
 #include <filesystem>
-#include <sstream>
 #include <stdexcept>
 
 namespace surfacemap
@@ -113,8 +117,8 @@ bool readMeshes(MapMeshes& maps)
   return true;
 }
 
-// Prints the directory's line; returns the summary's opening.
-std::string reportDirectory(const MapMeshes& maps)
+// Prints the directory's line; returns the summary without its maps.
+Json::Value reportDirectory(const MapMeshes& maps)
 {
   const int n = maps.size();
   vtkPolyData* common = maps.common[0];
@@ -124,15 +128,19 @@ std::string reportDirectory(const MapMeshes& maps)
     n == 1 ? "" : "s",
     static_cast<long long>(common->GetNumberOfPoints()),
     static_cast<long long>(common->GetNumberOfPolys()));
-  std::ostringstream json;
-  json << "{\n  \"directory\": " << jsonString(maps.directory) << ",\n  \"inputs\": [";
-  for (int i = 0; i < n; ++i)
+  Json::Value summary(Json::objectValue);
+  summary["directory"] = maps.directory;
+  summary["inputs"] = Json::Value(Json::arrayValue);
+  for (const std::string& input : maps.inputFiles)
   {
-    json << (i ? ", " : "") << jsonString(maps.inputFiles[i]);
+    summary["inputs"].append(input);
   }
-  json << "],\n  \"common_triangulation\": { \"vertices\": " << common->GetNumberOfPoints()
-       << ", \"triangles\": " << common->GetNumberOfPolys() << " },\n  \"maps\": [";
-  return json.str();
+  summary["common_triangulation"]["vertices"] =
+    static_cast<Json::Int64>(common->GetNumberOfPoints());
+  summary["common_triangulation"]["triangles"] =
+    static_cast<Json::Int64>(common->GetNumberOfPolys());
+  summary["maps"] = Json::Value(Json::arrayValue);
+  return summary;
 }
 
 // One line per measured map, like `surfacemap map` prints.
@@ -213,18 +221,19 @@ void writePictures(const MapMeshes& maps,
 // Writes each map 0 -> j's tables and view as <outputDir>/<kind>_<j>*, with
 // `pictures` also their pictures; returns the summary's entry for j. Throws
 // std::runtime_error naming a file that cannot be written.
-std::string writeMaps(const MapMeshes& maps,
+Json::Value writeMaps(const MapMeshes& maps,
   int j,
   const MeasuredMaps& measured,
   bool certified,
   const std::string& outputDir,
   bool pictures)
 {
-  std::ostringstream json;
-  json << (j > 1 ? ",\n" : "\n") << "    {\n      \"source\": 0,\n      \"target\": " << j
-       << ",\n      \"certificate\": { \"bijective\": " << (certified ? "true" : "false")
-       << ", \"non_positive_triangles\": "
-       << jsonNumber(summaryValue(measured.approximating, "NonPositiveTriangles")) << " }";
+  Json::Value entry(Json::objectValue);
+  entry["source"] = 0;
+  entry["target"] = j;
+  entry["certificate"]["bijective"] = certified;
+  entry["certificate"]["non_positive_triangles"] =
+    jsonNumber(summaryValue(measured.approximating, "NonPositiveTriangles"));
   struct Output
   {
     const char* kind;
@@ -241,16 +250,15 @@ std::string writeMaps(const MapMeshes& maps,
     const std::string stem = outputDir + "/" + map.kind + "_" + std::to_string(j);
     writeEvaluationTables(map.result, stem + "_");
     writePolyDataAtomically(targetWithFigures(map.target, map.source, map.result), stem + ".vtp");
-    json << ",\n      \"" << map.kind
-         << "_map\": {\n        \"triangles\": " << map.result->GetNumberOfCells() << ",\n"
-         << summaryMembers(map.result, "        ") << "\n      }";
+    Json::Value& figures = entry[std::string(map.kind) + "_map"];
+    figures = summaryJson(map.result);
+    figures["triangles"] = static_cast<Json::Int64>(map.result->GetNumberOfCells());
   }
-  json << "\n    }";
   if (pictures)
   {
     writePictures(maps, j, measured, outputDir);
   }
-  return json.str();
+  return entry;
 }
 
 // Measures, prints and writes every map 0 -> j, then summary.json; returns
@@ -258,7 +266,7 @@ std::string writeMaps(const MapMeshes& maps,
 // cannot be measured or a file that cannot be written.
 bool evaluateMaps(const MapMeshes& maps,
   const std::string& outputDir,
-  std::string summary,
+  Json::Value summary,
   bool pictures)
 {
   bool allCertified = true;
@@ -267,9 +275,9 @@ bool evaluateMaps(const MapMeshes& maps,
     const MeasuredMaps measured = measureMaps(maps, j);
     const bool certified = reportMaps(j, measured);
     allCertified = allCertified && certified;
-    summary += writeMaps(maps, j, measured, certified, outputDir, pictures);
+    summary["maps"].append(writeMaps(maps, j, measured, certified, outputDir, pictures));
   }
-  writeFileAtomically(outputDir + "/summary.json", summary + "\n  ]\n}\n");
+  writeFileAtomically(outputDir + "/summary.json", jsonText(summary));
   return allCertified;
 }
 
@@ -304,7 +312,7 @@ int evaluateMapDirectory(const std::string& directory,
     removeCreatedDirectory(created); // nothing written into it
     return ExitBadInput;
   }
-  const std::string summary = reportDirectory(maps);
+  const Json::Value summary = reportDirectory(maps);
   bool certified = false;
   if (!succeeds([&] { certified = evaluateMaps(maps, outputDir, summary, pictures); }))
   {

@@ -1,9 +1,15 @@
 #include "EvaluateMeshPair.h"
 
-#include "CommandSupport.h"
+#include "AlgorithmMessages.h"
+#include "AtomicFiles.h"
 #include "Commands.h"
 #include "EvaluationOutputs.h"
 #include "EvaluationPictures.h"
+#include "EvaluationSummary.h"
+#include "Json.h"
+#include "MeshFiles.h"
+#include "OutputDirectory.h"
+#include "Terminal.h"
 
 #include "vtkSurfaceMapEvaluation.h"
 
@@ -12,8 +18,10 @@
 #include "vtkPolyData.h"
 #include "vtkSmartPointer.h"
 
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <iomanip>
 #include <sstream>
 
 namespace surfacemap
@@ -49,6 +57,18 @@ bool readMeshes(vtkSurfaceMapEvaluation* evaluation,
   return true;
 }
 
+// A summary figure as printed: 10 significant digits, "null" if not finite.
+std::string figureText(double value)
+{
+  if (!std::isfinite(value))
+  {
+    return "null";
+  }
+  std::ostringstream text;
+  text << std::setprecision(10) << value;
+  return text.str();
+}
+
 // Prints the map's size and every summary figure present.
 void printSummary(const std::vector<std::string>& meshes, vtkPolyData* result)
 {
@@ -60,7 +80,7 @@ void printSummary(const std::vector<std::string>& meshes, vtkPolyData* result)
   {
     if (result->GetFieldData()->GetArray(name))
     {
-      std::printf("  %-22s %s\n", name, jsonNumber(summaryValue(result, name)).c_str());
+      std::printf("  %-22s %s\n", name, figureText(summaryValue(result, name)).c_str());
     }
   }
 }
@@ -90,12 +110,11 @@ void writeOutputs(const std::vector<std::string>& meshes,
   bool pictures)
 {
   vtkPolyData* result = evaluation->GetOutput();
-  std::ostringstream json;
-  json << "{\n  \"source\": " << jsonString(meshes[0])
-       << ",\n  \"target\": " << jsonString(meshes[1]) << ",\n";
-  json << "  \"triangles\": " << result->GetNumberOfCells() << ",\n"
-       << summaryMembers(result, "  ") << "\n}\n";
-  writeFileAtomically(outputDir + "/summary.json", json.str());
+  Json::Value summary = summaryJson(result);
+  summary["source"] = meshes[0];
+  summary["target"] = meshes[1];
+  summary["triangles"] = static_cast<Json::Int64>(result->GetNumberOfCells());
+  writeFileAtomically(outputDir + "/summary.json", jsonText(summary));
   writeEvaluationTables(result, outputDir + "/");
   writePolyDataAtomically(result, outputDir + "/evaluated.vtp");
   if (pictures)

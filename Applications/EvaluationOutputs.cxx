@@ -1,6 +1,7 @@
 #include "EvaluationOutputs.h"
 
-#include "CommandSupport.h"
+#include "AtomicFiles.h"
+#include "EvaluationSummary.h"
 
 #include "vtkCellData.h"
 #include "vtkDataArray.h"
@@ -59,22 +60,6 @@ std::string curveCsv(vtkPolyData* result)
 }
 
 } // namespace
-
-std::string summaryMembers(vtkPolyData* result, const std::string& indent)
-{
-  std::ostringstream json;
-  const char* separator = "";
-  for (const char* name : evaluationSummaryNames())
-  {
-    if (result->GetFieldData()->GetArray(name))
-    {
-      json << separator << indent << jsonString(name) << ": "
-           << jsonNumber(summaryValue(result, name));
-      separator = ",\n";
-    }
-  }
-  return json.str();
-}
 
 void writeEvaluationTables(vtkPolyData* result, const std::string& prefix)
 {

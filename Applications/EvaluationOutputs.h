@@ -11,11 +11,6 @@ class vtkPolyData;
 namespace surfacemap
 {
 
-/// The summary figures present in `result` (an output of
-/// vtkSurfaceMapEvaluation) as JSON object members, one a line, each line
-/// starting with `indent`.
-std::string summaryMembers(vtkPolyData* result, const std::string& indent);
-
 /// Writes <prefix>triangles.csv (per triangle s1, s2, distortion, unit areas)
 /// and <prefix>distortion_curve.csv (area fraction below each distortion).
 /// Throws std::runtime_error naming a file that cannot be written.

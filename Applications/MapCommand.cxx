@@ -1,9 +1,16 @@
 // surfacemap map: bijective map between N surfaces via a common triangulation.
+#include "AlgorithmMessages.h"
+#include "Arguments.h"
 #include "ArrayTransferFlags.h"
-#include "CommandSupport.h"
+#include "AtomicFiles.h"
 #include "Commands.h"
+#include "EvaluationSummary.h"
+#include "Json.h"
 #include "MapDirectory.h"
+#include "MeshFiles.h"
+#include "OutputDirectory.h"
 #include "SettingFlags.h"
+#include "Terminal.h"
 
 #include "vtkSurfaceMapEvaluation.h"
 #include "vtkSurfaceMapFilter.h"
@@ -113,8 +120,8 @@ double field(vtkPolyData* data, const char* name, vtkIdType k = 0)
 }
 
 // Measures source -> target (same connectivity); originals may be null.
-// Returns the JSON object; prints one line.
-std::string evaluate(const char* what,
+// Returns the report's figures; prints one line.
+Json::Value evaluate(const char* what,
   int target,
   vtkPolyData* source,
   vtkPolyData* targetMesh,
@@ -132,8 +139,9 @@ std::string evaluate(const char* what,
       "evaluating the " + std::string(what) + " 0 -> " + std::to_string(target) + ": " + e.what());
   }
   auto figure = [&evaluated](const char* name) { return summaryValue(evaluated, name); };
-  std::ostringstream json;
-  json << "{ \"source\": 0, \"target\": " << target;
+  Json::Value figures(Json::objectValue);
+  figures["source"] = 0;
+  figures["target"] = target;
   for (const char* name : evaluationSummaryNames())
   {
     // The certificate has its own section of the report (T's embeddings).
@@ -142,10 +150,9 @@ std::string evaluate(const char* what,
     const double value = figure(name);
     if (!certificate && !std::isnan(value))
     {
-      json << ", " << jsonString(name) << ": " << jsonNumber(value);
+      figures[name] = jsonNumber(value);
     }
   }
-  json << " }";
   std::printf("  %s 0 -> %d: SD %.4f, a1.5 %.3f, a2 %.3f, max %.3g",
     what,
     target,
@@ -162,7 +169,7 @@ std::string evaluate(const char* what,
     std::printf(", H %.3f%% on input %d", figure("HausdorffTarget"), target);
   }
   std::printf(", min angle %.1f\n", figure("MinAngleTarget"));
-  return json.str();
+  return figures;
 }
 
 struct MapArguments
@@ -267,8 +274,8 @@ void sizingFromArray(vtkPolyData* mesh, const std::string& name, const std::stri
     if (!std::isfinite(value) || value <= 0.0)
     {
       std::ostringstream message;
-      message << "--sizing " << name << ": the point array of " << meshPath << " has "
-              << value << " at vertex " << v << ", not a finite positive length";
+      message << "--sizing " << name << ": the point array of " << meshPath << " has " << value
+              << " at vertex " << v << ", not a finite positive length";
       throw std::runtime_error(message.str());
     }
     sizing->SetValue(v, value);
@@ -330,8 +337,34 @@ std::string absolute(const std::string& path)
   return ec ? path : p.lexically_normal().string();
 }
 
-// The report's inputs, sizes, certificate, energies and times; prints the summary line.
-std::string reportMap(vtkSurfaceMapFilter* map,
+// The report's inputs: files, snapped landmarks, sizing, sizes, embedding times.
+Json::Value reportInputs(vtkPolyData* first,
+  const MapArguments& arguments,
+  const std::vector<vtkSmartPointer<vtkPolyData>>& inputs)
+{
+  Json::Value list(Json::arrayValue);
+  for (std::size_t i = 0; i < inputs.size(); ++i)
+  {
+    Json::Value input(Json::objectValue);
+    input["file"] = absolute(arguments.meshes[i]);
+    input["landmarks"] =
+      arguments.landmarks.empty() ? Json::Value() : Json::Value(absolute(arguments.landmarks[i]));
+    input["landmark_snap"] = landmarkSnapJson(inputs[i]);
+    input["sizing"] = arguments.sizing.empty() ? Json::Value()
+      : isFile(arguments.sizing[i])            ? Json::Value(absolute(arguments.sizing[i]))
+                                               : Json::Value("point array " + arguments.sizing[i]);
+    input["vertices"] = static_cast<Json::Int64>(inputs[i]->GetNumberOfPoints());
+    input["triangles"] = static_cast<Json::Int64>(inputs[i]->GetNumberOfPolys());
+    input["embedding_seconds"] =
+      jsonNumber(field(first, "EmbeddingSeconds", static_cast<vtkIdType>(i)));
+    list.append(input);
+  }
+  return list;
+}
+
+// The report's inputs, sizes, certificate, energies, times and settings;
+// prints the summary line.
+Json::Value reportMap(vtkSurfaceMapFilter* map,
   const MapArguments& arguments,
   const std::vector<vtkSmartPointer<vtkPolyData>>& inputs,
   double seconds)
@@ -346,66 +379,52 @@ std::string reportMap(vtkSurfaceMapFilter* map,
     static_cast<long long>(field(first, "CommonVertices")),
     static_cast<long long>(field(first, "CommonTriangles")),
     seconds);
-  std::ostringstream json;
-  json << "{\n  \"inputs\": [";
+  Json::Value report(Json::objectValue);
+  report["inputs"] = reportInputs(first, arguments, inputs);
+  report["common_triangulation"]["vertices"] = jsonNumber(field(first, "CommonVertices"));
+  report["common_triangulation"]["triangles"] = jsonNumber(field(first, "CommonTriangles"));
+  report["certificate"]["bijective"] = certified;
+  report["certificate"]["spherical_degrees"] = Json::Value(Json::arrayValue);
   for (int i = 0; i < n; ++i)
   {
-    json << (i ? ",\n" : "\n") << "    { \"file\": " << jsonString(absolute(arguments.meshes[i]))
-         << ", \"landmarks\": "
-         << (arguments.landmarks.empty() ? "null" : jsonString(absolute(arguments.landmarks[i])))
-         << ", \"landmark_snap\": " << landmarkSnapJson(inputs[i]) << ", \"sizing\": "
-         << (arguments.sizing.empty()        ? "null"
-                : isFile(arguments.sizing[i]) ? jsonString(absolute(arguments.sizing[i]))
-                                              : jsonString("point array " + arguments.sizing[i]))
-         << ", \"vertices\": " << inputs[i]->GetNumberOfPoints()
-         << ", \"triangles\": " << inputs[i]->GetNumberOfPolys()
-         << ", \"embedding_seconds\": " << jsonNumber(field(first, "EmbeddingSeconds", i)) << " }";
+    report["certificate"]["spherical_degrees"].append(
+      jsonNumber(field(map->GetOutput(i), "SphericalDegree")));
   }
-  json << "\n  ],\n";
-  json << "  \"common_triangulation\": { \"vertices\": "
-       << jsonNumber(field(first, "CommonVertices"))
-       << ", \"triangles\": " << jsonNumber(field(first, "CommonTriangles")) << " },\n";
-  json << "  \"certificate\": { \"bijective\": " << (certified ? "true" : "false")
-       << ", \"spherical_degrees\": [";
-  for (int i = 0; i < n; ++i)
+  report["landmark_error"] = jsonNumber(field(first, "LandmarkError"));
+  const std::pair<const char*, const char*> energies[] = { { "total", "Energy" },
+    { "barrier", "BarrierEnergy" },
+    { "mesh", "MeshEnergy" },
+    { "approximation", "ApproximationEnergy" },
+    { "map", "MapEnergy" } };
+  for (const auto& [key, name] : energies)
   {
-    json << (i ? ", " : "") << jsonNumber(field(map->GetOutput(i), "SphericalDegree"));
+    report["energy"][key] = jsonNumber(field(first, name));
   }
-  json << "] },\n";
-  json << "  \"landmark_error\": " << jsonNumber(field(first, "LandmarkError")) << ",\n";
-  json << "  \"energy\": { \"total\": " << jsonNumber(field(first, "Energy"))
-       << ", \"barrier\": " << jsonNumber(field(first, "BarrierEnergy"))
-       << ", \"mesh\": " << jsonNumber(field(first, "MeshEnergy"))
-       << ", \"approximation\": " << jsonNumber(field(first, "ApproximationEnergy"))
-       << ", \"map\": " << jsonNumber(field(first, "MapEnergy")) << " },\n";
-  json << "  \"seconds\": { \"total\": " << jsonNumber(seconds)
-       << ", \"map\": " << jsonNumber(field(first, "MapSeconds")) << " },\n";
-  json << "  \"preset\": " << (arguments.preset.empty() ? "null" : jsonString(arguments.preset))
-       << ",\n";
-  json << "  \"settings\": " << settingsJson(map) << ",\n";
-  json << "  \"array_transfer_modes\": {";
+  report["seconds"]["total"] = jsonNumber(seconds);
+  report["seconds"]["map"] = jsonNumber(field(first, "MapSeconds"));
+  report["preset"] = arguments.preset.empty() ? Json::Value() : Json::Value(arguments.preset);
+  report["settings"] = settingsJson(map);
+  report["array_transfer_modes"] = Json::Value(Json::objectValue);
   for (int k = 0; k < map->GetNumberOfArrayTransferModes(); ++k)
   {
     const char* name = map->GetArrayTransferModeArrayName(k);
-    json << (k ? ", " : " ") << jsonString(name) << ": "
-         << jsonString(
-              vtkSurfaceMapFilter::GetArrayTransferModeAsString(map->GetArrayTransferMode(name)));
+    report["array_transfer_modes"][name] =
+      vtkSurfaceMapFilter::GetArrayTransferModeAsString(map->GetArrayTransferMode(name));
   }
-  json << (map->GetNumberOfArrayTransferModes() ? " },\n" : "},\n");
-  return json.str();
+  return report;
 }
 
 // The report's phases, printed one line each.
-std::string reportPhases(vtkPolyData* first)
+Json::Value reportPhases(vtkPolyData* first)
 {
-  std::ostringstream json;
-  json << "  \"phases\": [";
+  Json::Value phases(Json::arrayValue);
   auto* phaseNames =
     vtkStringArray::SafeDownCast(first->GetFieldData()->GetAbstractArray("PhaseName"));
   for (vtkIdType k = 0; phaseNames && k < phaseNames->GetNumberOfValues(); ++k)
   {
     const bool converged = field(first, "PhaseConverged", k) == 1.0;
-    json << (k ? ",\n" : "\n") << "    { \"name\": " << jsonString(phaseNames->GetValue(k));
+    Json::Value phase(Json::objectValue);
+    phase["name"] = phaseNames->GetValue(k);
     const std::pair<const char*, const char*> columns[] = { { "iterations", "PhaseIterations" },
       { "stalled_iterations", "PhaseStalledIterations" },
       { "seconds", "PhaseSeconds" },
@@ -421,9 +440,10 @@ std::string reportPhases(vtkPolyData* first)
       { "line_search_seconds", "PhaseLineSearchSeconds" } };
     for (const auto& [key, name] : columns)
     {
-      json << ", " << jsonString(key) << ": " << jsonNumber(field(first, name, k));
+      phase[key] = jsonNumber(field(first, name, k));
     }
-    json << ", \"converged\": " << (converged ? "true" : "false") << " }";
+    phase["converged"] = converged;
+    phases.append(phase);
     std::printf("  %-10s %4d iterations%s, %d stalled, %.2f s, %d vertices, %d splits, "
                 "%d collapses, %d flips\n",
       (phaseNames->GetValue(k) + ":").c_str(),
@@ -436,30 +456,32 @@ std::string reportPhases(vtkPolyData* first)
       static_cast<int>(field(first, "PhaseCollapses", k)),
       static_cast<int>(field(first, "PhaseFlips", k)));
   }
-  json << "\n  ],\n";
   if (phaseNames && phaseNames->GetNumberOfValues() > 0 && phaseNames->GetValue(0) == "landmarks")
   {
     std::printf("  landmark error %.3g (input units)\n", field(first, "LandmarkError"));
   }
-  return json.str();
+  return phases;
 }
 
-// The error bound, certified on every input vertex (input units).
-std::string reportErrorBound(vtkSurfaceMapFilter* map, int n)
+// The error bound, certified on every input vertex (input units), into
+// `report` when the map has one.
+void reportErrorBound(Json::Value& report, vtkSurfaceMapFilter* map, int n)
 {
   if (map->GetMaxError() <= 0.0)
   {
-    return "";
+    return;
   }
-  std::ostringstream json;
-  json << "  \"error_bound\": [";
+  Json::Value& bounds = report["error_bound"];
+  bounds = Json::Value(Json::arrayValue);
   for (int i = 0; i < n; ++i)
   {
     const double distance = field(map->GetOutput(i), "BaseDistance");
     const double bound = field(map->GetOutput(i), "ErrorBound");
-    json << (i ? ", " : "") << "{ \"input\": " << i
-         << ", \"base_distance\": " << jsonNumber(distance) << ", \"bound\": " << jsonNumber(bound)
-         << " }";
+    Json::Value input(Json::objectValue);
+    input["input"] = i;
+    input["base_distance"] = jsonNumber(distance);
+    input["bound"] = jsonNumber(bound);
+    bounds.append(input);
     std::printf("  error bound on input %d: every vertex within %.4g of its base point on T "
                 "(bound %.4g = %g x bbox diagonal)\n",
       i,
@@ -467,19 +489,16 @@ std::string reportErrorBound(vtkSurfaceMapFilter* map, int n)
       bound,
       map->GetMaxError());
   }
-  json << "],\n";
-  return json.str();
 }
 
 // Writes one output mode's outputs as DIR/<prefix>_<i>.vtp (the filter reuses
-// the computed map); returns the report's metrics of maps 0 -> i under `key`,
-// or nothing with a null `what`.
-std::string writeOutputs(vtkSurfaceMapFilter* map,
+// the computed map); returns the report's metrics of maps 0 -> i, or null
+// with a null `what`.
+Json::Value writeOutputs(vtkSurfaceMapFilter* map,
   ErrorCapture& errors,
   MapWriter& files,
   const char* prefix,
   const char* what,
-  const char* key,
   const std::vector<vtkSmartPointer<vtkPolyData>>& inputs,
   bool withSourceOriginal)
 {
@@ -496,23 +515,20 @@ std::string writeOutputs(vtkSurfaceMapFilter* map,
   }
   if (!what)
   {
-    return "";
+    return Json::Value();
   }
-  std::ostringstream json;
-  json << "  \"" << key << "\": [";
+  Json::Value maps(Json::arrayValue);
   for (int i = n > 1 ? 1 : 0; i < n; ++i)
   {
-    json << (i > 1 ? ",\n" : "\n") << "    "
-         << evaluate(what,
-              i,
-              map->GetOutput(0),
-              map->GetOutput(i),
-              // Input 0's distance to T_0 is the same for every pair: measured once.
-              withSourceOriginal && i <= 1 ? inputs[0].Get() : nullptr,
-              inputs[i]);
+    maps.append(evaluate(what,
+      i,
+      map->GetOutput(0),
+      map->GetOutput(i),
+      // Input 0's distance to T_0 is the same for every pair: measured once.
+      withSourceOriginal && i <= 1 ? inputs[0].Get() : nullptr,
+      inputs[i]));
   }
-  json << "\n  ]";
-  return json.str();
+  return maps;
 }
 
 } // namespace
@@ -555,8 +571,9 @@ int runMap(const std::vector<std::string>& args)
   const double seconds =
     std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   const bool certified = field(map->GetOutput(0), "Bijective") == 1.0;
-  std::string report = reportMap(map, arguments, inputs, seconds) +
-    reportPhases(map->GetOutput(0)) + reportErrorBound(map, static_cast<int>(inputs.size()));
+  Json::Value report = reportMap(map, arguments, inputs, seconds);
+  report["phases"] = reportPhases(map->GetOutput(0));
+  reportErrorBound(report, map, static_cast<int>(inputs.size()));
   try
   {
     // The earlier map, if any, stays untouched until the new one is
@@ -568,14 +585,14 @@ int runMap(const std::vector<std::string>& args)
     }
     const std::string& dir = destination.path();
     MapWriter files(dir);
-    report += writeOutputs(
-      map, errors, files, "common", "approximating map", "approximating_map", inputs, true);
+    report["approximating_map"] =
+      writeOutputs(map, errors, files, "common", "approximating map", inputs, true);
     map->SetOutputModeToMappedFirstInput();
-    report +=
-      ",\n" + writeOutputs(map, errors, files, "mapped", "exact map", "exact_map", inputs, false);
+    report["exact_map"] = writeOutputs(map, errors, files, "mapped", "exact map", inputs, false);
     map->SetOutputModeToInputEmbeddings();
-    writeOutputs(map, errors, files, "embedding", nullptr, nullptr, inputs, false);
-    writeFileAtomically(dir + "/report.json", report + ",\n" + files.reportJson() + "\n}\n");
+    writeOutputs(map, errors, files, "embedding", nullptr, inputs, false);
+    files.addToReport(report);
+    writeFileAtomically(dir + "/report.json", jsonText(report));
     destination.commit(files.names());
   }
   catch (const std::runtime_error& e)

@@ -1,6 +1,9 @@
 #include "MapDirectory.h"
 
-#include "CommandSupport.h"
+#include "AlgorithmMessages.h"
+#include "AtomicFiles.h"
+#include "MeshFiles.h"
+#include "OutputDirectory.h"
 
 #include "vtkFieldData.h"
 #include "vtkNew.h"
@@ -8,7 +11,6 @@
 #include "vtkSurfaceMeshReader.h"
 #include "vtkUnsignedCharArray.h"
 
-#include "vtk_jsoncpp.h"
 #include <vtksys/MD5.h>
 
 #include <filesystem>
@@ -46,8 +48,8 @@ std::string md5Hex(const std::string& bytes)
 {
   vtksysMD5* md5 = vtksysMD5_New();
   vtksysMD5_Initialize(md5);
-  vtksysMD5_Append(md5, reinterpret_cast<const unsigned char*>(bytes.data()),
-    static_cast<int>(bytes.size()));
+  vtksysMD5_Append(
+    md5, reinterpret_cast<const unsigned char*>(bytes.data()), static_cast<int>(bytes.size()));
   char hex[33] = {};
   vtksysMD5_FinalizeHex(md5, hex);
   vtksysMD5_Delete(md5);
@@ -75,8 +77,8 @@ std::string stampOf(const std::string& path, const char* name)
   ErrorCapture quiet(reader);
   reader->SetFileName(path.c_str());
   reader->Update();
-  auto* array = vtkUnsignedCharArray::SafeDownCast(
-    reader->GetOutput()->GetFieldData()->GetAbstractArray(name));
+  auto* array =
+    vtkUnsignedCharArray::SafeDownCast(reader->GetOutput()->GetFieldData()->GetAbstractArray(name));
   std::string text;
   for (vtkIdType k = 0; array && k < array->GetNumberOfValues(); ++k)
   {
@@ -87,25 +89,13 @@ std::string stampOf(const std::string& path, const char* name)
 
 Json::Value readReport(const std::string& directory)
 {
-  const std::string path = directory + "/report.json";
-  std::ifstream in(path);
-  if (!in)
-  {
-    throw std::runtime_error(path +
-      " is missing: the directory holds no complete map (was 'surfacemap map' interrupted?)");
-  }
-  Json::CharReaderBuilder builder;
-  Json::Value root;
-  std::string problems;
-  if (!Json::parseFromStream(builder, in, &root, &problems))
-  {
-    throw std::runtime_error(path + " is not valid JSON");
-  }
+  const Json::Value root = readJsonFile(directory + "/report.json",
+    "the directory holds no complete map (was 'surfacemap map' interrupted?)");
   if (!root["map_id"].isString() || !root["files"].isArray())
   {
-    throw std::runtime_error(path +
-      " has no map id and file checksums (\"map_id\", \"files\"): written by an older "
-      "surfacemap; run 'surfacemap map' again");
+    throw std::runtime_error(directory +
+      "/report.json has no map id and file checksums (\"map_id\", \"files\"): written by an "
+      "older surfacemap; run 'surfacemap map' again");
   }
   return root;
 }
@@ -142,19 +132,22 @@ void MapWriter::write(vtkPolyData* data, const std::string& name)
   this->Names.push_back(name);
   // As on disk: what readers will compare against.
   const std::string bytes = readBytes(path);
-  this->Records.push_back("{ \"name\": " + jsonString(name) +
-    ", \"bytes\": " + std::to_string(bytes.size()) + ", \"md5\": " + jsonString(md5Hex(bytes)) +
-    " }");
+  Json::Value record(Json::objectValue);
+  record["name"] = name;
+  record["bytes"] = static_cast<Json::UInt64>(bytes.size());
+  record["md5"] = md5Hex(bytes);
+  this->Records.append(record);
 }
 
-std::string MapWriter::reportJson() const
+void MapWriter::addToReport(Json::Value& report) const
 {
-  std::string json = "  \"map_id\": " + jsonString(this->Id) + ",\n  \"files\": [";
-  for (std::size_t k = 0; k < this->Records.size(); ++k)
-  {
-    json += (k ? ",\n    " : "\n    ") + this->Records[k];
-  }
-  return json + "\n  ]";
+  report["map_id"] = this->Id;
+  report["files"] = this->Records;
+}
+
+std::string mapFileName(const char* stem, int i)
+{
+  return std::string(stem) + "_" + std::to_string(i) + ".vtp";
 }
 
 bool isMapFileName(const std::string& name)
@@ -200,6 +193,28 @@ void removeMap(const std::string& directory)
   }
 }
 
+std::vector<std::string> mapReportInputs(const std::string& report)
+{
+  const Json::Value root =
+    readJsonFile(report, "it names the map's inputs (or give them with --inputs A B ...)");
+  const Json::Value& inputs = root["inputs"];
+  std::vector<std::string> files;
+  for (Json::ArrayIndex i = 0; inputs.isArray() && i < inputs.size(); ++i)
+  {
+    if (!inputs[i]["file"].isString())
+    {
+      throw std::runtime_error(
+        report + ": inputs[" + std::to_string(i) + "] has no \"file\" (give --inputs A B ...)");
+    }
+    files.push_back(inputs[i]["file"].asString());
+  }
+  if (files.empty())
+  {
+    throw std::runtime_error(report + " lists no inputs (give --inputs A B ...)");
+  }
+  return files;
+}
+
 void verifyMapFiles(const std::string& directory, const std::vector<std::string>& names)
 {
   const Json::Value report = readReport(directory);
@@ -217,15 +232,16 @@ void verifyMapFiles(const std::string& directory, const std::vector<std::string>
     }
     if (!record)
     {
-      throw std::runtime_error(path + " is not a file of the map " + directory +
-        "/report.json describes");
+      throw std::runtime_error(
+        path + " is not a file of the map " + directory + "/report.json describes");
     }
     if (!isFile(path))
     {
       throw std::runtime_error(path + " is missing (" + directory + "/report.json lists it)");
     }
     const std::string bytes = readBytes(path);
-    if ((*record)["bytes"].asUInt64() == bytes.size() && (*record)["md5"].asString() == md5Hex(bytes))
+    if ((*record)["bytes"].asUInt64() == bytes.size() &&
+      (*record)["md5"].asString() == md5Hex(bytes))
     {
       continue;
     }
@@ -239,11 +255,13 @@ void verifyMapFiles(const std::string& directory, const std::vector<std::string>
     }
     if (fileName != name)
     {
-      throw std::runtime_error(path + " is " + fileName +
-        " of this map, not " + name + ": swapped or renamed");
+      throw std::runtime_error(
+        path + " is " + fileName + " of this map, not " + name + ": swapped or renamed");
     }
-    throw std::runtime_error(path + " was changed after the map was written (its size or "
-      "checksum differs from " + directory + "/report.json)");
+    throw std::runtime_error(path +
+      " was changed after the map was written (its size or "
+      "checksum differs from " +
+      directory + "/report.json)");
   }
 }
 

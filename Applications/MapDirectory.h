@@ -11,6 +11,8 @@
 // report.json yet) is no map at all.
 #pragma once
 
+#include "Json.h"
+
 #include "vtkSmartPointer.h"
 
 #include <memory>
@@ -36,9 +38,9 @@ public:
   /// Throws std::runtime_error naming the file on failure.
   void write(vtkPolyData* data, const std::string& name);
 
-  /// report.json's members "map_id" and "files" (JSON, each line indented,
-  /// no trailing comma).
-  std::string reportJson() const;
+  /// Sets report.json's members "map_id" and "files" (per file written: name,
+  /// bytes, md5) in `report`.
+  void addToReport(Json::Value& report) const;
 
   /// The names written so far, in order.
   const std::vector<std::string>& names() const { return this->Names; }
@@ -47,7 +49,7 @@ private:
   std::string Directory;
   std::string Id;
   std::vector<std::string> Names;
-  std::vector<std::string> Records;
+  Json::Value Records{ Json::arrayValue };
 };
 
 /// Where `surfacemap map` writes a map, so that an output directory holding
@@ -98,9 +100,18 @@ private:
   std::unique_ptr<InterruptCleanup> Cleanup;
 };
 
+/// The name of an output file of 'surfacemap map' for input i:
+/// <stem>_<i>.vtp (stem common, mapped or embedding).
+std::string mapFileName(const char* stem, int i);
+
 /// True for a name like a map file's: common_<i>.vtp, mapped_<i>.vtp,
 /// embedding_<i>.vtp.
 bool isMapFileName(const std::string& name);
+
+/// The input files a map directory's report.json (`report`) names, in
+/// order. Throws std::runtime_error naming the file and what is wrong with it
+/// (missing, not JSON, no inputs).
+std::vector<std::string> mapReportInputs(const std::string& report);
 
 /// True if `directory` holds report.json or a file named like a map's
 /// (common_<i>.vtp, mapped_<i>.vtp, embedding_<i>.vtp).

@@ -1,6 +1,6 @@
 #include "Pictures.h"
 
-#include "CommandSupport.h"
+#include "AtomicFiles.h"
 #include "Commands.h"
 
 #include "vtkSurfaceCheckerboardSource.h"
@@ -267,7 +267,9 @@ void writeSurfacePicture(const std::vector<SurfacePanel>& panels,
   writeWindow(window, path);
 }
 
-vtkSmartPointer<vtkPolyDataMapper> arrayMapper(vtkPolyData* mesh, const std::string& name, bool cells)
+vtkSmartPointer<vtkPolyDataMapper> arrayMapper(vtkPolyData* mesh,
+  const std::string& name,
+  bool cells)
 {
   auto mapper = vtkSmartPointer<vtkPolyDataMapper>::New();
   mapper->SetInputData(mesh);

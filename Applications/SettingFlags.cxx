@@ -1,7 +1,8 @@
 #include "SettingFlags.h"
 
-#include "CommandSupport.h"
+#include "Arguments.h"
 #include "Commands.h"
+#include "Json.h"
 
 #include "vtkSurfaceMapFilter.h"
 
@@ -218,9 +219,9 @@ std::string settingsHelp()
   return help;
 }
 
-std::string settingsJson(vtkSurfaceMapFilter* map)
+Json::Value settingsJson(vtkSurfaceMapFilter* map)
 {
-  std::string json = "{";
+  Json::Value settings(Json::objectValue);
   for (int k = 0; k < vtkSurfaceMapFilter::GetNumberOfSettings(); ++k)
   {
     std::string key = vtkSurfaceMapFilter::GetSettingFlag(k);
@@ -229,25 +230,22 @@ std::string settingsJson(vtkSurfaceMapFilter* map)
       c = c == '-' ? '_' : c;
     }
     const double value = map->GetSetting(k);
-    std::string text;
     switch (vtkSurfaceMapFilter::GetSettingType(k))
     {
       case vtkSurfaceMapFilter::SETTING_SWITCH:
-        text = value != 0.0 ? "true" : "false";
+        settings[key] = value != 0.0;
         break;
       case vtkSurfaceMapFilter::SETTING_CHOICE:
-        text = jsonString(formatted(k, value));
+        settings[key] = formatted(k, value);
         break;
       default:
-        text = jsonNumber(value);
+        settings[key] = jsonNumber(value);
     }
-    json += (k == 0 ? " " : ", ") + jsonString(key) + ": " + text;
   }
-  json += ", \"sizing_mode\": " +
-    jsonString(map->GetSizingMode() == vtkSurfaceMapFilter::SIZING_CURVATURE
-        ? "curvature"
-        : "array_or_curvature");
-  return json + " }";
+  settings["sizing_mode"] = map->GetSizingMode() == vtkSurfaceMapFilter::SIZING_CURVATURE
+    ? "curvature"
+    : "array_or_curvature";
+  return settings;
 }
 
 } // namespace surfacemap

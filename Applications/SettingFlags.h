@@ -8,6 +8,10 @@
 #include <vector>
 
 class vtkSurfaceMapFilter;
+namespace Json
+{
+class Value;
+}
 
 namespace surfacemap
 {
@@ -15,7 +19,9 @@ namespace surfacemap
 /// If args[i] is a setting's flag, sets the setting on `map` (consuming its
 /// value, i then at the value) and returns true; throws UsageError naming
 /// the flag and its range for a bad value. False for any other argument.
-bool parseSettingFlag(vtkSurfaceMapFilter* map, const std::vector<std::string>& args, std::size_t& i);
+bool parseSettingFlag(vtkSurfaceMapFilter* map,
+  const std::vector<std::string>& args,
+  std::size_t& i);
 
 /// If args holds "--preset NAME" (anywhere), applies that preset to `map`
 /// and returns NAME ("" without one), so that the other setting flags
@@ -31,6 +37,6 @@ std::string settingsHelp();
 
 /// Every setting of `map` as one JSON object: { "target_error": 0.001, ...,
 /// "pairs": "star", "keep_landmarks": true }.
-std::string settingsJson(vtkSurfaceMapFilter* map);
+Json::Value settingsJson(vtkSurfaceMapFilter* map);
 
 } // namespace surfacemap

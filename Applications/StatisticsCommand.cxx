@@ -1,9 +1,15 @@
 // surfacemap statistics: mean shape, modes of variation and spread of a
 // population of surfaces with one connectivity.
-#include "CommandSupport.h"
+#include "AlgorithmMessages.h"
+#include "Arguments.h"
+#include "AtomicFiles.h"
 #include "Commands.h"
+#include "MapDirectory.h"
+#include "MeshFiles.h"
+#include "OutputDirectory.h"
 #include "Pictures.h"
 #include "StatisticsPictures.h"
+#include "Terminal.h"
 
 #include "vtkDataArray.h"
 #include "vtkFieldData.h"
@@ -104,8 +110,8 @@ int integerValue(const std::string& option, const std::string& text, int lowest)
   }
   if (used != text.size() || value < lowest)
   {
-    throw UsageError{ option + " needs an integer >= " + std::to_string(lowest) + ", not '" +
-      text + "'" };
+    throw UsageError{ option + " needs an integer >= " + std::to_string(lowest) + ", not '" + text +
+      "'" };
   }
   return value;
 }
@@ -203,8 +209,8 @@ std::vector<double> fieldValues(vtkPolyData* mesh, const char* name)
   vtkDataArray* array = mesh->GetFieldData()->GetArray(name);
   for (vtkIdType k = 0; array && k < array->GetNumberOfValues(); ++k)
   {
-    values.push_back(array->GetComponent(k / array->GetNumberOfComponents(),
-      static_cast<int>(k % array->GetNumberOfComponents())));
+    values.push_back(array->GetComponent(
+      k / array->GetNumberOfComponents(), static_cast<int>(k % array->GetNumberOfComponents())));
   }
   return values;
 }
@@ -292,9 +298,9 @@ void writeModeAnimation(vtkSurfaceShapeStatistics* statistics,
     statistics->Update();
     if (!errors.messages().empty() || statistics->GetOutput()->GetNumberOfPoints() == 0)
     {
-      throw std::invalid_argument(errors.messages().empty() ? "no shape along mode " +
-          std::to_string(mode)
-                                                            : errors.messages().front());
+      throw std::invalid_argument(errors.messages().empty()
+          ? "no shape along mode " + std::to_string(mode)
+          : errors.messages().front());
     }
     std::ostringstream frame;
     frame << stem << "/frame_" << std::setw(digits) << std::setfill('0') << k << ".vtp";
@@ -308,6 +314,84 @@ void writeModeAnimation(vtkSurfaceShapeStatistics* statistics,
 
 } // namespace
 
+namespace
+{
+
+// The specimens' files (those given or those a map directory names) and
+// their meshes; false after printing why one cannot be read.
+bool readSpecimens(const StatisticsArguments& arguments,
+  std::vector<std::string>& files,
+  std::vector<vtkSmartPointer<vtkPolyData>>& meshes)
+{
+  if (!succeeds([&] { files = specimenFiles(arguments.sources); }))
+  {
+    return false;
+  }
+  if (files.size() < 2)
+  {
+    throw UsageError{ "statistics needs two or more meshes (or a map directory of two or more "
+                      "inputs), not " +
+      std::to_string(files.size()) };
+  }
+  for (const std::string& file : files)
+  {
+    meshes.push_back(readMesh(file));
+    if (!meshes.back())
+    {
+      return false;
+    }
+  }
+  return true;
+}
+
+// Prints the total variance and each mode's.
+void printModes(vtkPolyData* mean, std::size_t specimens)
+{
+  const std::vector<double> variances = fieldValues(mean, "Variance");
+  const std::vector<double> fractions = fieldValues(mean, "ExplainedVarianceFraction");
+  std::printf("statistics of %d specimens, %lld vertices: total variance %.6g\n",
+    static_cast<int>(specimens),
+    static_cast<long long>(mean->GetNumberOfPoints()),
+    fieldValues(mean, "TotalVariance").at(0));
+  for (std::size_t m = 0; m < variances.size(); ++m)
+  {
+    std::printf("  mode %d: variance %.6g (sd %.6g), %.1f%% of the total\n",
+      static_cast<int>(m + 1),
+      variances[m],
+      std::sqrt(variances[m]),
+      100.0 * fractions[m]);
+  }
+}
+
+// Writes mean.vtp, each mode's animation, scores.csv, variance.csv and, with
+// --pictures, the pictures into the output directory. Throws
+// std::runtime_error naming a file that cannot be written.
+void writeResults(vtkSurfaceShapeStatistics* statistics,
+  ErrorCapture& errors,
+  vtkPolyData* mean,
+  const std::vector<std::string>& files,
+  const StatisticsArguments& arguments)
+{
+  const std::vector<double> fractions = fieldValues(mean, "ExplainedVarianceFraction");
+  const int modes = static_cast<int>(fractions.size());
+  const std::string& dir = arguments.outputDir;
+  writePolyDataAtomically(mean, dir + "/mean.vtp");
+  for (int m = 1; m <= modes; ++m)
+  {
+    writeModeAnimation(statistics, errors, dir, m, arguments.frames);
+  }
+  writeFileAtomically(dir + "/scores.csv", scoresTable(mean, files, modes));
+  writeFileAtomically(dir + "/variance.csv", varianceTable(mean));
+  if (arguments.pictures)
+  {
+    writeExplainedVariancePicture(fractions, dir + "/explained_variance.png");
+    writeScoresPicture(fieldValues(mean, "Scores"), modes, dir + "/scores.png");
+    writeSpreadPicture(mean, dir + "/spread.png");
+  }
+}
+
+} // namespace
+
 int runStatistics(const std::vector<std::string>& args)
 {
   const StatisticsArguments arguments = parseArguments(args);
@@ -316,31 +400,13 @@ int runStatistics(const std::vector<std::string>& args)
     return ExitBadInput;
   }
   std::vector<std::string> files;
-  if (!succeeds([&] { files = specimenFiles(arguments.sources); }))
-  {
-    return ExitBadInput;
-  }
-  if (files.size() < 2)
-  {
-    throw UsageError{ "statistics needs two or more meshes (or a map directory of two or more "
-                      "inputs), not " +
-      std::to_string(files.size()) };
-  }
   std::vector<vtkSmartPointer<vtkPolyData>> meshes;
-  for (const std::string& file : files)
-  {
-    meshes.push_back(readMesh(file));
-    if (!meshes.back())
-    {
-      return ExitBadInput;
-    }
-  }
   std::string created;
-  if (!prepareOutputDirectory(arguments.outputDir, "variance.csv", created))
+  if (!readSpecimens(arguments, files, meshes) ||
+    !prepareOutputDirectory(arguments.outputDir, "variance.csv", created))
   {
     return ExitBadInput;
   }
-
   vtkNew<vtkSurfaceShapeStatistics> statistics;
   statistics->SetNumberOfModes(arguments.modes);
   statistics->SetAlignMode(arguments.align);
@@ -361,47 +427,15 @@ int runStatistics(const std::vector<std::string>& args)
   }
   vtkNew<vtkPolyData> mean;
   mean->DeepCopy(statistics->GetOutput());
-  const std::vector<double> variances = fieldValues(mean, "Variance");
-  const std::vector<double> fractions = fieldValues(mean, "ExplainedVarianceFraction");
-  const int modes = static_cast<int>(variances.size());
-  const std::string& dir = arguments.outputDir;
-  std::printf("statistics of %d specimens, %lld vertices: total variance %.6g\n",
-    static_cast<int>(files.size()),
-    static_cast<long long>(mean->GetNumberOfPoints()),
-    fieldValues(mean, "TotalVariance").at(0));
-  for (int m = 0; m < modes; ++m)
+  printModes(mean, files.size());
+  if (!succeeds([&] { writeResults(statistics, errors, mean, files, arguments); }))
   {
-    std::printf("  mode %d: variance %.6g (sd %.6g), %.1f%% of the total\n",
-      m + 1,
-      variances[m],
-      std::sqrt(variances[m]),
-      100.0 * fractions[m]);
-  }
-  try
-  {
-    writePolyDataAtomically(mean, dir + "/mean.vtp");
-    for (int m = 1; m <= modes; ++m)
-    {
-      writeModeAnimation(statistics, errors, dir, m, arguments.frames);
-    }
-    writeFileAtomically(dir + "/scores.csv", scoresTable(mean, files, modes));
-    writeFileAtomically(dir + "/variance.csv", varianceTable(mean));
-    if (arguments.pictures)
-    {
-      writeExplainedVariancePicture(fractions, dir + "/explained_variance.png");
-      writeScoresPicture(fieldValues(mean, "Scores"), modes, dir + "/scores.png");
-      writeSpreadPicture(mean, dir + "/spread.png");
-    }
-  }
-  catch (const std::runtime_error& e)
-  {
-    printError(e.what());
     return ExitBadInput;
   }
   std::printf("  written to %s: mean.vtp, mode_<m>.pvd (m <= %d) with mode_<m>/frame_<k>.vtp, "
               "scores.csv, variance.csv%s\n",
-    dir.c_str(),
-    modes,
+    arguments.outputDir.c_str(),
+    static_cast<int>(fieldValues(mean, "Variance").size()),
     arguments.pictures ? ", explained_variance.png, scores.png, spread.png" : "");
   return ExitOk;
 }

@@ -1,9 +1,13 @@
 // surfacemap transfer: point data of one input of a map carried onto another.
+#include "AlgorithmMessages.h"
+#include "Arguments.h"
 #include "ArrayTransferFlags.h"
-#include "CommandSupport.h"
+#include "AtomicFiles.h"
 #include "Commands.h"
 #include "MapDirectory.h"
+#include "MeshFiles.h"
 #include "Pictures.h"
+#include "Terminal.h"
 #include "TransferPictures.h"
 
 #include "vtkSurfaceMapTransfer.h"
@@ -295,10 +299,8 @@ bool readMapFiles(vtkSurfaceMapTransfer* transfer,
       vtkSmartPointer<vtkPolyData> given = readMesh(arguments.sourceData);
       if (!given ||
         !succeeds(
-          [&]
-          {
-            data =
-              withSourceData(data, given, arguments.sourceData, files[port], arguments.from);
+          [&] {
+            data = withSourceData(data, given, arguments.sourceData, files[port], arguments.from);
           }))
       {
         return false;
@@ -417,8 +419,9 @@ int runTransfer(const std::vector<std::string>& args)
     return ExitBadInput;
   }
   reportTransfer(arguments, transfer);
-  const auto pictures = [&]
-  { printPictures(writeTransferPictures(transfer, arguments.from, arguments.to, arguments.output)); };
+  const auto pictures = [&] {
+    printPictures(writeTransferPictures(transfer, arguments.from, arguments.to, arguments.output));
+  };
   if (arguments.pictures && !succeeds(pictures))
   {
     return ExitBadInput;

@@ -1,10 +1,11 @@
 // surfacemap: command-line front end of SurfaceMaps.
-#include "CommandSupport.h"
+#include "AtomicFiles.h"
 #include "Commands.h"
+
+#include "base/FreedMemory.h"
 
 #include "vtkLogger.h"
 #include "vtkOutputWindow.h"
-#include "vtkSurfaceMapFilter.h"
 
 #include <cerrno>
 #include <cstdio>
@@ -77,6 +78,43 @@ void printUsage(std::ostream& os)
         "\nexit codes: 0 ok, 1 internal error, 2 bad usage or bad input, 3 no certified result\n";
 }
 
+// Runs `command` with its arguments `rest` (or prints its help); the exit code.
+int runCommand(const Command& command, const std::vector<std::string>& rest)
+{
+  for (const std::string& a : rest)
+  {
+    if (a == "-h" || a == "--help")
+    {
+      std::cout << *command.Help;
+      return surfacemap::ExitOk;
+    }
+  }
+  try
+  {
+    const int code = command.Run(rest);
+    // Output lost on stdout (a full disk, a closed pipe) is a failure too.
+    std::cout.flush();
+    if (std::fflush(stdout) != 0 || std::ferror(stdout) || !std::cout)
+    {
+      surfacemap::printError(
+        std::string("cannot write to standard output: ") + std::strerror(errno ? errno : EIO));
+      return code == surfacemap::ExitOk ? surfacemap::ExitBadInput : code;
+    }
+    return code;
+  }
+  catch (const surfacemap::UsageError& e)
+  {
+    surfacemap::printError(e.Message);
+    std::cerr << "run 'surfacemap " << command.Name << " --help' for usage\n";
+    return surfacemap::ExitBadInput;
+  }
+  catch (const std::exception& e)
+  {
+    surfacemap::printError(std::string("internal error: ") + e.what());
+    return surfacemap::ExitInternalError;
+  }
+}
+
 } // namespace
 
 int main(int argc, char* argv[])
@@ -88,7 +126,7 @@ int main(int argc, char* argv[])
   surfacemap::installSignalHandlers();
   // One job per process: freed factor-sized buffers are worth keeping for the
   // next Newton step rather than returning them to the system.
-  vtkSurfaceMapFilter::KeepFreedMemoryForReuse();
+  surfacemaps::keepFreedMemoryForReuse();
 
   std::vector<std::string> args;
   int verbosity = 0;
@@ -119,42 +157,9 @@ int main(int argc, char* argv[])
 
   for (const Command& command : Commands)
   {
-    if (args[0] != command.Name)
+    if (args[0] == command.Name)
     {
-      continue;
-    }
-    const std::vector<std::string> rest(args.begin() + 1, args.end());
-    for (const std::string& a : rest)
-    {
-      if (a == "-h" || a == "--help")
-      {
-        std::cout << *command.Help;
-        return surfacemap::ExitOk;
-      }
-    }
-    try
-    {
-      const int code = command.Run(rest);
-      // Output lost on stdout (a full disk, a closed pipe) is a failure too.
-      std::cout.flush();
-      if (std::fflush(stdout) != 0 || std::ferror(stdout) || !std::cout)
-      {
-        surfacemap::printError(
-          std::string("cannot write to standard output: ") + std::strerror(errno ? errno : EIO));
-        return code == surfacemap::ExitOk ? surfacemap::ExitBadInput : code;
-      }
-      return code;
-    }
-    catch (const surfacemap::UsageError& e)
-    {
-      surfacemap::printError(e.Message);
-      std::cerr << "run 'surfacemap " << command.Name << " --help' for usage\n";
-      return surfacemap::ExitBadInput;
-    }
-    catch (const std::exception& e)
-    {
-      surfacemap::printError(std::string("internal error: ") + e.what());
-      return surfacemap::ExitInternalError;
+      return runCommand(command, std::vector<std::string>(args.begin() + 1, args.end()));
     }
   }
   surfacemap::printError("unknown command '" + args[0] + "'");

@@ -5,7 +5,6 @@
 #include "vtkSurfaceMapsConversion.h"
 #include "vtkSurfaceMapsErrorGuard.h"
 
-#include "base/FreedMemory.h"
 #include "base/ThreadCount.h"
 #include "map/MapPresets.h"
 #include "map/MapSettings.h"
@@ -285,11 +284,6 @@ vtkSurfaceMapSettingDefinition(TargetError, double) vtkSurfaceMapSettingDefiniti
                                                   int vtkSurfaceMapFilter::GetNumberOfSettings()
 {
   return static_cast<int>(table().size());
-}
-
-bool vtkSurfaceMapFilter::KeepFreedMemoryForReuse()
-{
-  return surfacemaps::keepFreedMemoryForReuse();
 }
 
 const char* vtkSurfaceMapFilter::GetSettingName(int i)

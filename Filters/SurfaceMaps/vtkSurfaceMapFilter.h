@@ -573,21 +573,6 @@ public:
   vtkGetMacro(NumberOfThreads, int);
   ///@}
 
-  /**
-   * Makes the whole process keep the memory it frees for its next allocations
-   * instead of returning it to the operating system. Every Newton step of a
-   * map allocates and frees buffers the size of the Hessian and its Cholesky
-   * factor; handed back to the system, they cost a page fault per page on the
-   * next step. Programs that run maps and exit call this once at their start
-   * (`surfacemap` and `python3 -m surfacemaps.population` do); the filter
-   * never calls it itself, since it is process-wide and cannot be undone. The
-   * cost: up to 1 GiB of freed memory stays with the process until it exits.
-   * glibc only: returns false and changes nothing with another C library or
-   * when GLIBC_TUNABLES sets any glibc.malloc tunable (the user's own
-   * settings win); true when applied.
-   */
-  static bool KeepFreedMemoryForReuse();
-
   ///@{
   /**
    * COMMON_TRIANGULATION (default): output i is T lifted onto input i.

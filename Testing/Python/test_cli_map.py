@@ -19,7 +19,8 @@ def test_map_writes_common_and_mapped_meshes_and_a_report(tmp_path):
 
     report = json.loads((out / "report.json").read_text())
     assert report["certificate"]["bijective"] is True
-    assert report["certificate"]["spherical_degrees"] == [1.0, 1.0]
+    # Written at full precision: the signed area over 4 pi, 1 up to rounding.
+    assert report["certificate"]["spherical_degrees"] == pytest.approx([1.0, 1.0], abs=1e-9)
     assert [i["vertices"] for i in report["inputs"]] == [642, 642]
     names = [p["name"] for p in report["phases"]]
     # Refinement rounds (at most 3, each at most the fine cap) where the exact map is distorted.
@@ -247,6 +248,19 @@ def test_usage(tmp_path):
     assert r.returncode == 0 and "--release-landmarks" in r.stdout and "mapped_<i>.vtp" in r.stdout
     assert "embedding_<i>.vtp" in r.stdout
     assert os.listdir(tmp_path) == []
+
+
+def test_report_numbers_read_back_exactly(tmp_path):
+    # 17 significant digits: a setting given with more than 10 comes back as the same double.
+    out = tmp_path / "out"
+    r = run("map", data("ellipsoid.obj"), *SHORT, "--target-error", "0.0012345678901234567",
+            "--output-dir", out)
+    assert r.returncode == 0, r.stderr
+    report = json.loads((out / "report.json").read_text())
+    assert report["settings"]["target_error"] == 0.0012345678901234567
+    assert isinstance(report["common_triangulation"]["vertices"], int)
+    assert all(isinstance(p["seconds"], (int, float)) and isinstance(p["iterations"], int)
+               for p in report["phases"])
 
 
 def test_help_and_report_hold_every_setting(tmp_path):

@@ -311,7 +311,7 @@ def write_text(path, text):
     def write(temporary):
         with open(temporary, "w", encoding="utf-8") as f:
             f.write(text)
-    surfacemaps._replace_atomically(path, write)
+    surfacemaps.files.replace_atomically(path, write)
 
 
 def write_statistics(statistics, specimens, directory):
@@ -599,7 +599,7 @@ def main(argv=None, comm=None):
     """The command line; `comm` (an mpi4py communicator or Serial) when the caller already has one."""
     args = parse_args(argv)
     # A program that runs maps and exits: keep freed factor-sized buffers for the next Newton step.
-    surfacemaps.vtkSurfaceMapFilter.KeepFreedMemoryForReuse()
+    surfacemaps.keep_freed_memory_for_reuse()
     comm = comm or communicator(args.no_mpi)
     if comm is None:
         return 0
