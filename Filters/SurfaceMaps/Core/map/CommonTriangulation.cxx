@@ -210,4 +210,57 @@ void CommonTriangulation::updateTargetLengths()
     { this->Mesh.property(this->Length, f) = this->targetLength(a, b, c); });
 }
 
+double CommonTriangulation::coverageDensity(int i, int a, int b, int c) const
+{
+  const std::vector<double>& d = this->Surfaces[i].density;
+  return (d[a] + d[b] + d[c]) / 3.0;
+}
+
+std::vector<double> CommonTriangulation::baseDistances(int i) const
+{
+  const ApproximationSamples& samples = this->Surfaces[i].samples;
+  std::vector<double> distances(samples.positions.size(), Infinity);
+  for (auto f : this->Mesh.faces())
+  {
+    const std::vector<int>& inside = this->faceSamples(f, i);
+    if (inside.empty())
+    {
+      continue;
+    }
+    auto fv = this->Mesh.cfv_iter(f);
+    const MapVertex a = this->vertex(*fv);
+    const MapVertex b = this->vertex(*++fv);
+    const MapVertex c = this->vertex(*++fv);
+    for (int s : inside)
+    {
+      distances[s] = std::sqrt(squaredBaseDistance<double>(samples.spherePoints[s],
+        samples.positions[s],
+        { a.g[i], b.g[i], c.g[i] },
+        { a.lifted[i], b.lifted[i], c.lifted[i] }));
+    }
+  }
+  return distances;
+}
+
+bool CommonTriangulation::validTriangle(const MapVertex& a,
+  const MapVertex& b,
+  const MapVertex& c) const
+{
+  for (int i = 0; i < this->numberOfInputs(); ++i)
+  {
+    if (!validOnSphere(a.g[i], b.g[i], c.g[i]))
+    {
+      return false;
+    }
+  }
+  return true;
+}
+
+bool CommonTriangulation::validOnSphere(const Eigen::Vector3d& a,
+  const Eigen::Vector3d& b,
+  const Eigen::Vector3d& c)
+{
+  return a.dot(b.cross(c)) > minDet && orient3dOrigin(a, b, c) > 0;
+}
+
 } // namespace surfacemaps

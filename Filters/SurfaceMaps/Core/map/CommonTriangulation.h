@@ -1,16 +1,16 @@
 // SurfaceMaps engine: the common triangulation T with its N sphere embeddings
-// and the energy of DESIGN.md section 1.3 (defined in CommonTriangulation.cxx:
-// connectivity, vertex data, samples; CommonTriangulationEnergy.cxx: local
-// energies and the objective; CommonTriangulationSnapshot.cxx: the flat copy
-// the Newton step works on).
+// (DESIGN.md section 1.2): connectivity, per-vertex data (sphere points,
+// lifts, landmarks), per-face data (target lengths, samples, barrier raises,
+// the cached face energies) and the flat copy the Newton step works on
+// (CommonTriangulationSnapshot.cxx). The energy over it is MapEnergy's.
 #pragma once
 
 #include "energy/ApproximationEnergy.h"
 #include "energy/LiftedPoint.h"
 #include "geometry/SphereLocator.h"
+#include "map/MapEnergyWeights.h"
 #include "map/PreparedInput.h"
 #include "mesh/HalfedgeMesh.h"
-#include "optimisation/Objective.h"
 #include "optimisation/SpherePoints.h"
 
 #include <Eigen/Core>
@@ -24,44 +24,6 @@
 
 namespace surfacemaps
 {
-
-/// The terms of the map's energy (DESIGN.md section 1.3), as the objective
-/// groups them (Objective::group).
-enum class MapTerm
-{
-  Barrier,
-  MeshQuality, ///< with the coverage term (CoverageEnergy)
-  Approximation,
-  Landmarks,
-  Distortion,
-};
-
-/// Weights of the energy's terms, already divided by the number of inputs
-/// (or pairs) as in DESIGN.md section 1.3 (0: term off).
-struct MapEnergyWeights
-{
-  double barrier = 0.0;
-  double mesh = 0.0;
-  double approximation = 0.0; // includes 1 / eps^2 for the soft term
-  double landmark = 0.0;
-  double map = 0.0;
-  /// Coverage (CoverageEnergy), in the mesh-quality group.
-  double coverage = 0.0;
-  /// Hard approximation bound per input (unit-area units of that input);
-  /// empty: the soft term. With a bound, `approximation` is the barrier's
-  /// weight (no 1 / eps^2).
-  std::vector<double> bounds;
-  double bound(int i) const { return this->bounds.empty() ? 0.0 : this->bounds[i]; }
-  /// > 1: a triangle that inverts on a sphere at the full Newton step gets
-  /// its barrier weight on that sphere multiplied by this, up to
-  /// MaxBarrierRaises times (see CommonTriangulation::raiseBarrier); 1: one
-  /// weight for every triangle.
-  double barrierRaise = 1.0;
-  /// Project the barrier's exact Hessian (eigenvalue clamp) instead of using
-  /// its cheap Gauss-Newton form; worth it where the barrier dominates (the
-  /// landmark phase), not where its weight is tiny.
-  bool exactBarrierHessian = false;
-};
 
 /// Per-input values of one vertex. Remeshing copies vertex data for every
 /// candidate edit it evaluates, so the values of up to four inputs live
@@ -139,8 +101,6 @@ public:
   /// inputs by a walk from the current lift triangles.
   void relocate(MapVertex& vertex) const;
 
-  /// The energy weights in use; changing them changes every energy below.
-  MapEnergyWeights weights;
   /// Whether samples are assigned to faces (off while the approximation term
   /// is off: the landmark phase). Turning it on assigns them from scratch.
   bool tracksSamples() const { return this->TrackSamples; }
@@ -155,44 +115,6 @@ public:
   /// Input i's area per sphere area under a triangle of T: the mean over its
   /// corners' lift triangles a, b, c of input i (CoverageEnergy's density).
   double coverageDensity(int i, int a, int b, int c) const;
-
-  /// The weighted per-triangle terms of one triangle that do not depend on
-  /// its target length, and its lifted triangles' Gram entries (which the
-  /// mesh-quality term needs with the length). Remeshing computes them once
-  /// and asks two questions: triangleEnergyBound before it walks on the
-  /// spheres for the length, triangleEnergy after.
-  struct TriangleTerms
-  {
-    bool valid = true; ///< false: a barrier term is infinite
-    PerInput<double> barrier, coverage;
-    PerInput<std::array<double, 3>> lifted;
-    /// Per pair of the map distortion term.
-    PerInput<double> map;
-  };
-  TriangleTerms triangleTerms(const MapVertex& a, const MapVertex& b, const MapVertex& c) const;
-
-  /// Energy of the per-triangle terms (barrier, mesh quality, coverage, map
-  /// distortion) of one triangle, weighted; +inf if invalid.
-  double triangleEnergy(const TriangleTerms& terms, double length) const;
-  double triangleEnergy(const MapVertex& a,
-    const MapVertex& b,
-    const MapVertex& c,
-    double length) const
-  {
-    return this->triangleEnergy(this->triangleTerms(a, b, c), length);
-  }
-  /// A lower bound of triangleEnergy(terms, length) over every length, with
-  /// the same terms summed in the same order (so it holds in floating point
-  /// as well): the mesh-quality term at its smallest value over lengths
-  /// (meshQualityBound). Every term is >= 0, so a sum of bounds that already
-  /// exceeds what an edit may cost rejects it without any target length.
-  double triangleEnergyBound(const TriangleTerms& terms) const;
-  /// Weighted approximation energy of sample s of input i in a triangle.
-  double sampleEnergy(int i,
-    int s,
-    const MapVertex& a,
-    const MapVertex& b,
-    const MapVertex& c) const;
 
   /// Distance of every approximation sample of input i from its base point
   /// on T (unit-area units), in the faces the samples are assigned to.
@@ -211,25 +133,12 @@ public:
     return this->Mesh.property(this->G[i], v);
   }
 
-  /// Energy of a local configuration: triangles over `vertices` whose
-  /// triangleEnergy values are `triangleEnergies`, plus the samples of each
-  /// input (which must lie in the union of the triangles on that input's
-  /// sphere). `assignment`, if given, receives the local triangle of each
-  /// sample; a sample in no triangle makes the configuration invalid (+inf).
-  /// `perTriangle`, if given, receives each triangle's energy with its
-  /// samples'.
-  double localEnergy(const std::vector<MapVertex>& vertices,
-    const std::vector<std::array<int, 3>>& triangles,
-    const std::vector<double>& triangleEnergies,
-    const std::vector<std::vector<int>>& samples,
-    LocalAssignment* assignment,
-    std::vector<double>* perTriangle = nullptr) const;
-
-  /// Energy of each face (its per-triangle terms plus its samples' terms),
-  /// cached for a remeshing round: remeshing reads the energy an edit removes
-  /// from here instead of recomputing it, and stores the new faces' energies.
-  /// Valid only while no vertex moves and the weights stay the same.
-  void updateFaceEnergies();
+  /// Energy of each face (its per-triangle terms plus its samples' terms)
+  /// under one phase's energy, cached for a remeshing round
+  /// (MapEnergy::updateFaceEnergies): remeshing reads the energy an edit
+  /// removes from here instead of recomputing it, and stores the new faces'
+  /// energies. Valid only while no vertex moves and the phase stays.
+  void setFaceEnergiesValid() { this->FaceEnergiesValid = true; }
   void invalidateFaceEnergies() { this->FaceEnergiesValid = false; }
   bool faceEnergiesValid() const { return this->FaceEnergiesValid; }
   double faceEnergy(OpenMesh::FaceHandle f) const { return this->Mesh.property(this->Energy, f); }
@@ -261,8 +170,12 @@ public:
   };
   /// Garbage-collects the mesh and fills a snapshot and the sphere points
   /// (g of input i at i * vertices + v); landmark vertices are locked when
-  /// `lockLandmarks`.
-  void snapshot(Snapshot& snapshot, SpherePoints& points, bool lockLandmarks);
+  /// `lockLandmarks`. The coverage densities and barrier scales are filled
+  /// where `weights` use them.
+  void snapshot(Snapshot& snapshot,
+    SpherePoints& points,
+    bool lockLandmarks,
+    const MapEnergyWeights& weights);
   /// Re-locates lifts and sample triangles for moved points (parallel
   /// walks); false if an embedding's degree is not 1.
   bool update(Snapshot& snapshot, const SpherePoints& points) const;
@@ -272,7 +185,7 @@ public:
   std::vector<int> invertedCorners(const Snapshot& snapshot, const SpherePoints& points) const;
   /// How often a triangle's barrier weight on one sphere is raised at most.
   static constexpr int MaxBarrierRaises = 3;
-  /// Raises the barrier weight (by weights.barrierRaise, up to
+  /// Raises the barrier weight (by `raise` > 1, up to
   /// MaxBarrierRaises times per triangle and sphere) of the snapshot's
   /// triangles that are not positively oriented at `points`, a Newton step's
   /// full trial. The step is cut by the few triangles it runs through: their
@@ -282,27 +195,11 @@ public:
   /// the barrier stays tiny everywhere else. A triangle made by an edit
   /// starts unraised (clearBarrierRaise); remeshing compares energies without
   /// the raise.
-  void raiseBarrier(const Snapshot& snapshot, const SpherePoints& points);
+  void raiseBarrier(const Snapshot& snapshot, const SpherePoints& points, double raise);
   void clearBarrierRaise(OpenMesh::FaceHandle f);
   /// Writes moved points, lifts and sample assignments back into the mesh.
   void writeBack(const Snapshot& snapshot, const SpherePoints& points);
 
-  /// Builds the objective of the current weights over a snapshot (the
-  /// snapshot must outlive the objective's use), each term in the group of
-  /// its MapTerm. Landmark targets per input.
-  void buildObjective(const Snapshot& snapshot,
-    const std::vector<std::map<int, Eigen::Vector3d>>& landmarkTargets,
-    Objective& objective) const;
-
-  /// Total energy (weighted) from the mesh, for tests of local changes.
-  double totalEnergy();
-
-private:
-  /// Moves vertex v on sphere i to g in input i's triangle liftTriangle
-  /// (the only writer of a vertex's sphere point, lift triangle and lift,
-  /// and of its mesh point: the lift onto input 0).
-  void setSpherePoint(OpenMesh::VertexHandle v, int i, const Eigen::Vector3d& g, int liftTriangle);
-  void assignSamplesFromScratch();
   /// Calls function(face, a, b, c) for every face with its corners' data,
   /// in parallel: function may write that face's properties only.
   template<typename Function>
@@ -325,6 +222,12 @@ private:
     }
   }
 
+private:
+  /// Moves vertex v on sphere i to g in input i's triangle liftTriangle
+  /// (the only writer of a vertex's sphere point, lift triangle and lift,
+  /// and of its mesh point: the lift onto input 0).
+  void setSpherePoint(OpenMesh::VertexHandle v, int i, const Eigen::Vector3d& g, int liftTriangle);
+  void assignSamplesFromScratch();
   std::vector<PreparedInput>& Surfaces;
   std::vector<std::array<int, 2>> Pairs;
   HalfedgeMesh Mesh;

@@ -12,7 +12,10 @@
 namespace surfacemaps
 {
 
-void CommonTriangulation::snapshot(Snapshot& s, SpherePoints& points, bool lockLandmarks)
+void CommonTriangulation::snapshot(Snapshot& s,
+  SpherePoints& points,
+  bool lockLandmarks,
+  const MapEnergyWeights& weights)
 {
   const int n = this->numberOfInputs();
   this->Mesh.garbage_collection();
@@ -49,7 +52,7 @@ void CommonTriangulation::snapshot(Snapshot& s, SpherePoints& points, bool lockL
     }
   }
   s.densities.assign(n, {});
-  if (this->weights.coverage > 0.0)
+  if (weights.coverage > 0.0)
   {
     for (int i = 0; i < n; ++i)
     {
@@ -62,7 +65,7 @@ void CommonTriangulation::snapshot(Snapshot& s, SpherePoints& points, bool lockL
     }
   }
   s.barrierScales.assign(n, {});
-  if (this->weights.barrierRaise > 1.0)
+  if (weights.barrierRaise > 1.0)
   {
     for (int i = 0; i < n; ++i)
     {
@@ -70,7 +73,7 @@ void CommonTriangulation::snapshot(Snapshot& s, SpherePoints& points, bool lockL
       for (auto f : this->Mesh.faces())
       {
         s.barrierScales[i].push_back(
-          std::pow(this->weights.barrierRaise, this->Mesh.property(this->BarrierRaises[i], f)));
+          std::pow(weights.barrierRaise, this->Mesh.property(this->BarrierRaises[i], f)));
       }
     }
   }
@@ -110,9 +113,9 @@ std::vector<int> CommonTriangulation::invertedCorners(const Snapshot& s,
   return corners;
 }
 
-void CommonTriangulation::raiseBarrier(const Snapshot& s, const SpherePoints& points)
+void CommonTriangulation::raiseBarrier(const Snapshot& s, const SpherePoints& points, double raise)
 {
-  if (!(this->weights.barrierRaise > 1.0))
+  if (!(raise > 1.0))
   {
     return;
   }

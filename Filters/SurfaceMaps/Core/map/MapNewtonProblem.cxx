@@ -5,30 +5,33 @@ namespace surfacemaps
 {
 
 MapNewtonProblem::MapNewtonProblem(CommonTriangulation& T,
+  const MapEnergy& energy,
   const std::vector<std::map<int, Eigen::Vector3d>>& targets,
   Objective& objective,
   SpherePoints& points,
   bool lockLandmarks,
   int blockInputs)
   : T(T)
+  , Energy(energy)
   , Targets(targets)
-  , Energy(&objective)
+  , InUse(&objective)
   , BlockInputs(blockInputs)
 {
-  T.snapshot(this->State, points, lockLandmarks);
-  T.buildObjective(this->State, targets, objective);
+  T.snapshot(this->State, points, lockLandmarks, energy.weights());
+  energy.buildObjective(this->State, targets, objective);
 }
 
 MapNewtonProblem::MapNewtonProblem(const MapNewtonProblem& problem)
   : T(problem.T)
+  , Energy(problem.Energy)
   , Targets(problem.Targets)
   , State(problem.State)
   , OwnObjective(std::make_unique<Objective>())
   , BlockInputs(problem.BlockInputs)
 {
   // The objective reads the snapshot it is built over: this copy's own.
-  this->Energy = this->OwnObjective.get();
-  this->T.buildObjective(this->State, this->Targets, *this->Energy);
+  this->InUse = this->OwnObjective.get();
+  this->Energy.buildObjective(this->State, this->Targets, *this->InUse);
 }
 
 bool MapNewtonProblem::accept(const SpherePoints& trial)
@@ -40,7 +43,7 @@ std::vector<int> MapNewtonProblem::blockingPoints(const SpherePoints& trial)
 {
   if (!this->Raised)
   {
-    this->T.raiseBarrier(this->State, trial);
+    this->T.raiseBarrier(this->State, trial, this->Energy.weights().barrierRaise);
     this->Raised = true;
   }
   return this->T.invertedCorners(this->State, trial);

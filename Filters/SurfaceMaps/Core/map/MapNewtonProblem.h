@@ -6,6 +6,7 @@
 #pragma once
 
 #include "map/CommonTriangulation.h"
+#include "map/MapEnergy.h"
 #include "optimisation/NewtonProblem.h"
 
 #include <Eigen/Core>
@@ -21,18 +22,20 @@ class MapNewtonProblem final : public NewtonProblem
 {
 public:
   /// Takes a snapshot of T into `points` (landmark vertices locked when
-  /// `lockLandmarks`) and builds `objective` over it (kept by the caller
+  /// `lockLandmarks`) and builds `objective`, the phase's `energy` over it
+  /// (kept by the caller
   /// across steps: an unchanged Hessian pattern keeps the solver's symbolic
   /// analysis). `blockInputs`: solve with one block per embedding from this
   /// many inputs on (0: never; SurfaceMapOptions::blockSolveInputs).
   MapNewtonProblem(CommonTriangulation& T,
+    const MapEnergy& energy,
     const std::vector<std::map<int, Eigen::Vector3d>>& targets,
     Objective& objective,
     SpherePoints& points,
     bool lockLandmarks,
     int blockInputs);
 
-  Objective& objective() override { return *this->Energy; }
+  Objective& objective() override { return *this->InUse; }
   bool accept(const SpherePoints& trial) override;
   /// The corners of triangles that invert on a sphere; the first call of a
   /// step (its full trial) raises their barrier weights for later steps.
@@ -51,10 +54,12 @@ private:
   explicit MapNewtonProblem(const MapNewtonProblem& problem);
 
   CommonTriangulation& T;
+  const MapEnergy& Energy;
   const std::vector<std::map<int, Eigen::Vector3d>>& Targets;
   CommonTriangulation::Snapshot State;
   std::unique_ptr<Objective> OwnObjective;
-  Objective* Energy = nullptr;
+  /// The caller's objective, or a copy's own.
+  Objective* InUse = nullptr;
   int BlockInputs = 0;
   bool Raised = false;
 };

@@ -70,7 +70,8 @@ MapPhaseReport PhaseRunner::run(const MapPhase& phase)
     setCurvatureSizing(
       this->Surfaces, phase.sizingError, this->Options.minEdgeLength, this->Options.maxEdgeLength);
   }
-  this->T.weights = phase.weights;
+  this->Weights = phase.weights;
+  const MapEnergy energy(this->T, phase.weights);
   MapPhaseReport report;
   report.kind = phase.kind;
   // Kept across iterations: an unchanged Hessian pattern (no edit that
@@ -81,9 +82,9 @@ MapPhaseReport PhaseRunner::run(const MapPhase& phase)
   for (int it = 0; it < phase.iterations && !report.converged; ++it)
   {
     // Once the landmarks are reached, T keeps its vertices (StopRule).
-    const RemeshingResult edits = this->remeshing(reached, report);
+    const RemeshingResult edits = this->remeshing(energy, reached, report);
     this->checkVertexBudget(phase, it);
-    const NewtonStepResult step = this->newtonIteration(phase, solver, objective, report);
+    const NewtonStepResult step = this->newtonIteration(phase, energy, solver, objective, report);
     report.iterations = it + 1;
     report.energy = step.energyAfter;
     report.derivativeSeconds += step.derivativeSeconds;
@@ -160,10 +161,12 @@ void PhaseRunner::logPhase(const MapPhase& phase, const MapPhaseReport& report) 
   }
 }
 
-RemeshingResult PhaseRunner::remeshing(bool relaxing, MapPhaseReport& report)
+RemeshingResult PhaseRunner::remeshing(const MapEnergy& energy,
+  bool relaxing,
+  MapPhaseReport& report)
 {
   const auto clock = Clock::now();
-  if (this->T.weights.mesh > 0.0)
+  if (energy.weights().mesh > 0.0)
   {
     this->T.updateTargetLengths();
   }
@@ -175,7 +178,7 @@ RemeshingResult PhaseRunner::remeshing(bool relaxing, MapPhaseReport& report)
     remeshing.collapse = false;
     remeshing.split = false;
   }
-  const RemeshingResult edits = remesh(this->T, remeshing);
+  const RemeshingResult edits = remesh(this->T, energy, remeshing);
   report.splits += edits.splits;
   report.collapses += edits.collapses;
   report.flips += edits.flips;
@@ -184,14 +187,20 @@ RemeshingResult PhaseRunner::remeshing(bool relaxing, MapPhaseReport& report)
 }
 
 NewtonStepResult PhaseRunner::newtonIteration(const MapPhase& phase,
+  const MapEnergy& energy,
   LinearSolver& solver,
   Objective& objective,
   MapPhaseReport& report)
 {
   auto clock = Clock::now();
   SpherePoints points;
-  MapNewtonProblem problem(
-    this->T, this->Targets, objective, points, phase.lockLandmarks, this->Options.blockSolveInputs);
+  MapNewtonProblem problem(this->T,
+    energy,
+    this->Targets,
+    objective,
+    points,
+    phase.lockLandmarks,
+    this->Options.blockSolveInputs);
   report.bookkeepingSeconds += secondsSince(clock);
   NewtonOptions newton;
   newton.maxPointStep = this->Options.maxPointStep;

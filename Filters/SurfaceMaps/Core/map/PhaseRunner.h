@@ -2,6 +2,7 @@
 #pragma once
 
 #include "map/CommonTriangulation.h"
+#include "map/MapEnergy.h"
 #include "map/MapOptions.h"
 #include "map/MapPhase.h"
 #include "map/Remeshing.h"
@@ -31,8 +32,11 @@ public:
     std::vector<std::map<int, Eigen::Vector3d>> targets,
     int plannedIterations);
 
-  /// Sets the phase's weights (and sizing), then iterates.
+  /// Sets the phase's sizing, then iterates on the phase's energy.
   MapPhaseReport run(const MapPhase& phase);
+
+  /// The weights of the last phase run: the final energy's.
+  const MapEnergyWeights& weights() const { return this->Weights; }
 
   /// Largest sphere distance of a landmark vertex from its target.
   double landmarkError() const;
@@ -45,10 +49,11 @@ public:
 private:
   /// Target lengths, then the improving splits, collapses and flips (only
   /// flips when `relaxing`), counted into the report.
-  RemeshingResult remeshing(bool relaxing, MapPhaseReport& report);
+  RemeshingResult remeshing(const MapEnergy& energy, bool relaxing, MapPhaseReport& report);
   /// One projected-Newton step on every embedding of T, written back;
   /// times and T's size into the report.
   NewtonStepResult newtonIteration(const MapPhase& phase,
+    const MapEnergy& energy,
     LinearSolver& solver,
     Objective& objective,
     MapPhaseReport& report);
@@ -74,6 +79,7 @@ private:
   std::vector<std::map<int, Eigen::Vector3d>> Targets;
   int PlannedIterations;
   int Done = 0;
+  MapEnergyWeights Weights;
   /// T's vertex count at most (SurfaceMapOptions::maxVertices).
   std::size_t VertexBudget = 0;
 };

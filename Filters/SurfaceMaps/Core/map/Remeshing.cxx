@@ -43,7 +43,7 @@ struct LocalEdit
   std::vector<double> afterEnergies;
   /// evaluate()'s terms and energies of the triangles the edit creates
   /// (without their samples).
-  std::vector<CommonTriangulation::TriangleTerms> afterTerms;
+  std::vector<MapEnergy::TriangleTerms> afterTerms;
   std::vector<double> afterTriangleEnergies;
 
   /// Back to a new edit, keeping the vectors' storage: candidates are
@@ -117,7 +117,7 @@ void gatherSamples(const CommonTriangulation& T, LocalEdit& edit)
 }
 
 /// The energies of triangles over `vertices` with the given target lengths.
-std::vector<double> triangleEnergies(const CommonTriangulation& T,
+std::vector<double> triangleEnergies(const MapEnergy& energy,
   const std::vector<MapVertex>& vertices,
   const std::vector<std::array<int, 3>>& triangles,
   const std::vector<double>& lengths)
@@ -127,7 +127,7 @@ std::vector<double> triangleEnergies(const CommonTriangulation& T,
   {
     const auto& tri = triangles[t];
     energies[t] =
-      T.triangleEnergy(vertices[tri[0]], vertices[tri[1]], vertices[tri[2]], lengths[t]);
+      energy.triangleEnergy(vertices[tri[0]], vertices[tri[1]], vertices[tri[2]], lengths[t]);
   }
   return energies;
 }
@@ -138,19 +138,20 @@ std::vector<double> triangleEnergies(const CommonTriangulation& T,
 /// triangles alone already cost as much as the old configuration, and
 /// sample energies are >= 0) is answered with NoGain before its samples are
 /// located: cheaper, same edits applied.
-double evaluate(const CommonTriangulation& T,
+double evaluate(const MapEnergy& energy,
   LocalEdit& edit,
   double minGain = -std::numeric_limits<double>::infinity())
 {
+  const CommonTriangulation& T = energy.triangulation();
   if (!edit.beforeCached)
   {
     gatherSamples(T, edit);
   }
   const double before = edit.beforeCached
     ? edit.cachedBefore
-    : T.localEnergy(edit.vertices,
+    : energy.localEnergy(edit.vertices,
         edit.before,
-        triangleEnergies(T, edit.vertices, edit.before, edit.beforeLengths),
+        triangleEnergies(energy, edit.vertices, edit.before, edit.beforeLengths),
         edit.samples,
         nullptr);
   std::vector<MapVertex>& afterVertices = edit.vertices;
@@ -176,16 +177,17 @@ double evaluate(const CommonTriangulation& T,
   // at their smallest over all target lengths (no walk on any sphere), then
   // with the target lengths.
   const bool bounded = std::isfinite(minGain) && std::isfinite(before);
-  std::vector<CommonTriangulation::TriangleTerms>& terms = edit.afterTerms;
+  std::vector<MapEnergy::TriangleTerms>& terms = edit.afterTerms;
   terms.resize(edit.after.size());
   double bound = 0.0;
   for (std::size_t t = 0; t < edit.after.size(); ++t)
   {
     const auto& tri = edit.after[t];
-    terms[t] = T.triangleTerms(afterVertices[tri[0]], afterVertices[tri[1]], afterVertices[tri[2]]);
+    terms[t] =
+      energy.triangleTerms(afterVertices[tri[0]], afterVertices[tri[1]], afterVertices[tri[2]]);
     if (bounded)
     {
-      bound += T.triangleEnergyBound(terms[t]);
+      bound += energy.triangleEnergyBound(terms[t]);
       if (!(before - bound > minGain))
       {
         return NoGain;
@@ -199,12 +201,12 @@ double evaluate(const CommonTriangulation& T,
   for (std::size_t t = 0; t < edit.after.size(); ++t)
   {
     const auto& tri = edit.after[t];
-    if (T.weights.mesh > 0.0)
+    if (energy.weights().mesh > 0.0)
     {
       edit.afterLengths[t] =
         T.targetLength(afterVertices[tri[0]], afterVertices[tri[1]], afterVertices[tri[2]]);
     }
-    energies[t] = T.triangleEnergy(terms[t], edit.afterLengths[t]);
+    energies[t] = energy.triangleEnergy(terms[t], edit.afterLengths[t]);
     if (bounded)
     {
       triangles += energies[t];
@@ -215,7 +217,7 @@ double evaluate(const CommonTriangulation& T,
     }
   }
   gatherSamples(T, edit);
-  const double after = T.localEnergy(
+  const double after = energy.localEnergy(
     afterVertices, edit.after, energies, edit.samples, &edit.assignment, &edit.afterEnergies);
   if (!std::isfinite(before) || !std::isfinite(after))
   {
@@ -397,10 +399,15 @@ bool buildFlip(const CommonTriangulation& T, OpenMesh::EdgeHandle e, LocalEdit& 
   return true;
 }
 
-/// After an edit: the faces' target lengths and samples from the local edit.
-void writeFaces(CommonTriangulation& T, const LocalEdit& edit, const std::vector<FaceHandle>& faces)
+/// The faces an applied edit made, each matched to the triangle the edit
+/// evaluated for it, for the edit's handlers.
+EditedFaces editedFaces(const CommonTriangulation& T,
+  const LocalEdit& edit,
+  const std::vector<FaceHandle>& faces)
 {
   const HalfedgeMesh& mesh = T.mesh();
+  EditedFaces edited;
+  edited.faces = faces;
   for (FaceHandle f : faces)
   {
     std::array<VertexHandle, 3> corners;
@@ -426,57 +433,53 @@ void writeFaces(CommonTriangulation& T, const LocalEdit& edit, const std::vector
     {
       throw std::logic_error("remeshing: a face after an edit is not one the edit evaluated");
     }
-    T.setTargetLength(f, edit.afterLengths[match]);
-    T.clearBarrierRaise(f);
-    T.setFaceEnergy(f, edit.afterEnergies[match]);
-    if (T.tracksSamples())
-    {
-      for (int i = 0; i < T.numberOfInputs(); ++i)
-      {
-        std::vector<int>& samples = T.faceSamples(f, i);
-        samples.clear();
-        for (std::size_t k = 0; k < edit.samples[i].size(); ++k)
-        {
-          if (edit.assignment[i][k] == match)
-          {
-            samples.push_back(edit.samples[i][k]);
-          }
-        }
-      }
-    }
+    edited.triangle.push_back(match);
+  }
+  edited.lengths = &edit.afterLengths;
+  edited.energies = &edit.afterEnergies;
+  edited.samples = &edit.samples;
+  edited.assignment = &edit.assignment;
+  return edited;
+}
+
+void notify(const std::vector<EditHandler>& handlers, const EditedFaces& edited)
+{
+  for (const EditHandler& handler : handlers)
+  {
+    handler(edited);
   }
 }
 
 template<typename Build, typename Handle>
-double gainOf(const CommonTriangulation& T,
+double gainOf(const MapEnergy& energy,
   Handle handle,
   Build build,
   double minGain = -std::numeric_limits<double>::infinity())
 {
   thread_local LocalEdit edit;
   edit.clear();
-  if (!build(T, handle, edit))
+  if (!build(energy.triangulation(), handle, edit))
   {
     return NoGain;
   }
-  return evaluate(T, edit, minGain);
+  return evaluate(energy, edit, minGain);
 }
 
 /// Builds and evaluates an edit; true (and the gain in `applied`) when it
 /// is possible and gains more than minGain.
 template<typename Build, typename Handle>
-bool worthApplying(const CommonTriangulation& T,
+bool worthApplying(const MapEnergy& energy,
   Handle handle,
   Build build,
   double minGain,
   double* applied,
   LocalEdit& edit)
 {
-  if (!build(T, handle, edit))
+  if (!build(energy.triangulation(), handle, edit))
   {
     return false;
   }
-  const double gain = evaluate(T, edit, minGain);
+  const double gain = evaluate(energy, edit, minGain);
   if (!(gain > minGain))
   {
     return false;
@@ -541,25 +544,30 @@ int pass(std::vector<Handle> candidates, double minGain, Gain gain, Apply apply,
 
 } // namespace
 
-double splitGain(const CommonTriangulation& T, OpenMesh::EdgeHandle e)
+double splitGain(const MapEnergy& energy, OpenMesh::EdgeHandle e)
 {
-  return gainOf(T, e, buildSplit);
+  return gainOf(energy, e, buildSplit);
 }
 
-double collapseGain(const CommonTriangulation& T, OpenMesh::HalfedgeHandle h)
+double collapseGain(const MapEnergy& energy, OpenMesh::HalfedgeHandle h)
 {
-  return gainOf(T, h, buildCollapse);
+  return gainOf(energy, h, buildCollapse);
 }
 
-double flipGain(const CommonTriangulation& T, OpenMesh::EdgeHandle e)
+double flipGain(const MapEnergy& energy, OpenMesh::EdgeHandle e)
 {
-  return gainOf(T, e, buildFlip);
+  return gainOf(energy, e, buildFlip);
 }
 
-bool applySplit(CommonTriangulation& T, OpenMesh::EdgeHandle e, double minGain, double* applied)
+bool applySplit(CommonTriangulation& T,
+  const MapEnergy& energy,
+  const EditHandlers& handlers,
+  OpenMesh::EdgeHandle e,
+  double minGain,
+  double* applied)
 {
   LocalEdit edit;
-  if (!worthApplying(T, e, buildSplit, minGain, applied, edit))
+  if (!worthApplying(energy, e, buildSplit, minGain, applied, edit))
   {
     return false;
   }
@@ -569,17 +577,19 @@ bool applySplit(CommonTriangulation& T, OpenMesh::EdgeHandle e, double minGain, 
   mesh.split(e, m);
   T.setVertex(m, edit.moved);
   edit.handles.push_back(m);
-  writeFaces(T, edit, facesAround(mesh, m));
+  notify(handlers.split, editedFaces(T, edit, facesAround(mesh, m)));
   return true;
 }
 
 bool applyCollapse(CommonTriangulation& T,
+  const MapEnergy& energy,
+  const EditHandlers& handlers,
   OpenMesh::HalfedgeHandle h,
   double minGain,
   double* applied)
 {
   LocalEdit edit;
-  if (!worthApplying(T, h, buildCollapse, minGain, applied, edit))
+  if (!worthApplying(energy, h, buildCollapse, minGain, applied, edit))
   {
     return false;
   }
@@ -587,31 +597,39 @@ bool applyCollapse(CommonTriangulation& T,
   const VertexHandle kept = mesh.to_vertex_handle(h);
   mesh.collapse(h);
   T.setVertex(kept, edit.moved);
-  writeFaces(T, edit, facesAround(mesh, kept));
+  notify(handlers.collapse, editedFaces(T, edit, facesAround(mesh, kept)));
   return true;
 }
 
-bool applyFlip(CommonTriangulation& T, OpenMesh::EdgeHandle e, double minGain, double* applied)
+bool applyFlip(CommonTriangulation& T,
+  const MapEnergy& energy,
+  const EditHandlers& handlers,
+  OpenMesh::EdgeHandle e,
+  double minGain,
+  double* applied)
 {
   LocalEdit edit;
-  if (!worthApplying(T, e, buildFlip, minGain, applied, edit))
+  if (!worthApplying(energy, e, buildFlip, minGain, applied, edit))
   {
     return false;
   }
   HalfedgeMesh& mesh = T.mesh();
   mesh.flip(e);
-  writeFaces(T,
-    edit,
-    { mesh.face_handle(mesh.halfedge_handle(e, 0)), mesh.face_handle(mesh.halfedge_handle(e, 1)) });
+  const std::vector<FaceHandle> faces{ mesh.face_handle(mesh.halfedge_handle(e, 0)),
+    mesh.face_handle(mesh.halfedge_handle(e, 1)) };
+  notify(handlers.flip, editedFaces(T, edit, faces));
   return true;
 }
 
-RemeshingResult remesh(CommonTriangulation& T, const RemeshingOptions& options)
+RemeshingResult remesh(CommonTriangulation& T,
+  const MapEnergy& energy,
+  const RemeshingOptions& options)
 {
   const auto start = std::chrono::steady_clock::now();
   RemeshingResult result;
   HalfedgeMesh& mesh = T.mesh();
-  T.updateFaceEnergies();
+  energy.updateFaceEnergies();
+  const EditHandlers handlers = triangulationHandlers(T);
   auto allEdges = [&]()
   {
     std::vector<OpenMesh::EdgeHandle> edges;
@@ -627,8 +645,9 @@ RemeshingResult remesh(CommonTriangulation& T, const RemeshingOptions& options)
     result.splits = pass(
       allEdges(),
       options.minGain,
-      [&](OpenMesh::EdgeHandle e) { return gainOf(T, e, buildSplit, options.minGain); },
-      [&](OpenMesh::EdgeHandle e, double* g) { return applySplit(T, e, options.minGain, g); },
+      [&](OpenMesh::EdgeHandle e) { return gainOf(energy, e, buildSplit, options.minGain); },
+      [&](OpenMesh::EdgeHandle e, double* g)
+      { return applySplit(T, energy, handlers, e, options.minGain, g); },
       result.gain);
   }
   if (options.collapse)
@@ -642,9 +661,9 @@ RemeshingResult remesh(CommonTriangulation& T, const RemeshingOptions& options)
     result.collapses = pass(
       halfedges,
       options.minGain,
-      [&](OpenMesh::HalfedgeHandle h) { return gainOf(T, h, buildCollapse, options.minGain); },
+      [&](OpenMesh::HalfedgeHandle h) { return gainOf(energy, h, buildCollapse, options.minGain); },
       [&](OpenMesh::HalfedgeHandle h, double* g)
-      { return applyCollapse(T, h, options.minGain, g); },
+      { return applyCollapse(T, energy, handlers, h, options.minGain, g); },
       result.gain);
     mesh.garbage_collection();
   }
@@ -653,8 +672,9 @@ RemeshingResult remesh(CommonTriangulation& T, const RemeshingOptions& options)
     result.flips = pass(
       allEdges(),
       options.minGain,
-      [&](OpenMesh::EdgeHandle e) { return gainOf(T, e, buildFlip, options.minGain); },
-      [&](OpenMesh::EdgeHandle e, double* g) { return applyFlip(T, e, options.minGain, g); },
+      [&](OpenMesh::EdgeHandle e) { return gainOf(energy, e, buildFlip, options.minGain); },
+      [&](OpenMesh::EdgeHandle e, double* g)
+      { return applyFlip(T, energy, handlers, e, options.minGain, g); },
       result.gain);
   }
   result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

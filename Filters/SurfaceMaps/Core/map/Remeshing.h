@@ -3,6 +3,8 @@
 #pragma once
 
 #include "map/CommonTriangulation.h"
+#include "map/EditHandlers.h"
+#include "map/MapEnergy.h"
 
 namespace surfacemaps
 {
@@ -26,11 +28,14 @@ struct RemeshingResult
   double seconds = 0.0;
 };
 
-/// One remeshing round: all splits that lower the energy, then all collapses,
-/// then all flips. Candidates of one kind are evaluated in parallel from the
-/// energy of the triangles they change, sorted by gain, re-evaluated and
-/// applied one after the other. Face target lengths must be current.
+/// One remeshing round: all splits that lower `energy` (a phase's energy of
+/// T), then all collapses, then all flips. Candidates of one kind are
+/// evaluated in parallel from the energy of the triangles they change,
+/// sorted by gain, re-evaluated and applied one after the other, T's own
+/// bookkeeping (triangulationHandlers) run after each. Face target lengths
+/// must be current.
 RemeshingResult remesh(CommonTriangulation& T,
+  const MapEnergy& energy,
   const RemeshingOptions& options = RemeshingOptions());
 
 /// Energy decrease of one edit (-inf when the edit is not possible: topology,
@@ -38,20 +43,27 @@ RemeshingResult remesh(CommonTriangulation& T,
 /// outside the new triangles), and the edit itself. Splits and flips act on
 /// an edge; a collapse removes the halfedge's from-vertex and puts the kept
 /// vertex at the edge's midpoint on every sphere.
-double splitGain(const CommonTriangulation& T, OpenMesh::EdgeHandle e);
-double collapseGain(const CommonTriangulation& T, OpenMesh::HalfedgeHandle h);
-double flipGain(const CommonTriangulation& T, OpenMesh::EdgeHandle e);
-/// Apply the edit if its gain exceeds minGain; true if applied, and then the
+double splitGain(const MapEnergy& energy, OpenMesh::EdgeHandle e);
+double collapseGain(const MapEnergy& energy, OpenMesh::HalfedgeHandle h);
+double flipGain(const MapEnergy& energy, OpenMesh::EdgeHandle e);
+/// Apply the edit to T (energy's triangulation) if its gain exceeds
+/// minGain, then the handlers of its kind; true if applied, and then the
 /// gain in `applied` if given.
 bool applySplit(CommonTriangulation& T,
+  const MapEnergy& energy,
+  const EditHandlers& handlers,
   OpenMesh::EdgeHandle e,
   double minGain,
   double* applied = nullptr);
 bool applyCollapse(CommonTriangulation& T,
+  const MapEnergy& energy,
+  const EditHandlers& handlers,
   OpenMesh::HalfedgeHandle h,
   double minGain,
   double* applied = nullptr);
 bool applyFlip(CommonTriangulation& T,
+  const MapEnergy& energy,
+  const EditHandlers& handlers,
   OpenMesh::EdgeHandle e,
   double minGain,
   double* applied = nullptr);

@@ -3,6 +3,7 @@
 #include "map/CommonTriangulation.h"
 #include "map/DistortionRefinement.h"
 #include "map/ErrorBound.h"
+#include "map/MapEnergy.h"
 #include "map/MapTransfer.h"
 #include "map/PhaseRunner.h"
 #include "map/PreparedInput.h"
@@ -89,13 +90,13 @@ double keptLandmarkError(const SurfaceMapResult& result,
 }
 
 /// The final energy of T, by term.
-MapEnergies energyByTerm(CommonTriangulation& T)
+MapEnergies energyByTerm(CommonTriangulation& T, const MapEnergyWeights& weights)
 {
   CommonTriangulation::Snapshot snapshot;
   SpherePoints points;
-  T.snapshot(snapshot, points, false);
+  T.snapshot(snapshot, points, false, weights);
   Objective objective;
-  T.buildObjective(snapshot, {}, objective);
+  MapEnergy(T, weights).buildObjective(snapshot, {}, objective);
   const std::vector<double> values = objective.termValues(points);
   MapEnergies energies;
   for (std::size_t k = 0; k < values.size(); ++k)
@@ -207,7 +208,7 @@ SurfaceMapResult computeSurfaceMap(const std::vector<MapInput>& inputs,
   {
     result.landmarkError = keptLandmarkError(result, inputs, landmarks);
   }
-  result.energy = energyByTerm(T);
+  result.energy = energyByTerm(T, runner.weights());
   result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return result;
 }

@@ -36,7 +36,8 @@ protected:
       s.sizing.assign(s.points.size(), 0.25);
     }
     this->T = std::make_unique<CommonTriangulation>(this->surfaces, mapPairs(PairMode::Star, 2));
-    MapEnergyWeights& w = this->T->weights;
+    this->handlers = triangulationHandlers(*this->T);
+    MapEnergyWeights& w = this->weights;
     w.barrier = 1e-3;
     w.mesh = 1.0;
     w.approximation = 100.0;
@@ -116,9 +117,9 @@ protected:
       {
         continue;
       }
-      const double before = this->T->totalEnergy();
+      const double before = this->totalEnergy();
       EXPECT_TRUE(apply(this->T->mesh().edge_handle(k)));
-      const double after = this->T->totalEnergy();
+      const double after = this->totalEnergy();
       EXPECT_NEAR(before - after, expected, 1e-9 * std::abs(before)) << "edge " << k;
       this->expectInvariants();
       ++done;
@@ -126,8 +127,14 @@ protected:
     return done;
   }
 
+  /// The energy under the fixture's weights.
+  MapEnergy energy() const { return MapEnergy(*this->T, this->weights); }
+  double totalEnergy() const { return this->energy().total(); }
+
   std::vector<PreparedInput> surfaces;
   std::unique_ptr<CommonTriangulation> T;
+  MapEnergyWeights weights;
+  EditHandlers handlers;
 };
 } // namespace
 
@@ -138,28 +145,74 @@ TEST_F(RemeshingTest, InitialStateSatisfiesTheInvariants)
 
 TEST_F(RemeshingTest, SplitChangesTheEnergyByItsLocalGain)
 {
-  const int done = this->checkEdits([&](OpenMesh::EdgeHandle e) { return splitGain(*this->T, e); },
-    [&](OpenMesh::EdgeHandle e) { return applySplit(*this->T, e, Always); },
-    6);
+  const int done =
+    this->checkEdits([&](OpenMesh::EdgeHandle e) { return splitGain(this->energy(), e); },
+      [&](OpenMesh::EdgeHandle e)
+      { return applySplit(*this->T, this->energy(), this->handlers, e, Always); },
+      6);
   EXPECT_EQ(done, 6);
 }
 
 TEST_F(RemeshingTest, CollapseChangesTheEnergyByItsLocalGain)
 {
   const int done = this->checkEdits([&](OpenMesh::EdgeHandle e)
-    { return collapseGain(*this->T, this->T->mesh().halfedge_handle(e, 0)); },
+    { return collapseGain(this->energy(), this->T->mesh().halfedge_handle(e, 0)); },
     [&](OpenMesh::EdgeHandle e)
-    { return applyCollapse(*this->T, this->T->mesh().halfedge_handle(e, 0), Always); },
+    {
+      return applyCollapse(
+        *this->T, this->energy(), this->handlers, this->T->mesh().halfedge_handle(e, 0), Always);
+    },
     6);
   EXPECT_EQ(done, 6);
 }
 
 TEST_F(RemeshingTest, FlipChangesTheEnergyByItsLocalGain)
 {
-  const int done = this->checkEdits([&](OpenMesh::EdgeHandle e) { return flipGain(*this->T, e); },
-    [&](OpenMesh::EdgeHandle e) { return applyFlip(*this->T, e, Always); },
-    6);
+  const int done =
+    this->checkEdits([&](OpenMesh::EdgeHandle e) { return flipGain(this->energy(), e); },
+      [&](OpenMesh::EdgeHandle e)
+      { return applyFlip(*this->T, this->energy(), this->handlers, e, Always); },
+      6);
   EXPECT_EQ(done, 6);
+}
+
+TEST_F(RemeshingTest, EachEditRunsTheHandlersOfItsKindWithTheFacesItMade)
+{
+  // A split makes the 4 faces around the new vertex, a flip 2; a collapse
+  // the faces around the kept vertex. Only the edit's own kind's handlers run.
+  std::vector<std::pair<char, std::size_t>> calls;
+  EditHandlers counting = this->handlers;
+  counting.split.push_back([&](const EditedFaces& f) { calls.emplace_back('s', f.faces.size()); });
+  counting.collapse.push_back(
+    [&](const EditedFaces& f) { calls.emplace_back('c', f.faces.size()); });
+  counting.flip.push_back([&](const EditedFaces& f) { calls.emplace_back('f', f.faces.size()); });
+  HalfedgeMesh& mesh = this->T->mesh();
+  auto first = [&](auto gain) -> OpenMesh::EdgeHandle
+  {
+    for (auto e : mesh.edges())
+    {
+      if (!mesh.status(e).deleted() && std::isfinite(gain(e)))
+      {
+        return e;
+      }
+    }
+    return OpenMesh::EdgeHandle();
+  };
+  const auto s = first([&](OpenMesh::EdgeHandle e) { return splitGain(this->energy(), e); });
+  ASSERT_TRUE(applySplit(*this->T, this->energy(), counting, s, Always));
+  const auto f = first([&](OpenMesh::EdgeHandle e) { return flipGain(this->energy(), e); });
+  ASSERT_TRUE(applyFlip(*this->T, this->energy(), counting, f, Always));
+  const auto c = first([&](OpenMesh::EdgeHandle e)
+    { return collapseGain(this->energy(), mesh.halfedge_handle(e, 0)); });
+  const auto kept = mesh.to_vertex_handle(mesh.halfedge_handle(c, 0));
+  ASSERT_TRUE(
+    applyCollapse(*this->T, this->energy(), counting, mesh.halfedge_handle(c, 0), Always));
+  ASSERT_EQ(calls.size(), 3u);
+  EXPECT_EQ(calls[0], std::make_pair('s', std::size_t(4)));
+  EXPECT_EQ(calls[1], std::make_pair('f', std::size_t(2)));
+  EXPECT_EQ(calls[2].first, 'c');
+  EXPECT_EQ(calls[2].second, static_cast<std::size_t>(mesh.valence(kept)));
+  this->expectInvariants();
 }
 
 TEST_F(RemeshingTest, NoEditTouchesALandmarkEdgeOrJoinsTwoLandmarks)
@@ -170,7 +223,7 @@ TEST_F(RemeshingTest, NoEditTouchesALandmarkEdgeOrJoinsTwoLandmarks)
     if (this->T->landmark(mesh.from_vertex_handle(h)) >= 0 ||
       this->T->landmark(mesh.to_vertex_handle(h)) >= 0)
     {
-      EXPECT_FALSE(std::isfinite(collapseGain(*this->T, h)));
+      EXPECT_FALSE(std::isfinite(collapseGain(this->energy(), h)));
     }
   }
   // Make two landmarks opposite an edge: a flip must not join them.
@@ -180,14 +233,14 @@ TEST_F(RemeshingTest, NoEditTouchesALandmarkEdgeOrJoinsTwoLandmarks)
   const auto y = mesh.to_vertex_handle(mesh.next_halfedge_handle(mesh.opposite_halfedge_handle(h)));
   this->T->setLandmark(x, 7);
   this->T->setLandmark(y, 8);
-  EXPECT_FALSE(std::isfinite(flipGain(*this->T, e)));
+  EXPECT_FALSE(std::isfinite(flipGain(this->energy(), e)));
 }
 
 TEST_F(RemeshingTest, MovedPointsWrittenBackKeepTheInvariants)
 {
   CommonTriangulation::Snapshot snapshot;
   SpherePoints points;
-  this->T->snapshot(snapshot, points, true);
+  this->T->snapshot(snapshot, points, true, this->weights);
   Eigen::VectorXd step(points.numberOfVariables());
   for (Eigen::Index k = 0; k < step.size(); ++k)
   {
@@ -213,7 +266,7 @@ TEST_F(RemeshingTest, InvertedCornersAreTheCornersOfInvertedTriangles)
   // update() that the line search runs refuses the trial.
   CommonTriangulation::Snapshot snapshot;
   SpherePoints points;
-  this->T->snapshot(snapshot, points, false);
+  this->T->snapshot(snapshot, points, false, this->weights);
   EXPECT_TRUE(this->T->invertedCorners(snapshot, points).empty());
   const int moved = snapshot.vertices + snapshot.triangles[0][0];
   std::vector<Eigen::Vector3d> positions = points.positions();
@@ -241,13 +294,13 @@ TEST_F(RemeshingTest, InvertedCornersAreTheCornersOfInvertedTriangles)
 
 TEST_F(RemeshingTest, RoundLowersTheEnergyAndKeepsInvariants)
 {
-  const double before = this->T->totalEnergy();
-  const RemeshingResult r = remesh(*this->T);
+  const double before = this->totalEnergy();
+  const RemeshingResult r = remesh(*this->T, this->energy());
   EXPECT_GT(r.splits + r.collapses + r.flips, 0);
   EXPECT_GT(r.gain, 0.0);
   // The round's edits were chosen with cached face energies: the total must
   // still drop by exactly the sum of their gains.
-  EXPECT_NEAR(before - this->T->totalEnergy(), r.gain, 1e-9 * std::abs(before));
+  EXPECT_NEAR(before - this->totalEnergy(), r.gain, 1e-9 * std::abs(before));
   this->expectInvariants();
 }
 
@@ -255,10 +308,10 @@ TEST_F(RemeshingTest, BarrierIsRaisedWhereATrialInvertsAndEditsStartAfresh)
 {
   CommonTriangulation::Snapshot snapshot;
   SpherePoints points;
-  this->T->snapshot(snapshot, points, false);
+  this->T->snapshot(snapshot, points, false, this->weights);
   EXPECT_TRUE(snapshot.barrierScales[0].empty()) << "raise off: one weight";
-  this->T->weights.barrierRaise = 4.0;
-  this->T->snapshot(snapshot, points, false);
+  this->weights.barrierRaise = 4.0;
+  this->T->snapshot(snapshot, points, false, this->weights);
   ASSERT_EQ(snapshot.barrierScales[1].size(), snapshot.triangles.size());
   for (int i = 0; i < 2; ++i)
   {
@@ -283,10 +336,10 @@ TEST_F(RemeshingTest, BarrierIsRaisedWhereATrialInvertsAndEditsStartAfresh)
   ASSERT_GT(std::count(inverted.begin(), inverted.end(), 1), 0);
   for (int k = 0; k < CommonTriangulation::MaxBarrierRaises + 2; ++k)
   {
-    this->T->raiseBarrier(snapshot, points);
+    this->T->raiseBarrier(snapshot, points, this->weights.barrierRaise);
   }
   const double top = std::pow(4.0, CommonTriangulation::MaxBarrierRaises);
-  this->T->snapshot(snapshot, points, false); // the mesh's points: nothing moved
+  this->T->snapshot(snapshot, points, false, this->weights); // the mesh's points: nothing moved
   for (std::size_t t = 0; t < inverted.size(); ++t)
   {
     EXPECT_EQ(snapshot.barrierScales[0][t], 1.0) << "embedding 0 did not invert";
@@ -302,7 +355,8 @@ TEST_F(RemeshingTest, BarrierIsRaisedWhereATrialInvertsAndEditsStartAfresh)
     for (auto h : mesh.fh_range(f))
     {
       const auto other = mesh.opposite_face_handle(h);
-      if (inverted[t] && inverted[other.idx()] && applyFlip(*this->T, mesh.edge_handle(h), Always))
+      if (inverted[t] && inverted[other.idx()] &&
+        applyFlip(*this->T, this->energy(), this->handlers, mesh.edge_handle(h), Always))
       {
         kept = mesh.face_handle(h);
         flipped = true;
@@ -311,7 +365,7 @@ TEST_F(RemeshingTest, BarrierIsRaisedWhereATrialInvertsAndEditsStartAfresh)
     }
   }
   ASSERT_TRUE(flipped);
-  this->T->snapshot(snapshot, points, false);
+  this->T->snapshot(snapshot, points, false, this->weights);
   int raised = 0;
   for (std::size_t t = 0; t < inverted.size(); ++t)
   {

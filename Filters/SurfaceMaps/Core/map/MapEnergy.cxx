@@ -1,12 +1,11 @@
-// The energy of T (DESIGN.md section 1.3): local energies for remeshing, cached
-// face energies, and the objective of the Newton step.
-#include "map/CommonTriangulation.h"
+// SurfaceMaps engine: MapEnergy.
+#include "map/MapEnergy.h"
 
 #include "energy/BarrierEnergy.h"
 #include "energy/BijectivityBarrier.h"
+#include "energy/CoverageEnergy.h"
 #include "energy/LandmarkEnergy.h"
 #include "energy/MapDistortionEnergy.h"
-#include "energy/CoverageEnergy.h"
 #include "energy/MeshQualityEnergy.h"
 #include "geometry/Predicates.h"
 #include "geometry/SphericalTriangulation.h"
@@ -18,6 +17,12 @@
 namespace surfacemaps
 {
 
+MapEnergy::MapEnergy(CommonTriangulation& T, MapEnergyWeights weights)
+  : T(T)
+  , Weights(std::move(weights))
+{
+}
+
 namespace
 {
 constexpr double Infinity = std::numeric_limits<double>::infinity();
@@ -28,19 +33,13 @@ int group(MapTerm term)
 }
 } // namespace
 
-double CommonTriangulation::coverageDensity(int i, int a, int b, int c) const
-{
-  const std::vector<double>& d = this->Surfaces[i].density;
-  return (d[a] + d[b] + d[c]) / 3.0;
-}
-
-CommonTriangulation::TriangleTerms CommonTriangulation::triangleTerms(const MapVertex& a,
+MapEnergy::TriangleTerms MapEnergy::triangleTerms(const MapVertex& a,
   const MapVertex& b,
   const MapVertex& c) const
 {
-  const MapEnergyWeights& w = this->weights;
+  const MapEnergyWeights& w = this->Weights;
   TriangleTerms terms;
-  for (int i = 0; i < this->numberOfInputs(); ++i)
+  for (int i = 0; i < this->T.numberOfInputs(); ++i)
   {
     if (w.barrier > 0.0)
     {
@@ -61,12 +60,12 @@ CommonTriangulation::TriangleTerms CommonTriangulation::triangleTerms(const MapV
       terms.coverage.push_back(w.coverage *
         coverageEnergy<double>({ a.g[i], b.g[i], c.g[i] },
           { a.lifted[i], b.lifted[i], c.lifted[i] },
-          this->coverageDensity(i, a.liftTriangle[i], b.liftTriangle[i], c.liftTriangle[i])));
+          this->T.coverageDensity(i, a.liftTriangle[i], b.liftTriangle[i], c.liftTriangle[i])));
     }
   }
   if (w.map > 0.0)
   {
-    for (const auto& pair : this->Pairs)
+    for (const auto& pair : this->T.pairs())
     {
       const int i = pair[0], j = pair[1];
       terms.map.push_back(w.map *
@@ -83,7 +82,7 @@ namespace
 /// mesh quality, coverage; then the pairs' distortion), the mesh-quality
 /// term of input i given by meshTerm(i).
 template<typename MeshTerm>
-double sumOfTerms(const CommonTriangulation::TriangleTerms& terms, int inputs, MeshTerm meshTerm)
+double sumOfTerms(const MapEnergy::TriangleTerms& terms, int inputs, MeshTerm meshTerm)
 {
   if (!terms.valid)
   {
@@ -113,91 +112,44 @@ double sumOfTerms(const CommonTriangulation::TriangleTerms& terms, int inputs, M
 }
 } // namespace
 
-double CommonTriangulation::triangleEnergy(const TriangleTerms& terms, double length) const
+double MapEnergy::triangleEnergy(const TriangleTerms& terms, double length) const
 {
-  const double w = this->weights.mesh;
+  const double w = this->Weights.mesh;
   return sumOfTerms(terms,
-    this->numberOfInputs(),
+    this->T.numberOfInputs(),
     [&](int i) { return w * meshQualityOfGram<double>(terms.lifted[i], length); });
 }
 
-double CommonTriangulation::triangleEnergyBound(const TriangleTerms& terms) const
+double MapEnergy::triangleEnergyBound(const TriangleTerms& terms) const
 {
-  const double w = this->weights.mesh;
+  const double w = this->Weights.mesh;
   return sumOfTerms(
-    terms, this->numberOfInputs(), [&](int i) { return w * meshQualityBound(terms.lifted[i]); });
+    terms, this->T.numberOfInputs(), [&](int i) { return w * meshQualityBound(terms.lifted[i]); });
 }
 
-double CommonTriangulation::sampleEnergy(int i,
+double MapEnergy::sampleEnergy(int i,
   int s,
   const MapVertex& a,
   const MapVertex& b,
   const MapVertex& c) const
 {
-  const ApproximationSamples& samples = this->Surfaces[i].samples;
+  const ApproximationSamples& samples = this->T.surface(i).samples;
   const double d2 = squaredBaseDistance<double>(samples.spherePoints[s],
     samples.positions[s],
     { a.g[i], b.g[i], c.g[i] },
     { a.lifted[i], b.lifted[i], c.lifted[i] });
   return approximationEnergy<double>(
-    d2, this->weights.approximation * samples.weights[s], this->weights.bound(i));
+    d2, this->Weights.approximation * samples.weights[s], this->Weights.bound(i));
 }
 
-std::vector<double> CommonTriangulation::baseDistances(int i) const
-{
-  const ApproximationSamples& samples = this->Surfaces[i].samples;
-  std::vector<double> distances(samples.positions.size(), Infinity);
-  for (auto f : this->Mesh.faces())
-  {
-    const std::vector<int>& inside = this->faceSamples(f, i);
-    if (inside.empty())
-    {
-      continue;
-    }
-    auto fv = this->Mesh.cfv_iter(f);
-    const MapVertex a = this->vertex(*fv);
-    const MapVertex b = this->vertex(*++fv);
-    const MapVertex c = this->vertex(*++fv);
-    for (int s : inside)
-    {
-      distances[s] = std::sqrt(squaredBaseDistance<double>(samples.spherePoints[s],
-        samples.positions[s],
-        { a.g[i], b.g[i], c.g[i] },
-        { a.lifted[i], b.lifted[i], c.lifted[i] }));
-    }
-  }
-  return distances;
-}
-
-bool CommonTriangulation::validTriangle(const MapVertex& a,
-  const MapVertex& b,
-  const MapVertex& c) const
-{
-  for (int i = 0; i < this->numberOfInputs(); ++i)
-  {
-    if (!validOnSphere(a.g[i], b.g[i], c.g[i]))
-    {
-      return false;
-    }
-  }
-  return true;
-}
-
-bool CommonTriangulation::validOnSphere(const Eigen::Vector3d& a,
-  const Eigen::Vector3d& b,
-  const Eigen::Vector3d& c)
-{
-  return a.dot(b.cross(c)) > minDet && orient3dOrigin(a, b, c) > 0;
-}
-
-double CommonTriangulation::localEnergy(const std::vector<MapVertex>& vertices,
+double MapEnergy::localEnergy(const std::vector<MapVertex>& vertices,
   const std::vector<std::array<int, 3>>& triangles,
   const std::vector<double>& triangleEnergies,
   const std::vector<std::vector<int>>& samples,
   LocalAssignment* assignment,
   std::vector<double>* perTriangle) const
 {
-  const int n = this->numberOfInputs();
+  const int n = this->T.numberOfInputs();
   double energy = 0.0;
   for (double e : triangleEnergies)
   {
@@ -211,13 +163,13 @@ double CommonTriangulation::localEnergy(const std::vector<MapVertex>& vertices,
   {
     assignment->assign(n, {});
   }
-  if (this->TrackSamples && !samples.empty())
+  if (this->T.tracksSamples() && !samples.empty())
   {
     for (int i = 0; i < n; ++i)
     {
       for (int s : samples[i])
       {
-        const Eigen::Vector3d& q = this->Surfaces[i].samples.spherePoints[s];
+        const Eigen::Vector3d& q = this->T.surface(i).samples.spherePoints[s];
         int found = -1;
         for (std::size_t t = 0; t < triangles.size() && found < 0; ++t)
         {
@@ -236,7 +188,7 @@ double CommonTriangulation::localEnergy(const std::vector<MapVertex>& vertices,
         {
           (*assignment)[i].push_back(found);
         }
-        if (this->weights.approximation > 0.0)
+        if (this->Weights.approximation > 0.0)
         {
           const auto& tri = triangles[found];
           const double e =
@@ -253,36 +205,36 @@ double CommonTriangulation::localEnergy(const std::vector<MapVertex>& vertices,
   return std::isfinite(energy) ? energy : Infinity;
 }
 
-void CommonTriangulation::updateFaceEnergies()
+void MapEnergy::updateFaceEnergies() const
 {
-  const int n = this->numberOfInputs();
-  this->forEachFace(
+  const int n = this->T.numberOfInputs();
+  this->T.forEachFace(
     [this, n](OpenMesh::FaceHandle f, const MapVertex& a, const MapVertex& b, const MapVertex& c)
     {
-      double energy = this->triangleEnergy(a, b, c, this->targetLength(f));
-      if (this->TrackSamples && this->weights.approximation > 0.0)
+      double energy = this->triangleEnergy(a, b, c, this->T.targetLength(f));
+      if (this->T.tracksSamples() && this->Weights.approximation > 0.0)
       {
         for (int i = 0; i < n; ++i)
         {
-          for (int s : this->faceSamples(f, i))
+          for (int s : this->T.faceSamples(f, i))
           {
             energy += this->sampleEnergy(i, s, a, b, c);
           }
         }
       }
-      this->Mesh.property(this->Energy, f) = energy;
+      this->T.setFaceEnergy(f, energy);
     });
-  this->FaceEnergiesValid = true;
+  this->T.setFaceEnergiesValid();
 }
 
-void CommonTriangulation::buildObjective(const Snapshot& s,
+void MapEnergy::buildObjective(const CommonTriangulation::Snapshot& s,
   const std::vector<std::map<int, Eigen::Vector3d>>& landmarkTargets,
   Objective& objective) const
 {
   objective.clear();
-  const MapEnergyWeights& w = this->weights;
+  const MapEnergyWeights& w = this->Weights;
   const int nv = s.vertices;
-  for (int i = 0; i < this->numberOfInputs(); ++i)
+  for (int i = 0; i < this->T.numberOfInputs(); ++i)
   {
     if (w.barrier > 0.0)
     {
@@ -318,10 +270,10 @@ void CommonTriangulation::buildObjective(const Snapshot& s,
         w.coverage,
         group(MapTerm::MeshQuality));
     }
-    if (w.approximation > 0.0 && this->TrackSamples)
+    if (w.approximation > 0.0 && this->T.tracksSamples())
     {
       ApproximationEnergy approximation;
-      approximation.samples = &this->Surfaces[i].samples;
+      approximation.samples = &this->T.surface(i).samples;
       approximation.sampleTriangle = &s.sampleTriangle[i];
       approximation.triangles = &s.triangles;
       approximation.lifts = &s.lifts;
@@ -334,9 +286,9 @@ void CommonTriangulation::buildObjective(const Snapshot& s,
     if (w.landmark > 0.0 && i < static_cast<int>(landmarkTargets.size()))
     {
       LandmarkEnergy landmarks;
-      for (auto v : this->Mesh.vertices())
+      for (auto v : this->T.mesh().vertices())
       {
-        const auto it = landmarkTargets[i].find(this->Mesh.property(this->Landmark, v));
+        const auto it = landmarkTargets[i].find(this->T.landmark(v));
         if (it != landmarkTargets[i].end())
         {
           landmarks.points_.push_back(i * nv + v.idx());
@@ -351,7 +303,7 @@ void CommonTriangulation::buildObjective(const Snapshot& s,
   }
   if (w.map > 0.0)
   {
-    for (const auto& pair : this->Pairs)
+    for (const auto& pair : this->T.pairs())
     {
       MapDistortionEnergy map{ &s.triangles, &s.lifts, pair[0] * nv, pair[1] * nv };
       objective.addTerm(std::make_shared<ElementTerm<6, MapDistortionEnergy>>("map", map),
@@ -361,11 +313,11 @@ void CommonTriangulation::buildObjective(const Snapshot& s,
   }
 }
 
-double CommonTriangulation::totalEnergy()
+double MapEnergy::total() const
 {
-  Snapshot s;
+  CommonTriangulation::Snapshot s;
   SpherePoints points;
-  this->snapshot(s, points, false);
+  this->T.snapshot(s, points, false, this->Weights);
   Objective objective;
   this->buildObjective(s, {}, objective);
   return objective.value(points);
