@@ -3,7 +3,7 @@
 #include "vtkSurfaceMapsConversion.h"
 #include "vtkSurfaceMapsErrorGuard.h"
 
-#include "base/InputError.h"
+#include "base/Error.h"
 #include "embedding/SphereEmbedding.h"
 #include "geometry/Rotation.h"
 #include "mesh/MeshValidation.h"
@@ -155,7 +155,7 @@ double alignToReference(vtkSphereEmbeddingFilter* self,
   result.certificate = surfacemaps::certifyBijective(result.positions, mesh.triangles());
   if (!result.certificate.bijective)
   {
-    throw std::runtime_error(
+    throw surfacemaps::NoResultError(
       "the rotated embedding is not bijective: " + result.certificate.reason);
   }
   return std::sqrt(sum / static_cast<double>(from.size()));

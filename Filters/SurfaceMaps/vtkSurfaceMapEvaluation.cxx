@@ -3,7 +3,7 @@
 #include "vtkSurfaceMapsConversion.h"
 #include "vtkSurfaceMapsErrorGuard.h"
 
-#include "base/InputError.h"
+#include "base/Error.h"
 #include "geometry/MapMetrics.h"
 #include "geometry/SphericalTriangulation.h"
 #include "mesh/MeshValidation.h"

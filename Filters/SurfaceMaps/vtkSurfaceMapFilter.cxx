@@ -491,8 +491,7 @@ int vtkSurfaceMapFilter::RequestData(vtkInformation*,
   const surfacemaps::ScopedThreadCount threads(this->NumberOfThreads);
   vtkSurfaceMapsErrorGuard::Policy policy;
   policy.InputError.ErrorCode = InvalidInputError;
-  policy.InvalidArgument.ErrorCode = InvalidInputError;
-  policy.RuntimeError = { "no certified map: ", NotCertifiedError };
+  policy.NoResultError = { "no certified map: ", NotCertifiedError };
   policy.OtherError = { "internal error: ", vtkErrorCode::UnknownError };
   policy.AbortedOutputs = outputVector;
   return vtkSurfaceMapsErrorGuard::Run(

@@ -3,7 +3,7 @@
 #include "vtkSurfaceMapsConversion.h"
 
 #include "base/Aborted.h"
-#include "base/InputError.h"
+#include "base/Error.h"
 #include "embedding/SphereEmbedding.h"
 #include "geometry/SphericalTriangulation.h"
 #include "mesh/LandmarkValidation.h"
@@ -221,7 +221,7 @@ std::vector<double> vtkSurfaceMapInputs::Embed(const std::vector<vtkPolyData*>& 
   catch (const surfacemaps::EmbeddingFailure& e)
   {
     const int i = missing[e.index];
-    throw std::runtime_error(Name(inputs[i], i) + ": " + e.what());
+    throw surfacemaps::NoResultError(Name(inputs[i], i) + ": " + e.what());
   }
   return seconds;
 }

@@ -5,7 +5,7 @@
 #include "vtkSurfaceMapsErrorGuard.h"
 #include "vtkSurfaceMapsPointDataTransfer.h"
 
-#include "base/InputError.h"
+#include "base/Error.h"
 #include "geometry/SphericalTriangulation.h"
 #include "map/MapTransfer.h"
 #include "mesh/MeshValidation.h"
@@ -376,8 +376,7 @@ int vtkSurfaceMapTransfer::RequestData(vtkInformation*,
   const vtkSurfaceMapsErrorGuard::Report internal{ "internal error: ", vtkErrorCode::UnknownError };
   vtkSurfaceMapsErrorGuard::Policy policy;
   policy.InputError = { "", InvalidInputError };
-  policy.InvalidArgument = internal;
-  policy.RuntimeError = internal;
+  policy.NoResultError = internal;
   policy.OtherError = internal;
   return vtkSurfaceMapsErrorGuard::Run(
     this,

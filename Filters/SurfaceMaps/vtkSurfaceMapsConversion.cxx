@@ -1,6 +1,6 @@
 #include "vtkSurfaceMapsConversion.h"
 
-#include "base/InputError.h"
+#include "base/Error.h"
 #include "map/MapTransfer.h"
 #include "mesh/LandmarkValidation.h"
 

@@ -1,7 +1,7 @@
 #include "vtkSurfaceMapsErrorGuard.h"
 
 #include "base/Aborted.h"
-#include "base/InputError.h"
+#include "base/Error.h"
 
 #include "vtkAlgorithm.h"
 #include "vtkDemandDrivenPipeline.h"
@@ -50,8 +50,7 @@ vtkSurfaceMapsErrorGuard::Policy vtkSurfaceMapsErrorGuard::MessageOnly(const std
 {
   Policy policy;
   policy.InputError.Prefix = prefix;
-  policy.InvalidArgument.Prefix = prefix;
-  policy.RuntimeError.Prefix = prefix;
+  policy.NoResultError.Prefix = prefix;
   policy.OtherError.Prefix = prefix;
   return policy;
 }
@@ -77,17 +76,11 @@ int vtkSurfaceMapsErrorGuard::Run(vtkAlgorithm* self,
     }
     return 1;
   }
-  catch (const surfacemaps::InputError& e)
+  catch (const surfacemaps::Error& e)
   {
-    return fail(self, policy, policy.InputError, e, clearOutputs);
-  }
-  catch (const std::invalid_argument& e)
-  {
-    return fail(self, policy, policy.InvalidArgument, e, clearOutputs);
-  }
-  catch (const std::runtime_error& e)
-  {
-    return fail(self, policy, policy.RuntimeError, e, clearOutputs);
+    const Report& report =
+      e.kind() == surfacemaps::ErrorKind::Input ? policy.InputError : policy.NoResultError;
+    return fail(self, policy, report, e, clearOutputs);
   }
   catch (const std::exception& e)
   {

@@ -7,10 +7,12 @@
  * - surfacemaps::Aborted (the user aborted) is not an error: the outputs are
  *   cleared, marked DATA_NOT_GENERATED when the policy names them, and Run
  *   returns 1.
- * - surfacemaps::InputError, std::invalid_argument, any other
- *   std::runtime_error and any other std::exception are errors: the outputs
- *   are cleared, the filter's error code is set and its vtkErrorMacro reports
- *   the message as the policy says for that kind, and Run returns 0.
+ * - an engine error (surfacemaps::Error: bad input, or no certified result)
+ *   and any other std::exception (an internal failure) are errors: the
+ *   outputs are cleared, the filter's error code is set and its
+ *   vtkErrorMacro reports the message as the policy says for that kind
+ *   (surfacemaps::ErrorKind, decided by the engine where it throws, not by
+ *   the exception's type), and Run returns 0.
  * Other exception types pass through. What differs between filters (error
  * codes, message prefixes) is data in the Policy, not code in the filter.
  */
@@ -40,10 +42,9 @@ public:
   /// the exception's message as it is and leave the error code alone.
   struct Policy
   {
-    Report InputError;      ///< surfacemaps::InputError
-    Report InvalidArgument; ///< std::invalid_argument
-    Report RuntimeError;    ///< any other std::runtime_error
-    Report OtherError;      ///< any other std::exception
+    Report InputError;    ///< surfacemaps::ErrorKind::Input
+    Report NoResultError; ///< surfacemaps::ErrorKind::NoResult
+    Report OtherError;    ///< any other std::exception: an internal failure
     /// Outputs marked DATA_NOT_GENERATED after an abort: VTK 9.1 would mark
     /// the empty outputs up to date (the ABORTED key arrives in 9.3), so the
     /// next Update would not run. Null: not marked.

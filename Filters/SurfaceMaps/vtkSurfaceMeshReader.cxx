@@ -3,7 +3,7 @@
 #include "vtkSurfaceMapsConversion.h"
 #include "vtkSurfaceMapsErrorGuard.h"
 
-#include "base/InputError.h"
+#include "base/Error.h"
 #include "io/LandmarkReader.h"
 #include "io/LegacyVtkCheck.h"
 #include "io/ObjReader.h"

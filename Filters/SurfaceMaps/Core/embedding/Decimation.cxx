@@ -1,4 +1,5 @@
 #include "embedding/Decimation.h"
+#include "base/Error.h"
 
 #include "mesh/HalfedgeMesh.h"
 
@@ -207,7 +208,7 @@ DecimationResult decimateToTetrahedron(const PolygonMesh& input, const Decimatio
           "decimation: geometric checks relaxed at " + std::to_string(alive) + " vertices");
         continue;
       }
-      throw std::runtime_error(
+      throw NoResultError(
         "decimation stalled at " + std::to_string(alive) + " vertices (is the mesh genus 0?)");
     }
     current.triangles = faceTriangles(mesh);

@@ -3,6 +3,7 @@
 // distortion check), embedAllOnSphere (several meshes on shared threads)
 // and embeddingDistortion.
 #include "embedding/SphereEmbedding.h"
+#include "base/Error.h"
 
 #include "embedding/Decimation.h"
 #include "embedding/Embedder.h"
@@ -300,7 +301,7 @@ SphereEmbeddingResult embedOnSphere(const PolygonMesh& mesh, const SphereEmbeddi
         std::to_string(best->distortion) + ")");
     return finished(std::move(*best), start, options);
   }
-  throw std::runtime_error("no bijective sphere embedding found (" + reasons + ")");
+  throw NoResultError("no bijective sphere embedding found (" + reasons + ")");
 }
 
 } // namespace surfacemaps

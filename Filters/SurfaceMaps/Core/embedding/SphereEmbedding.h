@@ -2,6 +2,7 @@
 #pragma once
 
 #include "base/Aborted.h"
+#include "base/Error.h"
 #include "base/Log.h"
 #include "geometry/SphericalTriangulation.h"
 #include "mesh/PolygonMesh.h"
@@ -93,15 +94,15 @@ struct SphereEmbeddingResult
 /// iterations; every step keeps all triangles positively oriented and the
 /// degree 1. The result is certified with exact predicates; on failure the
 /// embedding is retried with a stronger barrier, then with the barrier alone.
-/// Throws std::runtime_error if no attempt certifies.
+/// Throws NoResultError if no attempt certifies.
 SphereEmbeddingResult embedOnSphere(const PolygonMesh& mesh,
   const SphereEmbeddingOptions& options = SphereEmbeddingOptions());
 
 /// Thrown by embedAllOnSphere when the embedding of mesh `index` fails.
-struct EmbeddingFailure : std::runtime_error
+struct EmbeddingFailure : NoResultError
 {
   EmbeddingFailure(int i, const std::string& message)
-    : std::runtime_error(message)
+    : NoResultError(message)
     , index(i)
   {
   }

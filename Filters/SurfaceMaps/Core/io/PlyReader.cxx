@@ -1,6 +1,6 @@
 #include "io/PlyReader.h"
 
-#include "base/InputError.h"
+#include "base/Error.h"
 #include "io/TextFile.h"
 
 #include <algorithm>

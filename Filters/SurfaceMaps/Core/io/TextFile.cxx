@@ -1,6 +1,6 @@
 #include "io/TextFile.h"
 
-#include "base/InputError.h"
+#include "base/Error.h"
 
 #include <cerrno>
 #include <charconv>

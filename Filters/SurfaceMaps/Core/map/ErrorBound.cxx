@@ -1,4 +1,5 @@
 #include "map/ErrorBound.h"
+#include "base/Error.h"
 
 #include <algorithm>
 #include <cmath>
@@ -132,7 +133,7 @@ std::optional<MapPhase> ErrorBound::next(CommonTriangulation& T)
   {
     if (this->Round == options.boundRefinementRounds)
     {
-      throw std::runtime_error("the error bound " + std::to_string(options.maxError) +
+      throw NoResultError("the error bound " + std::to_string(options.maxError) +
         " of the bounding-box diagonal could not be met after " + std::to_string(this->Round) +
         " refinement rounds: input " + std::to_string(violations.worstInput) + " vertex " +
         std::to_string(violations.worstVertex) + " is at " + std::to_string(violations.worst) +
@@ -169,7 +170,7 @@ void certifyBaseDistances(const CommonTriangulation& T,
     }
     if (!bounds.empty() && !(d < bounds[i]))
     {
-      throw std::runtime_error("input " + std::to_string(i) +
+      throw NoResultError("input " + std::to_string(i) +
         " is not within the error bound: " + std::to_string(d / bounds[i]) + " times the bound");
     }
     largest.push_back(d / surfaces[i].scale);

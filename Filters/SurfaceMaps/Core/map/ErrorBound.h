@@ -17,7 +17,7 @@ namespace surfacemaps
 /// with the sizing shrunk around the vertices beyond boundMargin of the
 /// bound (and those samples weighted 4 times in the soft term) run until
 /// none is left, then one Bound phase with the bound as a barrier instead
-/// of the soft term. Throws std::runtime_error when the bound is still not
+/// of the soft term. Throws NoResultError when the bound is still not
 /// met after boundRefinementRounds.
 class ErrorBound
 {
@@ -46,7 +46,7 @@ private:
 };
 
 /// Distances of every input vertex from its base point on T, checked
-/// against `bounds` (empty: unchecked); throws std::runtime_error naming the
+/// against `bounds` (empty: unchecked); throws NoResultError naming the
 /// input when one is not within. Per input: the largest distance and the
 /// bound, both in the input's own units (0 without bounds).
 void certifyBaseDistances(const CommonTriangulation& T,

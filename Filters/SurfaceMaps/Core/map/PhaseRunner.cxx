@@ -1,4 +1,5 @@
 #include "map/PhaseRunner.h"
+#include "base/Error.h"
 
 #include "base/Aborted.h"
 #include "geometry/Predicates.h"
@@ -122,7 +123,7 @@ void PhaseRunner::checkVertexBudget(const MapPhase& phase, int iteration) const
 {
   if (this->T.mesh().n_vertices() > this->VertexBudget)
   {
-    throw std::runtime_error("the common triangulation reached its vertex budget in the " +
+    throw NoResultError("the common triangulation reached its vertex budget in the " +
       std::string(phaseName(phase.kind)) + " phase (iteration " + std::to_string(iteration + 1) +
       "): " + std::to_string(this->T.mesh().n_vertices()) + " vertices, budget " +
       std::to_string(this->VertexBudget) +

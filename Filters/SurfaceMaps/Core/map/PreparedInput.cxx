@@ -1,4 +1,5 @@
 #include "map/PreparedInput.h"
+#include "base/Error.h"
 
 #include "geometry/Rotation.h"
 #include "geometry/Sizing.h"
@@ -36,17 +37,17 @@ PreparedInput prepareSurface(const MapInput& input, int index)
   const std::size_t nv = input.mesh.points.size();
   if (input.spherePositions.size() != nv)
   {
-    throw std::invalid_argument(inputName(index) + ": " + std::to_string(nv) + " vertices but " +
+    throw InputError(inputName(index) + ": " + std::to_string(nv) + " vertices but " +
       std::to_string(input.spherePositions.size()) + " sphere positions");
   }
   if (!input.landmarks.empty() && input.landmarks.size() != nv)
   {
-    throw std::invalid_argument(inputName(index) + ": landmark array has " +
+    throw InputError(inputName(index) + ": landmark array has " +
       std::to_string(input.landmarks.size()) + " entries, expected " + std::to_string(nv));
   }
   if (!input.sizing.empty() && input.sizing.size() != nv)
   {
-    throw std::invalid_argument(inputName(index) + ": sizing array has " +
+    throw InputError(inputName(index) + ": sizing array has " +
       std::to_string(input.sizing.size()) + " entries, expected " + std::to_string(nv));
   }
   double area = 0.0;
@@ -62,7 +63,7 @@ PreparedInput prepareSurface(const MapInput& input, int index)
   }
   if (!(area > 0.0))
   {
-    throw std::invalid_argument(inputName(index) + " has zero area");
+    throw InputError(inputName(index) + " has zero area");
   }
   s.centre = centre / area;
   s.scale = 1.0 / std::sqrt(area);
@@ -196,7 +197,7 @@ std::vector<std::map<int, int>> landmarkVertices(const std::vector<MapInput>& in
     const std::vector<std::string> defects = checkLandmarkIds(inputs[i].landmarks);
     if (!defects.empty())
     {
-      throw std::invalid_argument(names.back() + " " + defects.front());
+      throw InputError(names.back() + " " + defects.front());
     }
     landmarkIds.push_back(inputs[i].landmarks);
   }
@@ -204,7 +205,7 @@ std::vector<std::map<int, int>> landmarkVertices(const std::vector<MapInput>& in
   {
     if (!defects.empty())
     {
-      throw std::invalid_argument(defects.front());
+      throw InputError(defects.front());
     }
   }
   std::vector<std::map<int, int>> ids(inputs.size());

@@ -1,4 +1,5 @@
 #include "map/SurfaceMap.h"
+#include "base/Error.h"
 
 #include "map/CommonTriangulation.h"
 #include "map/DistortionRefinement.h"
@@ -51,7 +52,7 @@ void liftCommonTriangulation(CommonTriangulation& T,
     result.certificates.push_back(certifyBijective(result.spherePositions[i], result.triangles));
     if (!result.certificates.back().bijective)
     {
-      throw std::runtime_error("the common triangulation's embedding on sphere " +
+      throw NoResultError("the common triangulation's embedding on sphere " +
         std::to_string(i) + " is not bijective: " + result.certificates.back().reason);
     }
     for (auto v : mesh.vertices())
@@ -181,7 +182,7 @@ SurfaceMapResult computeSurfaceMap(const std::vector<MapInput>& inputs,
   const auto start = std::chrono::steady_clock::now();
   if (inputs.empty())
   {
-    throw std::invalid_argument("a surface map needs at least one input");
+    throw InputError("a surface map needs at least one input");
   }
   const std::vector<std::map<int, int>> landmarks = landmarkVertices(inputs);
   // Every input vertex is a sample under an error bound, which must hold for all.

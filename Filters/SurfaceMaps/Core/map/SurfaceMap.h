@@ -59,10 +59,10 @@ struct SurfaceMapResult
 /// flips and projected Newton steps on the N embeddings of T, the
 /// refinements after it, then T certified and lifted onto every input.
 /// Inputs are centred and scaled to unit area internally; results are in the
-/// inputs' own coordinates. Throws std::invalid_argument on inconsistent
-/// input (sizes, landmark ids), std::runtime_error when the result cannot be
-/// certified bijective (or within the error bound), Aborted when the
-/// progress callback stops it.
+/// inputs' own coordinates. Throws InputError on inconsistent input (sizes,
+/// landmark ids), NoResultError when the result cannot be certified
+/// bijective (or within the error bound), Aborted when the progress
+/// callback stops it; anything else is an internal failure.
 SurfaceMapResult computeSurfaceMap(const std::vector<MapInput>& inputs,
   const SurfaceMapOptions& options = SurfaceMapOptions());
 

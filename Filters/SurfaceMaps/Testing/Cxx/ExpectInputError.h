@@ -1,7 +1,7 @@
 // Test helper: an InputError whose message contains a given part.
 #pragma once
 
-#include "base/InputError.h"
+#include "base/Error.h"
 
 #include <gtest/gtest.h>
 

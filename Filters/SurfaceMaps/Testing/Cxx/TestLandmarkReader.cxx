@@ -1,4 +1,4 @@
-#include "base/InputError.h"
+#include "base/Error.h"
 #include "io/LandmarkReader.h"
 
 #include <gtest/gtest.h>

@@ -1,4 +1,4 @@
-#include "base/InputError.h"
+#include "base/Error.h"
 #include "io/ObjReader.h"
 
 #include "ExpectInputError.h"

@@ -1,4 +1,4 @@
-#include "base/InputError.h"
+#include "base/Error.h"
 #include "io/PlyReader.h"
 
 #include "ExpectInputError.h"

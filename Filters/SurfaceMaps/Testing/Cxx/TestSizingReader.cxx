@@ -1,4 +1,4 @@
-#include "base/InputError.h"
+#include "base/Error.h"
 #include "io/SizingReader.h"
 
 #include <gtest/gtest.h>
