@@ -227,6 +227,79 @@ void MapEnergy::updateFaceEnergies() const
   this->T.setFaceEnergiesValid();
 }
 
+void MapEnergy::addInputTerms(const CommonTriangulation::Snapshot& s,
+  int i,
+  const std::vector<std::map<int, Eigen::Vector3d>>& landmarkTargets,
+  Objective& objective) const
+{
+  const MapEnergyWeights& w = this->Weights;
+  const int nv = s.vertices;
+  if (w.barrier > 0.0)
+  {
+    BarrierEnergy barrier;
+    barrier.triangles = s.triangles;
+    barrier.offset = i * nv;
+    barrier.scales = s.barrierScales[i].empty() ? nullptr : s.barrierScales[i].data();
+    if (w.exactBarrierHessian)
+    {
+      objective.addTerm(
+        std::make_shared<ElementTerm<3, BarrierEnergy>>("barrier", std::move(barrier)),
+        w.barrier,
+        group(MapTerm::Barrier));
+    }
+    else
+    {
+      objective.addTerm(std::make_shared<BijectivityBarrierTerm>(std::move(barrier)),
+        w.barrier,
+        group(MapTerm::Barrier));
+    }
+  }
+  if (w.mesh > 0.0)
+  {
+    MeshQualityEnergy mesh{ &s.triangles, &s.lifts, &s.lengths, i * nv };
+    objective.addTerm(std::make_shared<ElementTerm<3, MeshQualityEnergy>>("mesh", mesh),
+      w.mesh,
+      group(MapTerm::MeshQuality));
+  }
+  if (w.coverage > 0.0)
+  {
+    CoverageEnergy coverage{ &s.triangles, &s.lifts, s.densities[i].data(), i * nv };
+    objective.addTerm(std::make_shared<ElementTerm<3, CoverageEnergy>>("coverage", coverage),
+      w.coverage,
+      group(MapTerm::MeshQuality));
+  }
+  if (w.approximation > 0.0 && this->T.tracksSamples())
+  {
+    ApproximationEnergy approximation;
+    approximation.samples = &this->T.surface(i).samples;
+    approximation.sampleTriangle = &s.sampleTriangle[i];
+    approximation.triangles = &s.triangles;
+    approximation.lifts = &s.lifts;
+    approximation.offset = i * nv;
+    approximation.bound = w.bound(i);
+    objective.addTerm(std::make_shared<ApproximationTerm>(approximation),
+      w.approximation,
+      group(MapTerm::Approximation));
+  }
+  if (w.landmark > 0.0 && i < static_cast<int>(landmarkTargets.size()))
+  {
+    LandmarkEnergy landmarks;
+    for (auto v : this->T.mesh().vertices())
+    {
+      const auto it = landmarkTargets[i].find(this->T.landmark(v));
+      if (it != landmarkTargets[i].end())
+      {
+        landmarks.points_.push_back(i * nv + v.idx());
+        landmarks.targets.push_back(it->second);
+      }
+    }
+    objective.addTerm(
+      std::make_shared<ElementTerm<1, LandmarkEnergy>>("landmarks", std::move(landmarks)),
+      w.landmark,
+      group(MapTerm::Landmarks));
+  }
+}
+
 void MapEnergy::buildObjective(const CommonTriangulation::Snapshot& s,
   const std::vector<std::map<int, Eigen::Vector3d>>& landmarkTargets,
   Objective& objective) const
@@ -236,70 +309,7 @@ void MapEnergy::buildObjective(const CommonTriangulation::Snapshot& s,
   const int nv = s.vertices;
   for (int i = 0; i < this->T.numberOfInputs(); ++i)
   {
-    if (w.barrier > 0.0)
-    {
-      BarrierEnergy barrier;
-      barrier.triangles = s.triangles;
-      barrier.offset = i * nv;
-      barrier.scales = s.barrierScales[i].empty() ? nullptr : s.barrierScales[i].data();
-      if (w.exactBarrierHessian)
-      {
-        objective.addTerm(
-          std::make_shared<ElementTerm<3, BarrierEnergy>>("barrier", std::move(barrier)),
-          w.barrier,
-          group(MapTerm::Barrier));
-      }
-      else
-      {
-        objective.addTerm(std::make_shared<BijectivityBarrierTerm>(std::move(barrier)),
-          w.barrier,
-          group(MapTerm::Barrier));
-      }
-    }
-    if (w.mesh > 0.0)
-    {
-      MeshQualityEnergy mesh{ &s.triangles, &s.lifts, &s.lengths, i * nv };
-      objective.addTerm(std::make_shared<ElementTerm<3, MeshQualityEnergy>>("mesh", mesh),
-        w.mesh,
-        group(MapTerm::MeshQuality));
-    }
-    if (w.coverage > 0.0)
-    {
-      CoverageEnergy coverage{ &s.triangles, &s.lifts, s.densities[i].data(), i * nv };
-      objective.addTerm(std::make_shared<ElementTerm<3, CoverageEnergy>>("coverage", coverage),
-        w.coverage,
-        group(MapTerm::MeshQuality));
-    }
-    if (w.approximation > 0.0 && this->T.tracksSamples())
-    {
-      ApproximationEnergy approximation;
-      approximation.samples = &this->T.surface(i).samples;
-      approximation.sampleTriangle = &s.sampleTriangle[i];
-      approximation.triangles = &s.triangles;
-      approximation.lifts = &s.lifts;
-      approximation.offset = i * nv;
-      approximation.bound = w.bound(i);
-      objective.addTerm(std::make_shared<ApproximationTerm>(approximation),
-        w.approximation,
-        group(MapTerm::Approximation));
-    }
-    if (w.landmark > 0.0 && i < static_cast<int>(landmarkTargets.size()))
-    {
-      LandmarkEnergy landmarks;
-      for (auto v : this->T.mesh().vertices())
-      {
-        const auto it = landmarkTargets[i].find(this->T.landmark(v));
-        if (it != landmarkTargets[i].end())
-        {
-          landmarks.points_.push_back(i * nv + v.idx());
-          landmarks.targets.push_back(it->second);
-        }
-      }
-      objective.addTerm(
-        std::make_shared<ElementTerm<1, LandmarkEnergy>>("landmarks", std::move(landmarks)),
-        w.landmark,
-        group(MapTerm::Landmarks));
-    }
+    this->addInputTerms(s, i, landmarkTargets, objective);
   }
   if (w.map > 0.0)
   {

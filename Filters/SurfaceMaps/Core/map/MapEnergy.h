@@ -93,6 +93,13 @@ public:
   double total() const;
 
 private:
+  /// The terms of input i (barrier, mesh quality, coverage, approximation,
+  /// landmarks) in that order.
+  void addInputTerms(const CommonTriangulation::Snapshot& snapshot,
+    int i,
+    const std::vector<std::map<int, Eigen::Vector3d>>& landmarkTargets,
+    Objective& objective) const;
+
   CommonTriangulation& T;
   MapEnergyWeights Weights;
 };

@@ -1,5 +1,6 @@
 // The surface map schedule on small inputs with short schedules.
 #include "MapTestInputs.h"
+#include "base/Error.h"
 #include "geometry/MapMetrics.h"
 #include "geometry/SphereLocator.h"
 #include "map/SurfaceMap.h"
@@ -208,11 +209,11 @@ TEST(SurfaceMap, InconsistentInputIsRejected)
 {
   std::vector<MapInput> inputs = landmarkPair();
   inputs[1].landmarks[0] = 9; // landmark 9 only on input 1
-  EXPECT_THROW(computeSurfaceMap(inputs), std::invalid_argument);
+  EXPECT_THROW(computeSurfaceMap(inputs), InputError);
   inputs = landmarkPair();
   inputs[1].spherePositions.pop_back();
-  EXPECT_THROW(computeSurfaceMap(inputs), std::invalid_argument);
-  EXPECT_THROW(computeSurfaceMap({}), std::invalid_argument);
+  EXPECT_THROW(computeSurfaceMap(inputs), InputError);
+  EXPECT_THROW(computeSurfaceMap({}), InputError);
 }
 
 TEST(SurfaceMap, RefinementRunsWhereTheExactMapIsDistorted)
