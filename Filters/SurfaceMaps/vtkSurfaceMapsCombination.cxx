@@ -247,17 +247,18 @@ void vtkSurfaceMapsCombination::CheckSameConnectivity(const std::vector<vtkPolyD
   }
 }
 
-void vtkSurfaceMapsCombination::Combine(const std::vector<vtkPolyData*>& meshes,
+namespace
+{
+using surfacemaps::Similarity;
+
+// sum_i c_i T_i(x_i) per point (T_i the identity without `transforms`), in
+// the point type of mesh 0.
+vtkSmartPointer<vtkPoints> combinedPoints(const std::vector<vtkPolyData*>& meshes,
   const std::vector<double>& coefficients,
-  const std::vector<Similarity>& transforms,
-  int reference,
-  vtkSurfaceArrayTransferAlgorithm* modes,
-  vtkPolyData* output)
+  const std::vector<Similarity>& transforms)
 {
   vtkPolyData* first = meshes[0];
   const vtkIdType np = first->GetNumberOfPoints();
-
-  // Points.
   vtkNew<vtkPoints> points;
   points->SetDataType(first->GetPoints() ? first->GetPoints()->GetDataType() : VTK_DOUBLE);
   points->SetNumberOfPoints(np);
@@ -281,12 +282,13 @@ void vtkSurfaceMapsCombination::Combine(const std::vector<vtkPolyData*>& meshes,
     }
     points->SetPoint(v, sum.data());
   }
-  output->CopyStructure(first);
-  output->SetPoints(points);
+  return points;
+}
 
-  // Point arrays.
-  vtkPointData* from = first->GetPointData();
-  vtkPointData* to = output->GetPointData();
+// The arrays a blend does not carry: correspondence data and the active
+// normals (the surface orientation of one input).
+std::set<std::string> droppedArrayNames(vtkPointData* from)
+{
   std::set<std::string> dropped(std::begin(DroppedArrays), std::end(DroppedArrays));
   if (vtkDataArray* normals = from->GetNormals())
   {
@@ -295,6 +297,21 @@ void vtkSurfaceMapsCombination::Combine(const std::vector<vtkPolyData*>& meshes,
       dropped.insert(normals->GetName());
     }
   }
+  return dropped;
+}
+
+// Input 0's point arrays, each combined over the inputs that all have it:
+// landmarks as input 0's, categorical arrays as the reference input's, the
+// active vectors rotated with the transforms.
+void combinePointArrays(const std::vector<vtkPolyData*>& meshes,
+  const std::vector<double>& coefficients,
+  const std::vector<Similarity>& transforms,
+  int reference,
+  vtkSurfaceArrayTransferAlgorithm* modes,
+  vtkPointData* to)
+{
+  vtkPointData* from = meshes[0]->GetPointData();
+  const std::set<std::string> dropped = droppedArrayNames(from);
   const char* vectorsName = from->GetVectors() ? from->GetVectors()->GetName() : nullptr;
   std::vector<Eigen::Matrix3d> rotations;
   for (std::size_t i = 0; i < meshes.size(); ++i)
@@ -329,7 +346,11 @@ void vtkSurfaceMapsCombination::Combine(const std::vector<vtkPolyData*>& meshes,
       vectorsName && std::string(name) == vectorsName && array->GetNumberOfComponents() == 3;
     to->AddArray(combineArray(arrays, coefficients, rotate ? &rotations : nullptr));
   }
-  // Input 0's active attributes, where their arrays made it.
+}
+
+// Input 0's active attributes, where their arrays made it.
+void copyActiveAttributes(vtkPointData* from, vtkPointData* to)
+{
   for (int attribute : { vtkDataSetAttributes::SCALARS,
          vtkDataSetAttributes::VECTORS,
          vtkDataSetAttributes::TCOORDS,
@@ -341,6 +362,21 @@ void vtkSurfaceMapsCombination::Combine(const std::vector<vtkPolyData*>& meshes,
       to->SetActiveAttribute(active->GetName(), attribute);
     }
   }
+}
+} // namespace
+
+void vtkSurfaceMapsCombination::Combine(const std::vector<vtkPolyData*>& meshes,
+  const std::vector<double>& coefficients,
+  const std::vector<Similarity>& transforms,
+  int reference,
+  vtkSurfaceArrayTransferAlgorithm* modes,
+  vtkPolyData* output)
+{
+  vtkSmartPointer<vtkPoints> points = combinedPoints(meshes, coefficients, transforms);
+  output->CopyStructure(meshes[0]);
+  output->SetPoints(points);
+  combinePointArrays(meshes, coefficients, transforms, reference, modes, output->GetPointData());
+  copyActiveAttributes(meshes[0]->GetPointData(), output->GetPointData());
 }
 
 bool vtkSurfaceMapsCombination::IndexedValues::Set(int i, double value)

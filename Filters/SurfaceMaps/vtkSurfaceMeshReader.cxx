@@ -18,9 +18,9 @@
 #include "vtkDoubleArray.h"
 #include "vtkExecutive.h"
 #include "vtkFieldData.h"
+#include "vtkIdTypeArray.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
-#include "vtkIdTypeArray.h"
 #include "vtkIntArray.h"
 #include "vtkMath.h"
 #include "vtkNew.h"
@@ -286,10 +286,8 @@ int lineAt(const std::string& text, std::size_t offset)
   return 1 + static_cast<int>(std::count(text.begin(), text.begin() + offset, '\n'));
 }
 
-// 3D Slicer's markups JSON (.mrk.json): markups[0].controlPoints[i] with
-// "position" [x, y, z] and optional "id" and "label".
-std::vector<surfacemaps::LandmarkRecord> parseMarkupsJsonValues(const std::string& text,
-  const std::string& path)
+// `text` as a JSON document; a syntax error is reported at its line.
+Json::Value parseJsonDocument(const std::string& text, const std::string& path)
 {
   Json::CharReaderBuilder builder;
   builder["collectComments"] = false;
@@ -310,76 +308,117 @@ std::vector<surfacemaps::LandmarkRecord> parseMarkupsJsonValues(const std::strin
     what = what.substr(0, what.find('\n'));
     surfacemaps::failAtLine(path, std::max(line, 1), "not valid JSON: " + what);
   }
-  auto lineOf = [&text](const Json::Value& value)
+  return root;
+}
+
+// A parsed JSON file: reports a problem at the line of the value concerned.
+struct JsonFile
+{
+  const std::string& Text;
+  const std::string& Path;
+
+  int lineOf(const Json::Value& value) const
   {
     const ptrdiff_t offset = std::max<ptrdiff_t>(0, value.getOffsetStart());
-    return lineAt(text, static_cast<std::size_t>(offset));
-  };
-  auto fail = [&](const Json::Value& where, const std::string& what)
-  { surfacemaps::failAtLine(path, lineOf(where), what); };
+    return lineAt(this->Text, static_cast<std::size_t>(offset));
+  }
+
+  [[noreturn]] void fail(const Json::Value& where, const std::string& what) const
+  {
+    surfacemaps::failAtLine(this->Path, this->lineOf(where), what);
+  }
+};
+
+// markups[0].controlPoints of a Slicer markups document.
+const Json::Value& markupControlPoints(const Json::Value& root, const JsonFile& file)
+{
   if (!root.isObject() || !root["markups"].isArray() || root["markups"].empty() ||
     !root["markups"][0].isObject())
   {
-    fail(root, "not a Slicer markups file (no \"markups\" list)");
+    file.fail(root, "not a Slicer markups file (no \"markups\" list)");
   }
   const Json::Value& markup = root["markups"][0];
   const Json::Value& points = markup["controlPoints"];
   if (!points.isArray())
   {
-    fail(markup, "markups[0] has no \"controlPoints\" list");
+    file.fail(markup, "markups[0] has no \"controlPoints\" list");
   }
+  return points;
+}
+
+// The position and label of one control point, which must have a position.
+surfacemaps::LandmarkRecord controlPointRecord(const Json::Value& point,
+  const std::string& which,
+  const JsonFile& file)
+{
+  if (!point.isObject())
+  {
+    file.fail(point, which + " is not an object");
+  }
+  const Json::Value& status = point["positionStatus"];
+  if (status.isString() && (status.asString() == "undefined" || status.asString() == "missing"))
+  {
+    file.fail(point, which + " has no position (positionStatus \"" + status.asString() + "\")");
+  }
+  const Json::Value& position = point["position"];
+  if (!position.isArray() || position.size() != 3)
+  {
+    file.fail(point.isMember("position") ? position : point,
+      which + " has no \"position\" of three numbers");
+  }
+  surfacemaps::LandmarkRecord record;
+  record.Line = file.lineOf(point);
+  for (Json::ArrayIndex c = 0; c < 3; ++c)
+  {
+    if (!position[c].isNumeric() || !std::isfinite(position[c].asDouble()))
+    {
+      file.fail(position[c], which + " has a position that is not three finite numbers");
+    }
+    record.Point[c] = position[c].asDouble();
+  }
+  if (point["label"].isString())
+  {
+    record.Label = point["label"].asString();
+  }
+  return record;
+}
+
+// Slicer's ids are strings ("1") or node names; integers >= 0 are ids, and
+// anything else is -1 (no id).
+long long controlPointId(const Json::Value& point)
+{
+  long long id = -1;
+  const Json::Value& given = point["id"];
+  if (given.isString() && !surfacemaps::parseInt(given.asString(), id))
+  {
+    id = -1;
+  }
+  else if (given.isInt())
+  {
+    id = given.asInt();
+  }
+  if (id > std::numeric_limits<int>::max())
+  {
+    id = -1;
+  }
+  return id;
+}
+
+// 3D Slicer's markups JSON (.mrk.json): markups[0].controlPoints[i] with
+// "position" [x, y, z] and optional "id" and "label".
+std::vector<surfacemaps::LandmarkRecord> parseMarkupsJsonValues(const std::string& text,
+  const std::string& path)
+{
+  const Json::Value root = parseJsonDocument(text, path);
+  const JsonFile file{ text, path };
+  const Json::Value& points = markupControlPoints(root, file);
   std::vector<surfacemaps::LandmarkRecord> records;
   std::vector<long long> ids;
   for (Json::ArrayIndex k = 0; k < points.size(); ++k)
   {
     const Json::Value& point = points[k];
-    const std::string which = "control point " + std::to_string(k);
-    if (!point.isObject())
-    {
-      fail(point, which + " is not an object");
-    }
-    const Json::Value& status = point["positionStatus"];
-    if (status.isString() && (status.asString() == "undefined" || status.asString() == "missing"))
-    {
-      fail(point, which + " has no position (positionStatus \"" + status.asString() + "\")");
-    }
-    const Json::Value& position = point["position"];
-    if (!position.isArray() || position.size() != 3)
-    {
-      fail(point.isMember("position") ? position : point,
-        which + " has no \"position\" of three numbers");
-    }
-    surfacemaps::LandmarkRecord record;
-    record.Line = lineOf(point);
-    for (Json::ArrayIndex c = 0; c < 3; ++c)
-    {
-      if (!position[c].isNumeric() || !std::isfinite(position[c].asDouble()))
-      {
-        fail(position[c], which + " has a position that is not three finite numbers");
-      }
-      record.Point[c] = position[c].asDouble();
-    }
-    if (point["label"].isString())
-    {
-      record.Label = point["label"].asString();
-    }
-    // Slicer's ids are strings ("1") or node names; integers >= 0 are ids.
-    long long id = -1;
-    const Json::Value& given = point["id"];
-    if (given.isString() && !surfacemaps::parseInt(given.asString(), id))
-    {
-      id = -1;
-    }
-    else if (given.isInt())
-    {
-      id = given.asInt();
-    }
-    if (id > std::numeric_limits<int>::max())
-    {
-      id = -1;
-    }
-    records.push_back(record);
-    ids.push_back(id);
+    records.push_back(controlPointRecord(point, "control point " + std::to_string(k), file));
+    ids.push_back(controlPointId(point));
   }
   surfacemaps::finishLandmarkIds(records, ids, path);
   return records;
@@ -541,8 +580,8 @@ void addSizing(vtkPolyData* mesh, const std::string& sizingPath, const std::stri
   std::vector<double> sizing;
   try
   {
-    sizing = surfacemaps::readSizing(
-      sizingPath, static_cast<std::size_t>(mesh->GetNumberOfPoints()));
+    sizing =
+      surfacemaps::readSizing(sizingPath, static_cast<std::size_t>(mesh->GetNumberOfPoints()));
   }
   catch (const surfacemaps::InputError& e)
   {

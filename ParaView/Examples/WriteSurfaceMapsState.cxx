@@ -68,7 +68,8 @@ struct Scene
     vtkSMProxy* representation = this->Controller->Show(proxy, 0, this->View);
     const double position[3] = { x, y, 0.0 };
     vtkSMPropertyHelper(representation, "Position").Set(position, 3);
-    vtkSMPropertyHelper(representation, "Representation").Set(edges ? "Surface With Edges" : "Surface");
+    vtkSMPropertyHelper(representation, "Representation")
+      .Set(edges ? "Surface With Edges" : "Surface");
     if (cells)
     {
       vtkSMPVRepresentationProxy::SetScalarColoring(representation, cells, vtkDataObject::CELL);
@@ -82,6 +83,110 @@ struct Scene
     representation->UpdateVTKObjects();
   }
 };
+
+// The proxies of the pipeline (see the top of the file).
+struct Pipeline
+{
+  vtkSmartPointer<vtkSMSourceProxy> Readers[2];
+  vtkSmartPointer<vtkSMSourceProxy> Map;
+  vtkSmartPointer<vtkSMSourceProxy> Average;
+  vtkSmartPointer<vtkSMSourceProxy> Sequence;
+  vtkSmartPointer<vtkSMSourceProxy> Evaluation;
+};
+
+// The render view, registered and assigned to a layout: the GUI shows the
+// views of the state's layouts only.
+vtkSmartPointer<vtkSMProxy> newRenderView(vtkSMSessionProxyManager* manager,
+  vtkSMParaViewPipelineControllerWithRendering* controller)
+{
+  vtkSmartPointer<vtkSMProxy> viewProxy;
+  viewProxy.TakeReference(manager->NewProxy("views", "RenderView"));
+  controller->InitializeProxy(viewProxy);
+  controller->RegisterViewProxy(viewProxy, "RenderView1");
+  controller->AssignViewToLayout(vtkSMViewProxy::SafeDownCast(viewProxy));
+  return viewProxy;
+}
+
+Pipeline buildPipeline(Scene& scene)
+{
+  Pipeline pipeline;
+  const char* files[2] = { "Data/ellipsoid.obj", "Data/blob.off" };
+  const char* landmarks[2] = { "Data/ellipsoid.pinned", "Data/blob.vts" };
+  const char* labels[2] = { "ellipsoid.obj", "blob.off" };
+  for (int i = 0; i < 2; ++i)
+  {
+    pipeline.Readers[i] = scene.New("sources", "SurfaceMeshReader");
+    vtkSMPropertyHelper(pipeline.Readers[i], "FileName").Set(files[i]);
+    vtkSMPropertyHelper(pipeline.Readers[i], "LandmarkFileName").Set(landmarks[i]);
+    scene.Register(pipeline.Readers[i], labels[i]);
+  }
+  pipeline.Map = scene.New("filters", "SurfaceMap");
+  for (auto& reader : pipeline.Readers)
+  {
+    vtkSMPropertyHelper(pipeline.Map, "Input").Add(reader, 0);
+  }
+  vtkSMPropertyHelper(pipeline.Map, "CoarseIterations").Set(20);
+  vtkSMPropertyHelper(pipeline.Map, "FineIterations").Set(20);
+  vtkSMPropertyHelper(pipeline.Map, "RefinementRounds").Set(1);
+  scene.Register(pipeline.Map, "SurfaceMap");
+
+  pipeline.Average = scene.New("filters", "SurfaceAverage");
+  vtkSMPropertyHelper(pipeline.Average, "Input").Set(pipeline.Map, 0);
+  scene.Register(pipeline.Average, "SurfaceAverage");
+
+  pipeline.Sequence = scene.New("filters", "SurfaceSequenceInterpolator");
+  vtkSMPropertyHelper(pipeline.Sequence, "Input").Set(pipeline.Map, 0);
+  vtkSMPropertyHelper(pipeline.Sequence, "StepsPerInterval").Set(10);
+  scene.Register(pipeline.Sequence, "SurfaceSequenceInterpolator");
+
+  pipeline.Evaluation = scene.New("filters", "SurfaceMapEvaluation");
+  vtkSMPropertyHelper(pipeline.Evaluation, "Input").Set(pipeline.Map, 0);
+  vtkSMPropertyHelper(pipeline.Evaluation, "SourceIndex").Set(1);
+  vtkSMPropertyHelper(pipeline.Evaluation, "TargetIndex").Set(0);
+  scene.Register(pipeline.Evaluation, "SurfaceMapEvaluation");
+  return pipeline;
+}
+
+// The inputs in the back row; the evaluation, the average and the
+// interpolator with T's edges in the front row.
+void showPipeline(Scene& scene, const Pipeline& pipeline)
+{
+  const double spacing = 3.5;
+  for (int i = 0; i < 2; ++i)
+  {
+    scene.Show(pipeline.Readers[i], (i - 0.5) * spacing, spacing, nullptr, false);
+  }
+  scene.Show(pipeline.Evaluation, -spacing, 0.0, "MaxStretch", true);
+  scene.Show(pipeline.Average, 0.0, 0.0, nullptr, true);
+  scene.Show(pipeline.Sequence, spacing, 0.0, nullptr, true);
+}
+
+// Builds and shows the pipeline at t = 0.5 and writes its state to `output`;
+// the exit status.
+int writeState(Scene& scene, vtkSMSession* session, const char* output)
+{
+  try
+  {
+    const Pipeline pipeline = buildPipeline(scene);
+    showPipeline(scene, pipeline);
+    vtkSMProxy* animation = scene.Controller->FindAnimationScene(session);
+    vtkSMPropertyHelper(animation, "AnimationTime").Set(0.5);
+    animation->UpdateVTKObjects();
+    scene.View->ResetCamera();
+    scene.View->StillRender();
+    if (!scene.Manager->SaveXMLState(output))
+    {
+      std::cerr << "cannot write " << output << "\n";
+      return 1;
+    }
+  }
+  catch (const std::exception& e)
+  {
+    std::cerr << e.what() << "\n";
+    return 1;
+  }
+  return 0;
+}
 } // namespace
 
 int main(int argc, char* argv[])
@@ -112,76 +217,9 @@ int main(int argc, char* argv[])
       return 1;
     }
     vtkSMSessionProxyManager* manager = session->GetSessionProxyManager();
-    vtkSmartPointer<vtkSMProxy> viewProxy;
-    viewProxy.TakeReference(manager->NewProxy("views", "RenderView"));
-    controller->InitializeProxy(viewProxy);
-    controller->RegisterViewProxy(viewProxy, "RenderView1");
-    // The GUI shows the views of the state's layouts only.
-    controller->AssignViewToLayout(vtkSMViewProxy::SafeDownCast(viewProxy));
+    const vtkSmartPointer<vtkSMProxy> viewProxy = newRenderView(manager, controller);
     Scene scene{ manager, controller, vtkSMRenderViewProxy::SafeDownCast(viewProxy) };
-    try
-    {
-      const char* files[2] = { "Data/ellipsoid.obj", "Data/blob.off" };
-      const char* landmarks[2] = { "Data/ellipsoid.pinned", "Data/blob.vts" };
-      const char* labels[2] = { "ellipsoid.obj", "blob.off" };
-      vtkSmartPointer<vtkSMSourceProxy> readers[2];
-      for (int i = 0; i < 2; ++i)
-      {
-        readers[i] = scene.New("sources", "SurfaceMeshReader");
-        vtkSMPropertyHelper(readers[i], "FileName").Set(files[i]);
-        vtkSMPropertyHelper(readers[i], "LandmarkFileName").Set(landmarks[i]);
-        scene.Register(readers[i], labels[i]);
-      }
-      auto map = scene.New("filters", "SurfaceMap");
-      for (auto& reader : readers)
-      {
-        vtkSMPropertyHelper(map, "Input").Add(reader, 0);
-      }
-      vtkSMPropertyHelper(map, "CoarseIterations").Set(20);
-      vtkSMPropertyHelper(map, "FineIterations").Set(20);
-      vtkSMPropertyHelper(map, "RefinementRounds").Set(1);
-      scene.Register(map, "SurfaceMap");
-
-      auto average = scene.New("filters", "SurfaceAverage");
-      vtkSMPropertyHelper(average, "Input").Set(map, 0);
-      scene.Register(average, "SurfaceAverage");
-
-      auto sequence = scene.New("filters", "SurfaceSequenceInterpolator");
-      vtkSMPropertyHelper(sequence, "Input").Set(map, 0);
-      vtkSMPropertyHelper(sequence, "StepsPerInterval").Set(10);
-      scene.Register(sequence, "SurfaceSequenceInterpolator");
-
-      auto evaluation = scene.New("filters", "SurfaceMapEvaluation");
-      vtkSMPropertyHelper(evaluation, "Input").Set(map, 0);
-      vtkSMPropertyHelper(evaluation, "SourceIndex").Set(1);
-      vtkSMPropertyHelper(evaluation, "TargetIndex").Set(0);
-      scene.Register(evaluation, "SurfaceMapEvaluation");
-
-      const double spacing = 3.5;
-      for (int i = 0; i < 2; ++i)
-      {
-        scene.Show(readers[i], (i - 0.5) * spacing, spacing, nullptr, false);
-      }
-      scene.Show(evaluation, -spacing, 0.0, "MaxStretch", true);
-      scene.Show(average, 0.0, 0.0, nullptr, true);
-      scene.Show(sequence, spacing, 0.0, nullptr, true);
-
-      vtkSMProxy* animation = controller->FindAnimationScene(session);
-      vtkSMPropertyHelper(animation, "AnimationTime").Set(0.5);
-      animation->UpdateVTKObjects();
-      scene.View->ResetCamera();
-      scene.View->StillRender();
-      if (!manager->SaveXMLState(argv[2]))
-      {
-        std::cerr << "cannot write " << argv[2] << "\n";
-        status = 1;
-      }
-    }
-    catch (const std::exception& e)
-    {
-      std::cerr << e.what() << "\n";
-      status = 1;
-    }
+    status = writeState(scene, session, argv[2]);
     vtkProcessModule::GetProcessModule()->UnRegisterSession(session);
   }
   vtkInitializationHelper::Finalize();

@@ -101,6 +101,138 @@ bool geometryOk(const Mesh& mesh, Mesh::HalfedgeHandle h, double minArea, double
   return true;
 }
 
+// The total area of `triangles` on `points`.
+double surfaceArea(const std::vector<Eigen::Vector3d>& points,
+  const std::vector<std::array<int, 3>>& triangles)
+{
+  double totalArea = 0.0;
+  for (const auto& t : triangles)
+  {
+    totalArea += 0.5 * (points[t[1]] - points[t[0]]).cross(points[t[2]] - points[t[0]]).norm();
+  }
+  return totalArea;
+}
+
+// Collapses `mesh` level by level: in each level the halfedges in order of
+// quadric error (of moving the removed vertex onto the kept one), as long
+// as they keep the mesh valid and the level independent.
+class LevelCollapser
+{
+public:
+  LevelCollapser(Mesh& mesh, double minArea, const DecimationOptions& options)
+    : M(mesh)
+    , Options(options)
+    , MinArea(minArea)
+    , MinCos(std::cos(options.maxNormalChange * M_PI / 180.0))
+    , Q(vertexQuadrics(mesh))
+    , Alive(static_cast<int>(mesh.n_vertices()))
+    , LevelStamp(mesh.n_vertices(), -1)
+  {
+  }
+
+  int alive() const { return this->Alive; }
+
+  // The collapses of level `level` (none when every one is blocked);
+  // `geometric` applies the shape checks of geometryOk.
+  DecimationLevel collapseLevel(int level, bool geometric)
+  {
+    this->rankCandidates();
+    DecimationLevel current;
+    for (const Candidate& c : this->Candidates)
+    {
+      if (this->Alive <= this->Options.targetVertices)
+      {
+        break;
+      }
+      if (this->collapsible(c.h, level, geometric))
+      {
+        current.collapses.push_back(this->collapse(c.h, level));
+      }
+    }
+    return current;
+  }
+
+private:
+  struct Candidate
+  {
+    double cost;
+    Mesh::HalfedgeHandle h;
+  };
+
+  // Every live halfedge v -> u, cheapest first.
+  void rankCandidates()
+  {
+    this->Candidates.clear();
+    for (const auto h : this->M.halfedges())
+    {
+      if (this->M.status(h).deleted())
+      {
+        continue;
+      }
+      const Mesh::VertexHandle v = this->M.from_vertex_handle(h), u = this->M.to_vertex_handle(h);
+      const Eigen::Vector3d pu = point(this->M, u);
+      const Eigen::Vector4d x(pu.x(), pu.y(), pu.z(), 1.0);
+      this->Candidates.push_back({ x.dot((this->Q[v.idx()] + this->Q[u.idx()]) * x), h });
+    }
+    std::sort(this->Candidates.begin(),
+      this->Candidates.end(),
+      [](const Candidate& a, const Candidate& b) { return a.cost < b.cost; });
+  }
+
+  bool collapsible(Mesh::HalfedgeHandle h, int level, bool geometric)
+  {
+    if (this->M.status(h).deleted())
+    {
+      return false;
+    }
+    // Independence: a removed vertex must not be next to a vertex removed
+    // earlier in this level (whose ring vertices are stamped), so every
+    // ring below is also the vertex's ring in the finer level, and the
+    // vertices of one level can be reinserted in any order, in parallel.
+    const Mesh::VertexHandle v = this->M.from_vertex_handle(h);
+    if (this->LevelStamp[v.idx()] == level || !this->M.is_collapse_ok(h))
+    {
+      return false;
+    }
+    // Keep every vertex of the result at valence >= 3 (a tetrahedron at the end).
+    if (this->M.valence(this->M.opposite_vh(h)) <= 3 ||
+      this->M.valence(this->M.opposite_vh(this->M.opposite_halfedge_handle(h))) <= 3)
+    {
+      return false;
+    }
+    return !geometric || geometryOk(this->M, h, this->MinArea, this->MinCos);
+  }
+
+  // Collapses h = v -> u, stamping v's ring for this level.
+  Collapse collapse(Mesh::HalfedgeHandle h, int level)
+  {
+    const Mesh::VertexHandle v = this->M.from_vertex_handle(h);
+    const Mesh::VertexHandle u = this->M.to_vertex_handle(h);
+    Collapse collapse;
+    collapse.removed = v.idx();
+    collapse.kept = u.idx();
+    collapse.ring = orientedRing(this->M, v);
+    this->LevelStamp[v.idx()] = level;
+    for (int w : collapse.ring)
+    {
+      this->LevelStamp[w] = level;
+    }
+    this->Q[u.idx()] += this->Q[v.idx()];
+    this->M.collapse(h);
+    --this->Alive;
+    return collapse;
+  }
+
+  Mesh& M;
+  const DecimationOptions& Options;
+  const double MinArea;
+  const double MinCos;
+  std::vector<Quadric> Q;
+  int Alive;
+  std::vector<int> LevelStamp;
+  std::vector<Candidate> Candidates;
+};
+
 } // namespace
 
 DecimationResult decimateToTetrahedron(const PolygonMesh& input, const DecimationOptions& options)
@@ -108,95 +240,14 @@ DecimationResult decimateToTetrahedron(const PolygonMesh& input, const Decimatio
   Mesh mesh = toHalfedgeMesh(input);
   DecimationResult result;
   result.triangles = input.triangles();
+  LevelCollapser collapser(
+    mesh, options.minAreaFraction * surfaceArea(input.points, result.triangles), options);
 
-  double totalArea = 0.0;
-  for (const auto& t : result.triangles)
-  {
-    totalArea += 0.5 *
-      (input.points[t[1]] - input.points[t[0]])
-        .cross(input.points[t[2]] - input.points[t[0]])
-        .norm();
-  }
-  const double minArea = options.minAreaFraction * totalArea;
-  std::vector<Quadric> Q = vertexQuadrics(mesh);
-
-  int alive = static_cast<int>(mesh.n_vertices());
   bool geometric = true;
-  double minCos = std::cos(options.maxNormalChange * M_PI / 180.0);
-  struct Candidate
+  while (collapser.alive() > options.targetVertices)
   {
-    double cost;
-    Mesh::HalfedgeHandle h;
-  };
-  std::vector<Candidate> candidates;
-  std::vector<int> levelStamp(mesh.n_vertices(), -1);
-
-  while (alive > options.targetVertices)
-  {
-    const int level = static_cast<int>(result.levels.size());
-    candidates.clear();
-    for (const auto h : mesh.halfedges())
-    {
-      if (mesh.status(h).deleted())
-      {
-        continue;
-      }
-      const Mesh::VertexHandle v = mesh.from_vertex_handle(h), u = mesh.to_vertex_handle(h);
-      const Eigen::Vector3d pu = point(mesh, u);
-      const Eigen::Vector4d x(pu.x(), pu.y(), pu.z(), 1.0);
-      candidates.push_back({ x.dot((Q[v.idx()] + Q[u.idx()]) * x), h });
-    }
-    std::sort(candidates.begin(),
-      candidates.end(),
-      [](const Candidate& a, const Candidate& b) { return a.cost < b.cost; });
-
-    DecimationLevel current;
-    for (const Candidate& c : candidates)
-    {
-      if (alive <= options.targetVertices)
-      {
-        break;
-      }
-      const Mesh::HalfedgeHandle h = c.h;
-      if (mesh.status(h).deleted())
-      {
-        continue;
-      }
-      // Independence: a removed vertex must not be next to a vertex removed
-      // earlier in this level (whose ring vertices are stamped), so every
-      // ring below is also the vertex's ring in the finer level, and the
-      // vertices of one level can be reinserted in any order, in parallel.
-      const Mesh::VertexHandle v = mesh.from_vertex_handle(h);
-      if (levelStamp[v.idx()] == level || !mesh.is_collapse_ok(h))
-      {
-        continue;
-      }
-      // Keep every vertex of the result at valence >= 3 (a tetrahedron at the end).
-      if (mesh.valence(mesh.opposite_vh(h)) <= 3 ||
-        mesh.valence(mesh.opposite_vh(mesh.opposite_halfedge_handle(h))) <= 3)
-      {
-        continue;
-      }
-      if (geometric && !geometryOk(mesh, h, minArea, minCos))
-      {
-        continue;
-      }
-      const Mesh::VertexHandle u = mesh.to_vertex_handle(h);
-      Collapse collapse;
-      collapse.removed = v.idx();
-      collapse.kept = u.idx();
-      collapse.ring = orientedRing(mesh, v);
-      levelStamp[v.idx()] = level;
-      for (int w : collapse.ring)
-      {
-        levelStamp[w] = level;
-      }
-      Q[u.idx()] += Q[v.idx()];
-      mesh.collapse(h);
-      --alive;
-      current.collapses.push_back(std::move(collapse));
-    }
-
+    DecimationLevel current =
+      collapser.collapseLevel(static_cast<int>(result.levels.size()), geometric);
     if (current.collapses.empty())
     {
       if (geometric)
@@ -205,11 +256,12 @@ DecimationResult decimateToTetrahedron(const PolygonMesh& input, const Decimatio
         geometric = false;
         result.relaxed = true;
         options.log(Logger::Detail,
-          "decimation: geometric checks relaxed at " + std::to_string(alive) + " vertices");
+          "decimation: geometric checks relaxed at " + std::to_string(collapser.alive()) +
+            " vertices");
         continue;
       }
-      throw NoResultError(
-        "decimation stalled at " + std::to_string(alive) + " vertices (is the mesh genus 0?)");
+      throw NoResultError("decimation stalled at " + std::to_string(collapser.alive()) +
+        " vertices (is the mesh genus 0?)");
     }
     current.triangles = faceTriangles(mesh);
     result.levels.push_back(std::move(current));

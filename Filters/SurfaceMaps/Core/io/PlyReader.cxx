@@ -339,6 +339,165 @@ void HeaderParser::readProperty(std::istringstream& words, const std::string& li
   this->Result.elements.back().properties.push_back(p);
 }
 
+// The type of a property's own point array (see readPly): uchar, float and
+// double stay; uint becomes Int64 (Int32 cannot hold it), other integers Int32.
+PolygonMeshPointArray::Type arrayTypeOf(Type type)
+{
+  switch (type)
+  {
+    case Type::UInt8:
+      return PolygonMeshPointArray::Type::UInt8;
+    case Type::UInt32:
+      return PolygonMeshPointArray::Type::Int64;
+    case Type::Float32:
+      return PolygonMeshPointArray::Type::Float32;
+    case Type::Float64:
+      return PolygonMeshPointArray::Type::Float64;
+    default:
+      return PolygonMeshPointArray::Type::Int32;
+  }
+}
+
+// Groups the vertex element's scalar properties into point arrays: colour,
+// normals and texture coordinates first, then each remaining property on its
+// own. A property goes into one array at most; x, y and z into none.
+class PointArrayPlanner
+{
+public:
+  PointArrayPlanner(const Element& e,
+    std::vector<PolygonMeshPointArray>& arrays,
+    std::vector<std::vector<int>>& arrayProperties)
+    : E(e)
+    , Arrays(arrays)
+    , ArrayProperties(arrayProperties)
+    , Used(e.properties.size(), false)
+  {
+    for (const char* c : { "x", "y", "z" })
+    {
+      const int k = this->find(c);
+      if (k >= 0)
+      {
+        this->Used[k] = true;
+      }
+    }
+  }
+
+  void addColour()
+  {
+    std::vector<int> colour = this->group({ "red", "green", "blue" });
+    if (colour.empty())
+    {
+      return;
+    }
+    const std::vector<int> alpha = this->group({ "alpha" });
+    colour.insert(colour.end(), alpha.begin(), alpha.end());
+    bool bytes = true;
+    for (int k : colour)
+    {
+      bytes = bytes && this->E.properties[k].type == Type::UInt8;
+    }
+    this->add(colour.size() == 4 ? "RGBA" : "RGB",
+      colour,
+      bytes ? PolygonMeshPointArray::Type::UInt8 : PolygonMeshPointArray::Type::Float32);
+  }
+
+  void addNormals()
+  {
+    const std::vector<int> normals = this->group({ "nx", "ny", "nz" });
+    if (!normals.empty())
+    {
+      this->add("Normals", normals, PolygonMeshPointArray::Type::Float32);
+    }
+  }
+
+  // The first of the usual names for texture coordinates that is complete.
+  void addTexCoords()
+  {
+    for (const auto& names : std::vector<std::vector<std::string>>{
+           { "u", "v" }, { "s", "t" }, { "texture_u", "texture_v" }, { "texture_s", "texture_t" } })
+    {
+      const std::vector<int> tcoords = this->group(names);
+      if (!tcoords.empty())
+      {
+        this->add("TCoords", tcoords, PolygonMeshPointArray::Type::Float32);
+        break;
+      }
+    }
+  }
+
+  void addRemaining()
+  {
+    for (std::size_t k = 0; k < this->E.properties.size(); ++k)
+    {
+      const Property& p = this->E.properties[k];
+      if (this->Used[k] || p.isList)
+      {
+        continue;
+      }
+      this->add(p.name, { static_cast<int>(k) }, arrayTypeOf(p.type));
+    }
+  }
+
+private:
+  // The position of the scalar property `name`, or -1.
+  int find(const std::string& name) const
+  {
+    for (std::size_t k = 0; k < this->E.properties.size(); ++k)
+    {
+      if (!this->E.properties[k].isList && this->E.properties[k].name == name)
+      {
+        return static_cast<int>(k);
+      }
+    }
+    return -1;
+  }
+
+  // A named group: all of its properties present and unused, as VTK's reader
+  // needs them; empty otherwise.
+  std::vector<int> group(const std::vector<std::string>& names) const
+  {
+    std::vector<int> properties;
+    for (const std::string& n : names)
+    {
+      const int k = this->find(n);
+      if (k < 0 || this->Used[k])
+      {
+        return std::vector<int>();
+      }
+      properties.push_back(k);
+    }
+    return properties;
+  }
+
+  void add(const std::string& name,
+    const std::vector<int>& properties,
+    PolygonMeshPointArray::Type type)
+  {
+    for (const PolygonMeshPointArray& a : this->Arrays)
+    {
+      if (a.name == name)
+      {
+        return; // the first of two same-named arrays wins
+      }
+    }
+    PolygonMeshPointArray array;
+    array.name = name;
+    array.components = static_cast<int>(properties.size());
+    array.type = type;
+    this->Arrays.push_back(std::move(array));
+    this->ArrayProperties.push_back(properties);
+    for (int k : properties)
+    {
+      this->Used[k] = true;
+    }
+  }
+
+  const Element& E;
+  std::vector<PolygonMeshPointArray>& Arrays;
+  std::vector<std::vector<int>>& ArrayProperties;
+  std::vector<bool> Used;
+};
+
 // Reads the body element by element, in header order, into the mesh: vertex
 // x, y, z; face vertex_indices (or vertex_index) and texcoord lists.
 class MeshBuilder
@@ -416,117 +575,11 @@ void MeshBuilder::planPointArrays(const Element& e)
   {
     return; // a second vertex element: its points are read, its arrays not
   }
-  auto find = [&](const std::string& name)
-  {
-    for (std::size_t k = 0; k < e.properties.size(); ++k)
-    {
-      if (!e.properties[k].isList && e.properties[k].name == name)
-      {
-        return static_cast<int>(k);
-      }
-    }
-    return -1;
-  };
-  std::vector<bool> used(e.properties.size(), false);
-  for (const char* c : { "x", "y", "z" })
-  {
-    const int k = find(c);
-    if (k >= 0)
-    {
-      used[k] = true;
-    }
-  }
-  auto add = [&](const std::string& name, const std::vector<int>& properties,
-               PolygonMeshPointArray::Type type)
-  {
-    for (const PolygonMeshPointArray& a : this->Mesh.pointArrays)
-    {
-      if (a.name == name)
-      {
-        return; // the first of two same-named arrays wins
-      }
-    }
-    PolygonMeshPointArray array;
-    array.name = name;
-    array.components = static_cast<int>(properties.size());
-    array.type = type;
-    this->Mesh.pointArrays.push_back(std::move(array));
-    this->ArrayProperties.push_back(properties);
-    for (int k : properties)
-    {
-      used[k] = true;
-    }
-  };
-  // Named groups: all of a group's properties present, as VTK's reader needs them.
-  auto group = [&](const std::vector<std::string>& names)
-  {
-    std::vector<int> properties;
-    for (const std::string& n : names)
-    {
-      const int k = find(n);
-      if (k < 0 || used[k])
-      {
-        return std::vector<int>();
-      }
-      properties.push_back(k);
-    }
-    return properties;
-  };
-  std::vector<int> colour = group({ "red", "green", "blue" });
-  if (!colour.empty())
-  {
-    const std::vector<int> alpha = group({ "alpha" });
-    colour.insert(colour.end(), alpha.begin(), alpha.end());
-    bool bytes = true;
-    for (int k : colour)
-    {
-      bytes = bytes && e.properties[k].type == Type::UInt8;
-    }
-    add(colour.size() == 4 ? "RGBA" : "RGB", colour,
-      bytes ? PolygonMeshPointArray::Type::UInt8 : PolygonMeshPointArray::Type::Float32);
-  }
-  const std::vector<int> normals = group({ "nx", "ny", "nz" });
-  if (!normals.empty())
-  {
-    add("Normals", normals, PolygonMeshPointArray::Type::Float32);
-  }
-  for (const auto& names : std::vector<std::vector<std::string>>{ { "u", "v" }, { "s", "t" },
-         { "texture_u", "texture_v" }, { "texture_s", "texture_t" } })
-  {
-    const std::vector<int> tcoords = group(names);
-    if (!tcoords.empty())
-    {
-      add("TCoords", tcoords, PolygonMeshPointArray::Type::Float32);
-      break;
-    }
-  }
-  for (std::size_t k = 0; k < e.properties.size(); ++k)
-  {
-    const Property& p = e.properties[k];
-    if (used[k] || p.isList)
-    {
-      continue;
-    }
-    PolygonMeshPointArray::Type type = PolygonMeshPointArray::Type::Int32;
-    switch (p.type)
-    {
-      case Type::UInt8:
-        type = PolygonMeshPointArray::Type::UInt8;
-        break;
-      case Type::UInt32:
-        type = PolygonMeshPointArray::Type::Int64;
-        break;
-      case Type::Float32:
-        type = PolygonMeshPointArray::Type::Float32;
-        break;
-      case Type::Float64:
-        type = PolygonMeshPointArray::Type::Float64;
-        break;
-      default:
-        break;
-    }
-    add(p.name, { static_cast<int>(k) }, type);
-  }
+  PointArrayPlanner plan(e, this->Mesh.pointArrays, this->ArrayProperties);
+  plan.addColour();
+  plan.addNormals();
+  plan.addTexCoords();
+  plan.addRemaining();
 }
 
 // Positions of the x, y and z properties of the vertex element.
@@ -618,8 +671,8 @@ void MeshBuilder::addFace(long long i)
       index.precision(17);
       index << v;
       throw InputError(this->Name + ": face " + std::to_string(i) + " refers to vertex " +
-        index.str() + ", but the file has " +
-        std::to_string(this->Mesh.points.size()) + " vertices");
+        index.str() + ", but the file has " + std::to_string(this->Mesh.points.size()) +
+        " vertices");
     }
     this->Mesh.faceVertices.push_back(static_cast<int>(v));
   }

@@ -157,8 +157,16 @@ std::string inlineBlock(std::string_view content, const BlockLayout& layout)
     (headerChars < text.size() ? decodeBase64(text.substr(headerChars)) : std::string());
 }
 
-const std::string_view NumericTypes[] = { "Int8", "UInt8", "Int16", "UInt16", "Int32", "UInt32",
-  "Int64", "UInt64", "Float32", "Float64" };
+const std::string_view NumericTypes[] = { "Int8",
+  "UInt8",
+  "Int16",
+  "UInt16",
+  "Int32",
+  "UInt32",
+  "Int64",
+  "UInt64",
+  "Float32",
+  "Float64" };
 
 BlockLayout layoutOf(std::string_view xml)
 {
@@ -203,9 +211,11 @@ void checkAppendedBlocks(const std::string& bytes,
   for (const auto& [element, offset] : offsets)
   {
     std::uint64_t header;
-    const std::uint64_t span =
-      blockSpan(data, static_cast<std::size_t>(std::min<std::uint64_t>(offset, data.size() + 1)),
-        layout, MaxUncompressedPerXmlByte * static_cast<double>(bytes.size()), header);
+    const std::uint64_t span = blockSpan(data,
+      static_cast<std::size_t>(std::min<std::uint64_t>(offset, data.size() + 1)),
+      layout,
+      MaxUncompressedPerXmlByte * static_cast<double>(bytes.size()),
+      header);
     if (span == 0 || span > data.size() - offset)
     {
       throw InputError(name + ": the appended data of " + std::string(element) + " at offset " +
@@ -222,6 +232,102 @@ void checkAppendedBlocks(const std::string& bytes,
       throw InputError(name + ": the appended data blocks at offsets " +
         std::to_string(blocks[k - 1].first) + " and " + std::to_string(blocks[k].first) +
         " overlap (a corrupt file)");
+    }
+  }
+}
+
+// A DataArray or Array of a type VTK's reader does not know (it crashes on one).
+void checkArrayType(std::string_view tag, std::string_view element, const std::string& name)
+{
+  bool found;
+  const std::string_view type = attribute(tag, "type", found);
+  if (type != "String" &&
+    std::find(std::begin(NumericTypes), std::end(NumericTypes), type) == std::end(NumericTypes))
+  {
+    throw InputError(name + ": " + std::string(element.substr(1)) + " " +
+      std::string(attribute(tag, "Name", found)) + " has type \"" + std::string(type) +
+      "\", not a numeric VTK XML data type");
+  }
+}
+
+// The offset="..." of an appended array: an integer >= 0.
+std::uint64_t appendedOffset(std::string_view tag,
+  std::string_view element,
+  const std::string& name)
+{
+  bool found;
+  const std::string_view offset = attribute(tag, "offset", found);
+  long long value;
+  if (!parseInt(offset, value) || value < 0)
+  {
+    throw InputError(name + ": " + std::string(element.substr(1)) + " " +
+      std::string(attribute(tag, "Name", found)) + " has offset=\"" + std::string(offset) +
+      "\", not an offset into the appended data");
+  }
+  return static_cast<std::uint64_t>(value);
+}
+
+// The inline binary block of the array whose start tag `tag` is at `at` in
+// `xml` holds what its header declares.
+void checkInlineBlock(const std::string& bytes,
+  std::string_view xml,
+  std::size_t at,
+  std::string_view tag,
+  std::string_view element,
+  const std::string& name)
+{
+  bool found;
+  const std::size_t contentBegin = at + tag.size() + 1;
+  const std::string block = inlineBlock(
+    xml.substr(contentBegin, xml.find('<', contentBegin) - contentBegin), layoutOf(xml));
+  std::uint64_t header;
+  const std::uint64_t span = blockSpan(
+    block, 0, layoutOf(xml), MaxUncompressedPerXmlByte * static_cast<double>(bytes.size()), header);
+  if (span == 0 || span > block.size())
+  {
+    throw InputError(name + ": the binary data of " + std::string(element.substr(1)) + " " +
+      std::string(attribute(tag, "Name", found)) +
+      " declares more than it holds (a truncated or corrupt file)");
+  }
+}
+
+// The counts a Piece or an array declares, which VTK's reader allocates by:
+// each at most what a file of this size can hold.
+void checkDeclaredCounts(const std::string& bytes,
+  std::string_view tag,
+  std::string_view element,
+  bool piece,
+  const std::string& name)
+{
+  const double limit = MaxItemsPerXmlByte * static_cast<double>(bytes.size());
+  const char* const pieceCounts[] = {
+    "NumberOfPoints", "NumberOfVerts", "NumberOfLines", "NumberOfStrips", "NumberOfPolys"
+  };
+  const char* const arrayCounts[] = { "NumberOfTuples", "NumberOfComponents" };
+  for (const char* key : piece
+      ? std::vector<const char*>(std::begin(pieceCounts), std::end(pieceCounts))
+      : std::vector<const char*>(std::begin(arrayCounts), std::end(arrayCounts)))
+  {
+    bool found;
+    const std::string_view value = attribute(tag, key, found);
+    if (!found)
+    {
+      continue;
+    }
+    long long count;
+    const bool parsed = parseInt(value, count) && count >= 0;
+    // A component count is small (tensors have 9); one in the billions
+    // makes VTK's reader loop for ever.
+    const bool components = std::string_view(key) == "NumberOfComponents";
+    if (!parsed || static_cast<double>(count) > limit ||
+      (components && !(count >= 1 && count <= MaxXmlComponents)))
+    {
+      throw InputError(name + ": " + std::string(element.substr(1)) + " declares " + key + "=\"" +
+        std::string(value) + "\", " +
+        (!parsed ? std::string("not a count")
+            : components
+            ? "outside 1 to " + std::to_string(MaxXmlComponents)
+            : "more than a file of " + std::to_string(bytes.size()) + " bytes can hold"));
     }
   }
 }
@@ -270,7 +376,6 @@ void checkXmlPolyDataCounts(const std::string& bytes, const std::string& name)
   // Only the XML part: appended raw data may contain anything.
   const std::string_view xml =
     std::string_view(bytes).substr(0, std::min(bytes.size(), bytes.find("<AppendedData")));
-  const double limit = MaxItemsPerXmlByte * static_cast<double>(bytes.size());
   std::vector<std::pair<std::string_view, std::uint64_t>> appendedOffsets;
   for (std::size_t at = xml.find('<'); at != std::string_view::npos; at = xml.find('<', at + 1))
   {
@@ -287,70 +392,22 @@ void checkXmlPolyDataCounts(const std::string& bytes, const std::string& name)
     {
       continue;
     }
-    bool found;
-    const std::string_view type = attribute(tag, "type", found);
-    if (array && type != "String" &&
-      std::find(std::begin(NumericTypes), std::end(NumericTypes), type) == std::end(NumericTypes))
+    if (array)
     {
-      // VTK's reader crashes on a type it does not know.
-      throw InputError(name + ": " + std::string(element.substr(1)) + " " +
-        std::string(attribute(tag, "Name", found)) + " has type \"" + std::string(type) +
-        "\", not a numeric VTK XML data type");
-    }
-    if (array && attribute(tag, "format", found) == "appended")
-    {
-      const std::string_view offset = attribute(tag, "offset", found);
-      long long value;
-      if (!parseInt(offset, value) || value < 0)
+      checkArrayType(tag, element, name);
+      bool found;
+      const std::string_view format = attribute(tag, "format", found);
+      if (format == "appended")
       {
-        throw InputError(name + ": " + std::string(element.substr(1)) + " " +
-          std::string(attribute(tag, "Name", found)) + " has offset=\"" + std::string(offset) +
-          "\", not an offset into the appended data");
+        const std::uint64_t offset = appendedOffset(tag, element, name);
+        appendedOffsets.emplace_back(attribute(tag, "Name", found), offset);
       }
-      appendedOffsets.emplace_back(attribute(tag, "Name", found), static_cast<std::uint64_t>(value));
-    }
-    if (array && attribute(tag, "format", found) == "binary")
-    {
-      const std::size_t contentBegin = at + tag.size() + 1;
-      const std::string block = inlineBlock(
-        xml.substr(contentBegin, xml.find('<', contentBegin) - contentBegin), layoutOf(xml));
-      std::uint64_t header;
-      const std::uint64_t span = blockSpan(
-        block, 0, layoutOf(xml), MaxUncompressedPerXmlByte * static_cast<double>(bytes.size()), header);
-      if (span == 0 || span > block.size())
+      if (format == "binary")
       {
-        throw InputError(name + ": the binary data of " + std::string(element.substr(1)) + " " +
-          std::string(attribute(tag, "Name", found)) +
-          " declares more than it holds (a truncated or corrupt file)");
+        checkInlineBlock(bytes, xml, at, tag, element, name);
       }
     }
-    const char* const pieceCounts[] = { "NumberOfPoints", "NumberOfVerts", "NumberOfLines",
-      "NumberOfStrips", "NumberOfPolys" };
-    const char* const arrayCounts[] = { "NumberOfTuples", "NumberOfComponents" };
-    for (const char* key : piece ? std::vector<const char*>(std::begin(pieceCounts), std::end(pieceCounts))
-                                 : std::vector<const char*>(std::begin(arrayCounts), std::end(arrayCounts)))
-    {
-      const std::string_view value = attribute(tag, key, found);
-      if (!found)
-      {
-        continue;
-      }
-      long long count;
-      const bool parsed = parseInt(value, count) && count >= 0;
-      // A component count is small (tensors have 9); one in the billions
-      // makes VTK's reader loop for ever.
-      const bool components = std::string_view(key) == "NumberOfComponents";
-      if (!parsed || static_cast<double>(count) > limit ||
-        (components && !(count >= 1 && count <= MaxXmlComponents)))
-      {
-        throw InputError(name + ": " + std::string(element.substr(1)) + " declares " + key +
-          "=\"" + std::string(value) + "\", " +
-          (!parsed           ? std::string("not a count")
-              : components ? "outside 1 to " + std::to_string(MaxXmlComponents)
-                           : "more than a file of " + std::to_string(bytes.size()) +
-                  " bytes can hold"));
-      }
-    }
+    checkDeclaredCounts(bytes, tag, element, piece, name);
   }
   checkAppendedBlocks(bytes, xml, appendedOffsets, name);
 }

@@ -151,12 +151,12 @@ double weightedRmsDistance(const ShapePoints& x,
   return std::sqrt(sum);
 }
 
-ProcrustesResult alignProcrustes(const std::vector<ShapePoints>& shapes,
-  std::vector<double> weights,
-  const std::vector<std::array<int, 3>>& triangles,
-  const ProcrustesOptions& options)
+namespace
 {
-  const std::size_t n = shapes.size();
+
+// Normalises `weights` (the first n) to sum 1; the shapes of positive weight.
+std::vector<std::size_t> normaliseWeights(std::vector<double>& weights, std::size_t n)
+{
   double totalWeight = 0.0;
   for (double w : weights)
   {
@@ -171,33 +171,157 @@ ProcrustesResult alignProcrustes(const std::vector<ShapePoints>& shapes,
       contributing.push_back(i);
     }
   }
+  return contributing;
+}
 
-  ProcrustesResult result;
+// A_v: the weighted mean of the contributing shapes' own vertexAreaWeights.
+std::vector<double> meanVertexWeights(const std::vector<ShapePoints>& shapes,
+  const std::vector<double>& weights,
+  const std::vector<std::size_t>& contributing,
+  const std::vector<std::array<int, 3>>& triangles)
+{
   const std::size_t np = shapes[0].size();
-  result.vertexWeights.assign(np, 0.0);
+  std::vector<double> A(np, 0.0);
   for (std::size_t i : contributing)
   {
     const std::vector<double> own = vertexAreaWeights(shapes[i], triangles);
     for (std::size_t v = 0; v < np; ++v)
     {
-      result.vertexWeights[v] += weights[i] * own[v];
+      A[v] += weights[i] * own[v];
     }
   }
-  const std::vector<double>& A = result.vertexWeights;
-  result.transforms.assign(n, Similarity());
-  const bool withScale = options.kind == AlignmentKind::Similarity;
-  const auto alignAll = [&](const ShapePoints& target, int round)
+  return A;
+}
+
+// What every step of the alignment reads.
+struct AlignmentInputs
+{
+  const std::vector<ShapePoints>& shapes;
+  const std::vector<double>& weights;           // normalised to sum 1
+  const std::vector<std::size_t>& contributing; // the shapes of positive weight
+  const std::vector<double>& A;                 // the vertex weights of every fit
+  bool withScale;
+  const ProcrustesOptions& options;
+};
+
+// T_i: every shape fitted onto `target`. Round r reports progress within
+// [1 - 2^-r, 1 - 2^-(r+1)], so the fraction grows however many rounds run.
+void alignAll(const AlignmentInputs& in,
+  const ShapePoints& target,
+  int round,
+  std::vector<Similarity>& transforms)
+{
+  const std::size_t n = in.shapes.size();
+  for (std::size_t i = 0; i < n; ++i)
   {
-    for (std::size_t i = 0; i < n; ++i)
+    transforms[i] = fitSimilarity(in.shapes[i], target, in.A, in.withScale);
+    if (in.options.progress)
     {
-      result.transforms[i] = fitSimilarity(shapes[i], target, A, withScale);
-      if (options.progress)
-      {
-        const double before = 1.0 - std::pow(0.5, round);
-        options.progress(before + std::pow(0.5, round + 1) * (i + 1.0) / n);
-      }
+      const double before = 1.0 - std::pow(0.5, round);
+      in.options.progress(before + std::pow(0.5, round + 1) * (i + 1.0) / n);
     }
-  };
+  }
+}
+
+// With scale, `x` scaled about its centroid to RMS radius 1; else as given.
+ShapePoints normalised(const AlignmentInputs& in, const ShapePoints& x)
+{
+  const double radius = weightedRadius(x, in.A);
+  return in.withScale && radius > 0.0
+    ? transformed(x, scalingAbout(weightedCentroid(x, in.A), 1.0 / radius))
+    : x;
+}
+
+// The Procrustes rounds: align onto the mean, average, until the mean moves
+// less than the tolerance (relative to its radius) or the rounds run out.
+ShapePoints iteratedMean(const AlignmentInputs& in, ProcrustesResult& result)
+{
+  ShapePoints mean = normalised(in, in.shapes[in.contributing[0]]);
+  result.converged = false;
+  while (result.iterations < in.options.maxIterations)
+  {
+    alignAll(in, mean, result.iterations, result.transforms);
+    ShapePoints next = normalised(in, weightedMean(in.shapes, in.weights, result.transforms));
+    ++result.iterations;
+    const double radius = weightedRadius(next, in.A);
+    const double change = weightedRmsDistance(mean, next, in.A);
+    mean = std::move(next);
+    if (!(radius > 0.0) || change <= in.options.tolerance * radius)
+    {
+      result.converged = true;
+      break;
+    }
+  }
+  return mean;
+}
+
+// The frame: the weighted mean size, then the rigid placement that fits the
+// shapes as given best (a fit onto their unaligned weighted mean).
+ShapePoints placedInFrame(const AlignmentInputs& in, ShapePoints mean)
+{
+  if (in.withScale)
+  {
+    double size = 0.0;
+    for (std::size_t i : in.contributing)
+    {
+      size += in.weights[i] * weightedRadius(in.shapes[i], in.A);
+    }
+    const double radius = weightedRadius(mean, in.A);
+    if (radius > 0.0)
+    {
+      mean = transformed(mean, scalingAbout(weightedCentroid(mean, in.A), size / radius));
+    }
+  }
+  std::vector<Similarity> identity(in.shapes.size());
+  const ShapePoints asGiven = weightedMean(in.shapes, in.weights, identity);
+  return transformed(mean, fitSimilarity(mean, asGiven, in.A, false));
+}
+
+// The shapes aligned onto `mean` one last time and averaged.
+ShapePoints alignedAverage(const AlignmentInputs& in,
+  const ShapePoints& mean,
+  ProcrustesResult& result)
+{
+  alignAll(in, mean, result.iterations, result.transforms);
+  ShapePoints average = weightedMean(in.shapes, in.weights, result.transforms);
+  if (in.withScale)
+  {
+    // Fitting each shape's scale onto the mean shrinks their average a
+    // little; scale everything back to the chosen size.
+    const double radius = weightedRadius(average, in.A);
+    if (radius > 0.0)
+    {
+      const Similarity back =
+        scalingAbout(weightedCentroid(average, in.A), weightedRadius(mean, in.A) / radius);
+      for (Similarity& T : result.transforms)
+      {
+        T = back.after(T);
+      }
+      average = transformed(average, back);
+    }
+  }
+  return average;
+}
+
+} // namespace
+
+ProcrustesResult alignProcrustes(const std::vector<ShapePoints>& shapes,
+  std::vector<double> weights,
+  const std::vector<std::array<int, 3>>& triangles,
+  const ProcrustesOptions& options)
+{
+  const std::size_t n = shapes.size();
+  const std::vector<std::size_t> contributing = normaliseWeights(weights, n);
+
+  ProcrustesResult result;
+  result.vertexWeights = meanVertexWeights(shapes, weights, contributing, triangles);
+  result.transforms.assign(n, Similarity());
+  const AlignmentInputs in{ shapes,
+    weights,
+    contributing,
+    result.vertexWeights,
+    options.kind == AlignmentKind::Similarity,
+    options };
 
   if (options.kind == AlignmentKind::None)
   {
@@ -207,80 +331,20 @@ ProcrustesResult alignProcrustes(const std::vector<ShapePoints>& shapes,
   {
     // The mean is that shape as given; the others are aligned onto it.
     result.mean = shapes[contributing[0]];
-    alignAll(result.mean, 0);
+    alignAll(in, result.mean, 0, result.transforms);
     result.transforms[contributing[0]] = Similarity();
   }
   else
   {
-    ShapePoints mean = shapes[contributing[0]];
-    const auto normalised = [&](const ShapePoints& x)
-    {
-      const double radius = weightedRadius(x, A);
-      return withScale && radius > 0.0
-        ? transformed(x, scalingAbout(weightedCentroid(x, A), 1.0 / radius))
-        : x;
-    };
-    mean = normalised(mean);
-    result.converged = false;
-    while (result.iterations < options.maxIterations)
-    {
-      alignAll(mean, result.iterations);
-      ShapePoints next = normalised(weightedMean(shapes, weights, result.transforms));
-      ++result.iterations;
-      const double radius = weightedRadius(next, A);
-      const double change = weightedRmsDistance(mean, next, A);
-      mean = std::move(next);
-      if (!(radius > 0.0) || change <= options.tolerance * radius)
-      {
-        result.converged = true;
-        break;
-      }
-    }
-
-    // The frame: the weighted mean size, then the rigid placement that fits
-    // the shapes as given best (a fit onto their unaligned weighted mean).
-    if (withScale)
-    {
-      double size = 0.0;
-      for (std::size_t i : contributing)
-      {
-        size += weights[i] * weightedRadius(shapes[i], A);
-      }
-      const double radius = weightedRadius(mean, A);
-      if (radius > 0.0)
-      {
-        mean = transformed(mean, scalingAbout(weightedCentroid(mean, A), size / radius));
-      }
-    }
-    std::vector<Similarity> identity(n);
-    const ShapePoints asGiven = weightedMean(shapes, weights, identity);
-    mean = transformed(mean, fitSimilarity(mean, asGiven, A, false));
-
-    alignAll(mean, result.iterations);
-    ShapePoints average = weightedMean(shapes, weights, result.transforms);
-    if (withScale)
-    {
-      // Fitting each shape's scale onto the mean shrinks their average a
-      // little; scale everything back to the chosen size.
-      const double radius = weightedRadius(average, A);
-      if (radius > 0.0)
-      {
-        const Similarity back =
-          scalingAbout(weightedCentroid(average, A), weightedRadius(mean, A) / radius);
-        for (Similarity& T : result.transforms)
-        {
-          T = back.after(T);
-        }
-        average = transformed(average, back);
-      }
-    }
-    result.mean = std::move(average);
+    const ShapePoints mean = placedInFrame(in, iteratedMean(in, result));
+    result.mean = alignedAverage(in, mean, result);
   }
 
   result.rms.resize(n);
   for (std::size_t i = 0; i < n; ++i)
   {
-    result.rms[i] = weightedRmsDistance(shapes[i], result.mean, A, result.transforms[i]);
+    result.rms[i] =
+      weightedRmsDistance(shapes[i], result.mean, result.vertexWeights, result.transforms[i]);
   }
   return result;
 }

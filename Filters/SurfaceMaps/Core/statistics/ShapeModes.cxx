@@ -9,38 +9,57 @@
 namespace surfacemaps
 {
 
-ShapeModesResult principalModes(const std::vector<ShapePoints>& shapes,
-  const std::vector<double>& vertexWeights,
-  const ShapeModesOptions& options)
+namespace
+{
+
+// The unweighted mean of the shapes, vertex by vertex.
+ShapePoints meanShape(const std::vector<ShapePoints>& shapes)
 {
   const int n = static_cast<int>(shapes.size());
   const std::size_t np = shapes[0].size();
-  const std::vector<double>& A = vertexWeights;
-  ShapeModesResult result;
-
-  result.mean.assign(np, Eigen::Vector3d::Zero());
+  ShapePoints mean(np, Eigen::Vector3d::Zero());
   for (const ShapePoints& x : shapes)
   {
     for (std::size_t v = 0; v < np; ++v)
     {
-      result.mean[v] += x[v] / n;
+      mean[v] += x[v] / n;
     }
   }
+  return mean;
+}
+
+// x_i - mean per shape; `standardDeviation` receives the per-vertex RMS
+// distance of the shapes from the mean.
+std::vector<ShapePoints> deviationsFromMean(const std::vector<ShapePoints>& shapes,
+  const ShapePoints& mean,
+  std::vector<double>& standardDeviation)
+{
+  const int n = static_cast<int>(shapes.size());
+  const std::size_t np = shapes[0].size();
   std::vector<ShapePoints> deviations(n, ShapePoints(np));
-  result.standardDeviation.assign(np, 0.0);
+  standardDeviation.assign(np, 0.0);
   for (int i = 0; i < n; ++i)
   {
     for (std::size_t v = 0; v < np; ++v)
     {
-      deviations[i][v] = shapes[i][v] - result.mean[v];
-      result.standardDeviation[v] += deviations[i][v].squaredNorm() / n;
+      deviations[i][v] = shapes[i][v] - mean[v];
+      standardDeviation[v] += deviations[i][v].squaredNorm() / n;
     }
   }
-  for (double& s : result.standardDeviation)
+  for (double& s : standardDeviation)
   {
     s = std::sqrt(s);
   }
+  return deviations;
+}
 
+// G_ij = sum_v A_v <d_iv, d_jv>: the N x N Gram matrix, whose eigenvectors
+// give the modes without the 3P x 3P covariance.
+Eigen::MatrixXd weightedGram(const std::vector<ShapePoints>& deviations,
+  const std::vector<double>& A)
+{
+  const int n = static_cast<int>(deviations.size());
+  const std::size_t np = deviations[0].size();
   Eigen::MatrixXd gram(n, n);
   for (int i = 0; i < n; ++i)
   {
@@ -54,6 +73,63 @@ ShapeModesResult principalModes(const std::vector<ShapePoints>& shapes,
       gram(i, j) = gram(j, i) = sum;
     }
   }
+  return gram;
+}
+
+// u = sum_i (a_i / norm) d_i.
+ShapePoints combinedDeviations(const std::vector<ShapePoints>& deviations,
+  const Eigen::VectorXd& a,
+  double norm)
+{
+  ShapePoints mode(deviations[0].size(), Eigen::Vector3d::Zero());
+  for (std::size_t i = 0; i < deviations.size(); ++i)
+  {
+    for (std::size_t v = 0; v < mode.size(); ++v)
+    {
+      mode[v] += (a(i) / norm) * deviations[i][v];
+    }
+  }
+  return mode;
+}
+
+// The sign of an eigenvector is arbitrary: flip the mode (and its
+// coefficients `a`) so that its largest component is positive.
+void orientMode(ShapePoints& mode, Eigen::VectorXd& a)
+{
+  double largest = 0.0;
+  for (const Eigen::Vector3d& u : mode)
+  {
+    for (int c = 0; c < 3; ++c)
+    {
+      if (std::abs(u(c)) > std::abs(largest))
+      {
+        largest = u(c);
+      }
+    }
+  }
+  if (largest < 0.0)
+  {
+    a = -a;
+    for (Eigen::Vector3d& u : mode)
+    {
+      u = -u;
+    }
+  }
+}
+
+} // namespace
+
+ShapeModesResult principalModes(const std::vector<ShapePoints>& shapes,
+  const std::vector<double>& vertexWeights,
+  const ShapeModesOptions& options)
+{
+  const int n = static_cast<int>(shapes.size());
+  const std::size_t np = shapes[0].size();
+  ShapeModesResult result;
+  result.mean = meanShape(shapes);
+  const std::vector<ShapePoints> deviations =
+    deviationsFromMean(shapes, result.mean, result.standardDeviation);
+  const Eigen::MatrixXd gram = weightedGram(deviations, vertexWeights);
   result.totalVariance = gram.trace() / n;
 
   // Eigenvalues in ascending order; mode m takes the (m+1)-th largest.
@@ -71,32 +147,8 @@ ShapeModesResult principalModes(const std::vector<ShapePoints>& shapes,
     {
       // u = D a / sqrt(N lambda) has <u, u> = a^T G a / (N lambda) = 1.
       const double norm = std::sqrt(n * variance);
-      for (int i = 0; i < n; ++i)
-      {
-        for (std::size_t v = 0; v < np; ++v)
-        {
-          mode[v] += (a(i) / norm) * deviations[i][v];
-        }
-      }
-      double largest = 0.0;
-      for (const Eigen::Vector3d& u : mode)
-      {
-        for (int c = 0; c < 3; ++c)
-        {
-          if (std::abs(u(c)) > std::abs(largest))
-          {
-            largest = u(c);
-          }
-        }
-      }
-      if (largest < 0.0)
-      {
-        a = -a;
-        for (Eigen::Vector3d& u : mode)
-        {
-          u = -u;
-        }
-      }
+      mode = combinedDeviations(deviations, a, norm);
+      orientMode(mode, a);
       // <x_i - mean, u> = (G a)_i / sqrt(N lambda) = sqrt(N lambda) a_i.
       result.scores.col(m) = norm * a;
     }
