@@ -2,10 +2,12 @@
 
 #include "vtkSurfaceMapsConversion.h"
 #include "vtkSurfaceMapsErrorGuard.h"
+#include "vtkSurfaceMapsSettingAccess.h"
 
 #include "base/Error.h"
 #include "embedding/SphereEmbedding.h"
 #include "geometry/Rotation.h"
+#include "map/MapSettings.h"
 #include "mesh/MeshValidation.h"
 
 #include "vtkDataArray.h"
@@ -28,6 +30,34 @@ vtkStandardNewMacro(vtkSphereEmbeddingFilter);
 
 namespace
 {
+// The list's embedding entries between the filter's members and the
+// engine's options (see vtkSurfaceMapsSettingAccess).
+struct Access
+{
+  static const std::vector<surfacemaps::EmbeddingSetting>& Table()
+  {
+    return surfacemaps::embeddingSettings();
+  }
+
+  static surfacemaps::SphereEmbeddingOptions OptionsOf(vtkSphereEmbeddingFilter* filter)
+  {
+    surfacemaps::SphereEmbeddingOptions options;
+#define SURFACEMAPS_EMBEDDING_SETTING(Name, field, Type, ...)                                      \
+  options.field = surfacemaps::settingValue<Type>(filter->Get##Name());
+#include "settings/SettingList.def"
+    return options;
+  }
+
+  static void SetAll(vtkSphereEmbeddingFilter* filter,
+    const surfacemaps::SphereEmbeddingOptions& options)
+  {
+#define SURFACEMAPS_EMBEDDING_SETTING(Name, field, ...)                                            \
+  filter->Set##Name(                                                                               \
+    static_cast<decltype(filter->Get##Name())>(surfacemaps::settingNumber(options.field)));
+#include "settings/SettingList.def"
+  }
+};
+
 template<typename ArrayT, typename T>
 void addFieldValue(vtkPolyData* output, const char* name, T value)
 {
@@ -94,12 +124,8 @@ surfacemaps::SphereEmbeddingResult embed(vtkSphereEmbeddingFilter* self,
 {
   self->SetProgressText("Sphere embedding");
   self->UpdateProgress(0.0);
-  surfacemaps::SphereEmbeddingOptions options;
-  options.barrierWeight = self->GetBarrierWeight();
-  options.levelIterations = self->GetLevelIterations();
-  options.levelIterationsLarge = self->GetLargeLevelIterations();
-  options.finalIterations = self->GetFinalIterations();
-  options.finalTolerance = self->GetFinalTolerance();
+  surfacemaps::SphereEmbeddingOptions options = Access::OptionsOf(self);
+  vtkSurfaceMapsSettingAccess::CheckRanges<Access>(options);
   options.progress = [self](double fraction)
   {
     self->UpdateProgress(fraction);
@@ -248,9 +274,15 @@ void vtkSphereEmbeddingFilter::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "OutputPointsOnSphere: " << this->OutputPointsOnSphere << "\n";
-  os << indent << "BarrierWeight: " << this->BarrierWeight << "\n";
-  os << indent << "LevelIterations: " << this->LevelIterations << "\n";
-  os << indent << "LargeLevelIterations: " << this->LargeLevelIterations << "\n";
-  os << indent << "FinalIterations: " << this->FinalIterations << "\n";
-  os << indent << "FinalTolerance: " << this->FinalTolerance << "\n";
+  vtkSurfaceMapsSettingAccess::Print<Access>(this, os, indent);
+}
+
+double vtkSphereEmbeddingFilter::GetSetting(int i)
+{
+  return vtkSurfaceMapsSettingAccess::Get<Access>(this, i);
+}
+
+void vtkSphereEmbeddingFilter::SetSetting(int i, double value)
+{
+  vtkSurfaceMapsSettingAccess::Set<Access>(this, i, value);
 }

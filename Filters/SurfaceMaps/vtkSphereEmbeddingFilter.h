@@ -18,17 +18,24 @@
  * tetrahedron; the collapses are undone level by level, each vertex placed
  * inside its one-ring's kernel and optimised locally, then the whole level by
  * a few projected-Newton steps; the final mesh gets up to FinalIterations,
- * and up to 150 in all while some triangle's share of the sphere is below a
- * hundredth of its share of the mesh's area (the exact map of a surface map
- * would inherit such a squeezed triangle).
+ * and up to SqueezedFinalIterations in all while some triangle's share of
+ * the sphere is below SqueezedAreaRatio times its share of the mesh's area
+ * (the exact map of a surface map would inherit such a squeezed triangle).
  * The result is certified with exact orientation predicates and a degree
  * check. If certification fails (or some triangles end up nearly collapsed,
- * distortion above 100, at the end or at a level of the first attempt) the
- * embedding is retried with a 100x stronger
- * barrier, then with the barrier alone; of certified attempts that are all
- * too distorted the least distorted one is kept; if none certifies the
- * filter reports an error and produces no output. "EmbeddingAttempt" says
- * which attempt won.
+ * distortion above AcceptableDistortion, at the end or at a level of the
+ * first attempt) the embedding is retried with a 100x stronger barrier, then
+ * with the barrier alone; of certified attempts that are all too distorted
+ * the least distorted one is kept; if none certifies the filter reports an
+ * error and produces no output. "EmbeddingAttempt" says which attempt won.
+ *
+ * Settings: each setting below (all but OutputPointsOnSphere) is one entry of
+ * the engine's list of settings (Core/settings/SettingList.def), which its
+ * Set/Get macros, doc comment and member are written from. vtkSurfaceMapFilter
+ * embeds every input it is not given an embedding for with the same defaults.
+ * vtkSurfaceMapsSettings (table SPHERE_EMBEDDING_SETTINGS) lists them for
+ * tools; GetSetting(i) and SetSetting(i) read and write them by index. A
+ * setting outside its range at the update (NaN) is an error.
  *
  * Input: vtkPolyData, triangles only, closed, manifold, genus 0 (what
  * vtkSurfaceMeshValidator accepts). Invalid input is reported with the same
@@ -84,39 +91,112 @@ public:
   vtkBooleanMacro(OutputPointsOnSphere, bool);
   ///@}
 
+  // BEGIN SETTINGS
+  // Written from Core/settings/SettingList.def by TestSettingHeaders
+  // (SURFACEMAPS_UPDATE_SETTING_HEADERS=1 ctest -R SettingHeaders):
+  // edit the list, not these lines.
+  // clang-format off
+
   ///@{
-  /**
-   * Total weight of the barriers (orientation and edge length), spread over
-   * the triangles, against the distortion (whose minimum is 1). Default 0.1,
-   * range [1e-6, 1e3]. Smaller values give lower distortion but stiffer
-   * optimisation.
-   */
-  vtkSetClampMacro(BarrierWeight, double, 1e-6, 1e3);
+  /** Total weight of the barriers (orientation and spherical edge length), spread evenly over
+   * the triangles, against the distortion (whose minimum is 1): smaller values give a lower
+   * distortion but a stiffer optimisation. The retry after a failed attempt multiplies it by
+   * 100. Default 0.1, range 1e-6 to 1000. */
+  vtkSetClampMacro(BarrierWeight, double, 1e-6, 1000.0);
   vtkGetMacro(BarrierWeight, double);
   ///@}
 
   ///@{
-  /**
-   * Newton iterations on the whole mesh after each reinsertion level, below
-   * and above 1 000 vertices. Defaults 20 and 5, range [0, 1000].
-   */
+  /** Newton iterations on the whole current mesh after inserting a level, while the mesh has at
+   * most 1 000 vertices; also the most a larger level gets when its insertion left the energy
+   * far above the previous level's. Default 20, range 0 to 1000. */
   vtkSetClampMacro(LevelIterations, int, 0, 1000);
   vtkGetMacro(LevelIterations, int);
+  ///@}
+
+  ///@{
+  /** Newton iterations after inserting a level once the mesh has more than 1 000 vertices.
+   * Default 5, range 0 to 1000. */
   vtkSetClampMacro(LargeLevelIterations, int, 0, 1000);
   vtkGetMacro(LargeLevelIterations, int);
   ///@}
 
   ///@{
-  /**
-   * Newton iterations on the full mesh at the end. Default 50, range [0, 10000]
-   * (more while a triangle is squeezed on the sphere, see above).
-   * They stop earlier once a Newton step would lower the energy by less than
-   * FinalTolerance times its value (default 1e-6, range [0, 1]).
-   */
+  /** A level's iterations stop once the decrease a Newton step expects (decrement^2 / 2) is
+   * below this. Default 1e-5, range 0 to 1. */
+  vtkSetClampMacro(LevelTolerance, double, 0.0, 1.0);
+  vtkGetMacro(LevelTolerance, double);
+  ///@}
+
+  ///@{
+  /** Newton iterations on each inserted vertex's own position, inside its one-ring's kernel.
+   * Default 10, range 0 to 1000. */
+  vtkSetClampMacro(LocalIterations, int, 0, 1000);
+  vtkGetMacro(LocalIterations, int);
+  ///@}
+
+  ///@{
+  /** Newton iterations on the input mesh at the end (more while a triangle is squeezed, see
+   * SqueezedFinalIterations). Default 50, range 0 to 10000. */
   vtkSetClampMacro(FinalIterations, int, 0, 10000);
   vtkGetMacro(FinalIterations, int);
+  ///@}
+
+  ///@{
+  /** The final iterations stop once the decrease a Newton step expects (decrement^2 / 2) is
+   * below this (an absolute energy; the distortion's minimum is 1). Default 1e-5, range 0 to 1. */
   vtkSetClampMacro(FinalTolerance, double, 0.0, 1.0);
   vtkGetMacro(FinalTolerance, double);
+  ///@}
+
+  ///@{
+  /** The final iterations go on, up to this many in all (and until FinalTolerance is met), while
+   * some triangle's share of the sphere is below SqueezedAreaRatio times its share of the
+   * input's area: the exact map of a surface map inherits such a triangle and squeezes or
+   * stretches the input triangles that land in it as much. Default 150, range 0 to 100000. */
+  vtkSetClampMacro(SqueezedFinalIterations, int, 0, 100000);
+  vtkGetMacro(SqueezedFinalIterations, int);
+  ///@}
+
+  ///@{
+  /** The ratio below which SqueezedFinalIterations counts a triangle as squeezed (0: no check).
+   * Sound embeddings of real meshes have no triangle below 0.07; after 50 iterations a few
+   * meshes still have triangles at 1e-4 to 1e-3 that more iterations remove. Default 0.01,
+   * range 0 to 1. */
+  vtkSetClampMacro(SqueezedAreaRatio, double, 0.0, 1.0);
+  vtkGetMacro(SqueezedAreaRatio, double);
+  ///@}
+
+  ///@{
+  /** An attempt whose final distortion (symmetric Dirichlet) exceeds this counts as failed and
+   * the next attempt runs (a 100 times stronger barrier, then the barrier alone); if every
+   * certified attempt exceeds it, the least distorted one is the result. The first attempt also
+   * gives up at the first level whose distortion ends above it. A sound embedding's distortion
+   * is of order 1 to 10; above 100 it is dominated by triangles squeezed thousands of times.
+   * Default 100, range 1 to 1e12. */
+  vtkSetClampMacro(AcceptableDistortion, double, 1.0, 1e12);
+  vtkGetMacro(AcceptableDistortion, double);
+  ///@}
+
+  ///@{
+  /** Largest tangent step of one vertex in a Newton step, as the tan of its angle (tan 75
+   * degrees is 3.73); the whole step is scaled down to respect it. Default 3.732050807568877,
+   * range 1e-6 to 1000. */
+  vtkSetClampMacro(MaxVertexStep, double, 1e-6, 1000.0);
+  vtkGetMacro(MaxVertexStep, double);
+  ///@}
+  // clang-format on
+  // END SETTINGS
+
+  ///@{
+  /**
+   * Setting i of vtkSurfaceMapsSettings' SPHERE_EMBEDDING_SETTINGS table (the
+   * settings above, in the list's order) as a double (switches 0/1); set
+   * clamps into the range like Set<Name>(). GetSetting returns NaN for an
+   * index out of range; SetSetting ignores it.
+   */
+  double GetSetting(int i);
+  void SetSetting(int i, double value);
   ///@}
 
   ///@{
@@ -136,11 +216,21 @@ protected:
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 
   bool OutputPointsOnSphere = false;
+  // BEGIN SETTING MEMBERS
+  // clang-format off
   double BarrierWeight = 0.1;
   int LevelIterations = 20;
   int LargeLevelIterations = 5;
+  double LevelTolerance = 1e-5;
+  int LocalIterations = 10;
   int FinalIterations = 50;
-  double FinalTolerance = 1e-6;
+  double FinalTolerance = 1e-5;
+  int SqueezedFinalIterations = 150;
+  double SqueezedAreaRatio = 0.01;
+  double AcceptableDistortion = 100.0;
+  double MaxVertexStep = 3.732050807568877;
+  // clang-format on
+  // END SETTING MEMBERS
 
 private:
   vtkSphereEmbeddingFilter(const vtkSphereEmbeddingFilter&) = delete;

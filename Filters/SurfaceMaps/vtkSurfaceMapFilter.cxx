@@ -4,6 +4,8 @@
 #include "vtkSurfaceMapOutputs.h"
 #include "vtkSurfaceMapsConversion.h"
 #include "vtkSurfaceMapsErrorGuard.h"
+#include "vtkSurfaceMapsSettingAccess.h"
+#include "vtkSurfaceMapsSettings.h"
 
 #include "base/ThreadCount.h"
 #include "map/MapPresets.h"
@@ -28,29 +30,32 @@ vtkStandardNewMacro(vtkSurfaceMapFilter);
 
 namespace
 {
-const std::vector<surfacemaps::MapSetting>& table()
-{
-  return surfacemaps::mapSettings();
-}
+using surfacemaps::MapSetting;
+using Settings = vtkSurfaceMapsSettings;
 
-const surfacemaps::MapSetting* settingAt(int i)
+// The list's map entries between the filter's members and the engine's
+// options (see vtkSurfaceMapsSettingAccess).
+struct Access
 {
-  return i >= 0 && i < static_cast<int>(table().size()) ? &table()[i] : nullptr;
-}
+  static const std::vector<MapSetting>& Table() { return surfacemaps::mapSettings(); }
 
-// Sets a setting clamped into its range; Modified() when it changed.
-void setValue(vtkObject* filter,
-  surfacemaps::SurfaceMapOptions& options,
-  const surfacemaps::MapSetting& setting,
-  double value)
-{
-  const double clamped = setting.clamp(value);
-  if (setting.get(options) != clamped)
+  static surfacemaps::SurfaceMapOptions OptionsOf(vtkSurfaceMapFilter* filter)
   {
-    setting.set(options, clamped);
-    filter->Modified();
+    surfacemaps::SurfaceMapOptions options;
+#define SURFACEMAPS_MAP_SETTING(Name, field, Type, ...)                                            \
+  options.field = surfacemaps::settingValue<Type>(filter->Get##Name());
+#include "settings/SettingList.def"
+    return options;
   }
-}
+
+  static void SetAll(vtkSurfaceMapFilter* filter, const surfacemaps::SurfaceMapOptions& options)
+  {
+#define SURFACEMAPS_MAP_SETTING(Name, field, ...)                                                  \
+  filter->Set##Name(                                                                               \
+    static_cast<decltype(filter->Get##Name())>(surfacemaps::settingNumber(options.field)));
+#include "settings/SettingList.def"
+  }
+};
 
 void clear(const std::vector<vtkPolyData*>& outputs)
 {
@@ -58,16 +63,6 @@ void clear(const std::vector<vtkPolyData*>& outputs)
   {
     output->Initialize();
   }
-}
-
-const surfacemaps::MapSetting& settingNamed(const char* name)
-{
-  const surfacemaps::MapSetting* setting = surfacemaps::findMapSetting(name);
-  if (!setting)
-  {
-    throw std::logic_error(std::string("no map setting ") + name);
-  }
-  return *setting;
 }
 
 /// The preset with this index; nullptr out of range.
@@ -78,9 +73,8 @@ const surfacemaps::MapPreset* presetAt(int i)
 }
 } // namespace
 
-// The settings' values live in the engine's options; the map computed last
-// is kept with what it was computed from, so that switching OutputMode or
-// MappedInput does not recompute it.
+// The map computed last, kept with what it was computed from, so that
+// switching OutputMode or MappedInput does not recompute it.
 struct vtkSurfaceMapFilter::vtkInternals
 {
   explicit vtkInternals(vtkSurfaceMapFilter* filter)
@@ -89,7 +83,6 @@ struct vtkSurfaceMapFilter::vtkInternals
   }
 
   vtkSurfaceMapFilter* Filter;
-  surfacemaps::SurfaceMapOptions Options;
 
   bool HasMap = false;
   std::vector<vtkWeakPointer<vtkPolyData>> Inputs;
@@ -102,22 +95,17 @@ struct vtkSurfaceMapFilter::vtkInternals
   /// Largest progress reported in the current update.
   double Progress = 0.0;
 
-  void ClearMap()
-  {
-    const surfacemaps::SurfaceMapOptions options = this->Options;
-    *this = vtkInternals(this->Filter);
-    this->Options = options;
-  }
+  void ClearMap() { *this = vtkInternals(this->Filter); }
 
   // Every setting that changes the map (the table's and SizingMode), in
   // full precision: whether the kept map can be reused.
-  std::string SettingsKey(int sizingMode) const
+  static std::string SettingsKey(const surfacemaps::SurfaceMapOptions& options, int sizingMode)
   {
     std::ostringstream key;
     key.precision(17);
-    for (const surfacemaps::MapSetting& setting : table())
+    for (const MapSetting& setting : Access::Table())
     {
-      key << setting.get(this->Options) << " ";
+      key << setting.get(options) << " ";
     }
     key << sizingMode;
     return key.str();
@@ -149,7 +137,9 @@ struct vtkSurfaceMapFilter::vtkInternals
   }
 
   // Validated inputs, sphere embeddings, the map.
-  void ComputeMap(const std::vector<vtkPolyData*>& inputs, bool useSizing)
+  void ComputeMap(const std::vector<vtkPolyData*>& inputs,
+    surfacemaps::SurfaceMapOptions options,
+    bool useSizing)
   {
     vtkInternals& internals = *this;
     internals.ClearMap();
@@ -172,7 +162,6 @@ struct vtkSurfaceMapFilter::vtkInternals
       std::any_of(embeddingSeconds.begin(), embeddingSeconds.end(), [](double s) { return s > 0; });
     const double start = computed ? embeddingShare : 0.0;
 
-    surfacemaps::SurfaceMapOptions options = internals.Options;
     options.log = vtkSurfaceMapsConversion::EngineLog();
     options.progress = [this, start](const surfacemaps::SurfaceMapProgress& p)
     {
@@ -230,128 +219,81 @@ struct vtkSurfaceMapFilter::vtkInternals
   }
 };
 
-#define vtkSurfaceMapSettingDefinition(name, type)                                                 \
-  void vtkSurfaceMapFilter::Set##name(type value)                                                  \
-  {                                                                                                \
-    setValue(this, this->Internals->Options, settingNamed(#name), static_cast<double>(value));     \
-  }                                                                                                \
-  type vtkSurfaceMapFilter::Get##name()                                                            \
-  {                                                                                                \
-    return static_cast<type>(settingNamed(#name).get(this->Internals->Options));                   \
-  }                                                                                                \
-  type vtkSurfaceMapFilter::Get##name##MinValue()                                                  \
-  {                                                                                                \
-    return static_cast<type>(settingNamed(#name).minimum);                                         \
-  }                                                                                                \
-  type vtkSurfaceMapFilter::Get##name##MaxValue()                                                  \
-  {                                                                                                \
-    return static_cast<type>(settingNamed(#name).maximum);                                         \
-  }
-
-vtkSurfaceMapSettingDefinition(TargetError, double) vtkSurfaceMapSettingDefinition(CoarseError,
-  double) vtkSurfaceMapSettingDefinition(LandmarkIterations, int)
-  vtkSurfaceMapSettingDefinition(CoarseIterations, int) vtkSurfaceMapSettingDefinition(
-    FineIterations,
-    int) vtkSurfaceMapSettingDefinition(LandmarkBarrierWeight, double)
-    vtkSurfaceMapSettingDefinition(CoarseBarrierWeight, double)
-      vtkSurfaceMapSettingDefinition(FineBarrierWeight, double)
-        vtkSurfaceMapSettingDefinition(FineBarrierRaise, double)
-        vtkSurfaceMapSettingDefinition(MeshWeight, double) vtkSurfaceMapSettingDefinition(CoverageWeight, double) vtkSurfaceMapSettingDefinition(MapWeight,
-          double) vtkSurfaceMapSettingDefinition(ApproximationWeight, double)
-          vtkSurfaceMapSettingDefinition(LandmarkWeight, double)
-            vtkSurfaceMapSettingDefinition(LandmarkTolerance, double)
-              vtkSurfaceMapSettingDefinition(RelaxLandmarkPhase, bool)
-                vtkSurfaceMapSettingDefinition(KeepLandmarks, bool)
-                  vtkSurfaceMapSettingDefinition(PairMode, int)
-                    vtkSurfaceMapSettingDefinition(RefinementRounds, int)
-                      vtkSurfaceMapSettingDefinition(RefinementIterations, int)
-                        vtkSurfaceMapSettingDefinition(RefinementDistortion, double)
-                          vtkSurfaceMapSettingDefinition(SqueezeDistortion, double)
-                            vtkSurfaceMapSettingDefinition(RefinementGrowth, double)
-                              vtkSurfaceMapSettingDefinition(MaxError, double)
-                                vtkSurfaceMapSettingDefinition(BoundRefinementRounds, int)
-                                  vtkSurfaceMapSettingDefinition(BoundRefinementIterations, int)
-                                    vtkSurfaceMapSettingDefinition(BoundMargin, double)
-                                      vtkSurfaceMapSettingDefinition(BoundIterations, int)
-                                        vtkSurfaceMapSettingDefinition(MaxVertices, int) vtkSurfaceMapSettingDefinition(ApproximationSamples, int)
-                                          vtkSurfaceMapSettingDefinition(MinEdgeLength, double)
-                                            vtkSurfaceMapSettingDefinition(MaxEdgeLength, double)
-                                              vtkSurfaceMapSettingDefinition(DecrementTolerance,
-                                                double)
-                                                vtkSurfaceMapSettingDefinition(MaxPointStep, double)
-                                                  vtkSurfaceMapSettingDefinition(BlockSolveInputs, int)
-
-                                                  int vtkSurfaceMapFilter::GetNumberOfSettings()
+int vtkSurfaceMapFilter::GetNumberOfSettings()
 {
-  return static_cast<int>(table().size());
+  return Settings::GetNumberOfSettings(Settings::MAP_SETTINGS);
 }
 
+// The table for tools is vtkSurfaceMapsSettings' MAP_SETTINGS.
 const char* vtkSurfaceMapFilter::GetSettingName(int i)
 {
-  return settingAt(i) ? settingAt(i)->name : nullptr;
+  return Settings::GetName(Settings::MAP_SETTINGS, i);
 }
 
 const char* vtkSurfaceMapFilter::GetSettingFlag(int i)
 {
-  return settingAt(i) ? settingAt(i)->flag : nullptr;
+  return Settings::GetFlag(Settings::MAP_SETTINGS, i);
 }
 
 const char* vtkSurfaceMapFilter::GetSettingOffFlag(int i)
 {
-  return settingAt(i) ? settingAt(i)->offFlag : nullptr;
+  return Settings::GetOffFlag(Settings::MAP_SETTINGS, i);
 }
 
 const char* vtkSurfaceMapFilter::GetSettingChoices(int i)
 {
-  return settingAt(i) ? settingAt(i)->choices : nullptr;
+  return Settings::GetChoices(Settings::MAP_SETTINGS, i);
 }
 
 const char* vtkSurfaceMapFilter::GetSettingDocumentation(int i)
 {
-  return settingAt(i) ? settingAt(i)->doc : nullptr;
+  return Settings::GetDocumentation(Settings::MAP_SETTINGS, i);
 }
 
 const char* vtkSurfaceMapFilter::GetSettingTopic(int i)
 {
-  return settingAt(i) ? settingAt(i)->topic : nullptr;
+  return Settings::GetTopic(Settings::MAP_SETTINGS, i);
 }
 
 int vtkSurfaceMapFilter::GetSettingType(int i)
 {
-  return settingAt(i) ? static_cast<int>(settingAt(i)->kind) : -1;
+  return Settings::GetType(Settings::MAP_SETTINGS, i);
 }
 
 double vtkSurfaceMapFilter::GetSettingMinimum(int i)
 {
-  return settingAt(i) ? settingAt(i)->minimum : std::nan("");
+  return Settings::GetMinimum(Settings::MAP_SETTINGS, i);
 }
 
 double vtkSurfaceMapFilter::GetSettingMaximum(int i)
 {
-  return settingAt(i) ? settingAt(i)->maximum : std::nan("");
+  return Settings::GetMaximum(Settings::MAP_SETTINGS, i);
 }
 
 double vtkSurfaceMapFilter::GetSettingDefault(int i)
 {
-  return settingAt(i) ? settingAt(i)->defaultValue() : std::nan("");
+  return Settings::GetDefault(Settings::MAP_SETTINGS, i);
 }
 
 bool vtkSurfaceMapFilter::ParseSettingValue(int i, const char* text, double* value)
 {
-  return settingAt(i) && text && value && settingAt(i)->parse(text, *value);
+  const double parsed = Settings::Parse(Settings::MAP_SETTINGS, i, text);
+  if (std::isnan(parsed) || !value)
+  {
+    return false;
+  }
+  *value = parsed;
+  return true;
 }
 
 double vtkSurfaceMapFilter::GetSetting(int i)
 {
-  return settingAt(i) ? settingAt(i)->get(this->Internals->Options) : std::nan("");
+  return vtkSurfaceMapsSettingAccess::Get<Access>(this, i);
 }
 
 void vtkSurfaceMapFilter::SetSetting(int i, double value)
 {
-  if (settingAt(i))
-  {
-    setValue(this, this->Internals->Options, *settingAt(i), value);
-  }
+  vtkSurfaceMapsSettingAccess::Set<Access>(this, i, value);
 }
 
 void vtkSurfaceMapFilter::ApplyPreset(int preset)
@@ -361,10 +303,9 @@ void vtkSurfaceMapFilter::ApplyPreset(int preset)
     vtkErrorMacro(<< "no preset " << preset << " (0 to " << GetNumberOfPresets() - 1 << ")");
     return;
   }
-  for (const surfacemaps::PresetValue& v : surfacemaps::presetValues(*presetAt(preset)))
-  {
-    setValue(this, this->Internals->Options, *surfacemaps::findMapSetting(v.setting), v.value);
-  }
+  surfacemaps::SurfaceMapOptions options = Access::OptionsOf(this);
+  surfacemaps::applyPreset(options, *presetAt(preset));
+  Access::SetAll(this, options);
 }
 
 int vtkSurfaceMapFilter::GetNumberOfPresets()
@@ -384,15 +325,7 @@ const char* vtkSurfaceMapFilter::GetPresetDocumentation(int preset)
     std::vector<std::string> all;
     for (surfacemaps::MapPreset p : surfacemaps::presets())
     {
-      std::string doc = std::string(surfacemaps::presetDocumentation(p)) + " Sets ";
-      const std::vector<surfacemaps::PresetValue> values = surfacemaps::presetValues(p);
-      for (std::size_t k = 0; k < values.size(); ++k)
-      {
-        const surfacemaps::MapSetting* s = surfacemaps::findMapSetting(values[k].setting);
-        doc += (k == 0 ? "" : ", ") + std::string(values[k].setting) + " " +
-          s->format(s->clamp(values[k].value));
-      }
-      all.push_back(doc + ".");
+      all.push_back(surfacemaps::presetDescription(p));
     }
     return all;
   }();
@@ -499,10 +432,12 @@ int vtkSurfaceMapFilter::RequestData(vtkInformation*,
     policy,
     [&]()
     {
-      const std::string settings = this->Internals->SettingsKey(this->SizingMode);
+      const surfacemaps::SurfaceMapOptions options = Access::OptionsOf(this);
+      vtkSurfaceMapsSettingAccess::CheckRanges<Access>(options);
+      const std::string settings = vtkInternals::SettingsKey(options, this->SizingMode);
       if (!this->Internals->Matches(inputs, settings))
       {
-        this->Internals->ComputeMap(inputs, this->SizingMode == SIZING_ARRAY_OR_CURVATURE);
+        this->Internals->ComputeMap(inputs, options, this->SizingMode == SIZING_ARRAY_OR_CURVATURE);
         this->Internals->Keep(inputs, settings);
       }
       this->Internals->Report(0.98, "Writing the outputs");
@@ -520,11 +455,7 @@ int vtkSurfaceMapFilter::RequestData(vtkInformation*,
 void vtkSurfaceMapFilter::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
-  for (const surfacemaps::MapSetting& setting : table())
-  {
-    os << indent << setting.name << ": " << setting.format(setting.get(this->Internals->Options))
-       << "\n";
-  }
+  vtkSurfaceMapsSettingAccess::Print<Access>(this, os, indent);
   os << indent << "SizingMode: " << this->SizingMode << "\n";
   os << indent << "OutputMode: " << this->OutputMode << "\n";
   os << indent << "MappedInput: " << this->MappedInput << "\n";

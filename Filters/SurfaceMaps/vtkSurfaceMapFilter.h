@@ -27,9 +27,10 @@
  *   (see SizingMode); without it, sizing follows the curvature.
  * - "SpherePosition" (3 components): a precomputed bijective sphere embedding
  *   (e.g. from vtkSphereEmbeddingFilter), verified with exact predicates and
- *   used instead of computing one here (with vtkSphereEmbeddingFilter's
- *   default settings). With landmarks, every embedding is first rotated
- *   rigidly onto input 0's by the landmarks.
+ *   used instead of computing one here (with the sphere embedding's default
+ *   settings, which are vtkSphereEmbeddingFilter's defaults: one list holds
+ *   both). With landmarks, every embedding is first rotated rigidly onto
+ *   input 0's by the landmarks.
  *
  * Outputs: one output port per input connection; the number of output ports
  * follows the connections at once (also right after AddInputConnection, so
@@ -121,12 +122,11 @@
  *
  * Settings: every setting of the map (all but SizingMode, NumberOfThreads,
  * OutputMode, MappedInput and the array transfer modes of the superclass,
- * which only shape the outputs) has its default, range and documentation in
- * one table, the engine's (Core/map/MapSettings.cxx): a new filter starts at
- * the defaults, Set<Name>() clamps into the range that Get<Name>MinValue()
- * and Get<Name>MaxValue() return, and GetNumberOfSettings(),
- * GetSettingName(i), GetSettingDocumentation(i), GetSettingDefault(i), ...
- * list the table for tools (`surfacemap map --help` prints it).
+ * which only shape the outputs) is one entry of the engine's list of
+ * settings (Core/settings/SettingList.def), which its Set/Get macros (clamped
+ * to its range), doc comment and member below are written from. A setting
+ * outside its range at the update (NaN) is an InvalidInputError.
+ * GetSettingName(i), ... and vtkSurfaceMapsSettings list them for tools.
  *
  * Switching OutputMode or MappedInput after an update reuses the computed map
  * as long as the inputs and every other setting are unchanged (the filter
@@ -155,15 +155,6 @@
 #include "vtkSurfaceArrayTransferAlgorithm.h"
 
 #include <memory> // for std::unique_ptr
-
-// Set<name> (clamped to the settings table's range), Get<name>,
-// Get<name>MinValue and Get<name>MaxValue of one map setting, stored in the
-// engine's options (see "Settings" above).
-#define vtkSurfaceMapSettingMacro(name, type)                                                      \
-  virtual void Set##name(type value);                                                              \
-  virtual type Get##name();                                                                        \
-  type Get##name##MinValue();                                                                      \
-  type Get##name##MaxValue()
 
 class SURFACEMAPSFILTERS_EXPORT vtkSurfaceMapFilter : public vtkSurfaceArrayTransferAlgorithm
 {
@@ -212,273 +203,278 @@ public:
     NotCertifiedError = vtkErrorCode::UserError + 2  ///< no certified bijective map
   };
 
+  // BEGIN SETTINGS
+  // Written from Core/settings/SettingList.def by TestSettingHeaders
+  // (SURFACEMAPS_UPDATE_SETTING_HEADERS=1 ctest -R SettingHeaders):
+  // edit the list, not these lines.
+  // clang-format off
+
   ///@{
-  /**
-   * Approximation error eps of the fine phase (unit-area units): approximation weight 1/eps^2 and
-   * the curvature sizing's error.
-   */
-  vtkSurfaceMapSettingMacro(TargetError, double);
+  /** Pairs whose map distortion is minimised with three or more inputs: (0, i), (i, i+1), (i,
+   * i+1) and (N-1, 0), or every pair. Default star. */
+  vtkSetClampMacro(PairMode, int, 0, 3);
+  vtkGetMacro(PairMode, int);
+  void SetPairModeToStar() { this->SetPairMode(0); }
+  void SetPairModeToSequence() { this->SetPairMode(1); }
+  void SetPairModeToCycle() { this->SetPairMode(2); }
+  void SetPairModeToAll() { this->SetPairMode(3); }
   ///@}
 
   ///@{
-  /**
-   * Approximation error eps of the coarse phase.
-   */
-  vtkSurfaceMapSettingMacro(CoarseError, double);
+  /** Iteration cap of the landmark phase (barrier and landmark terms only; runs only with
+   * landmarks; 0 skips it). One iteration: improving splits, collapses, flips, one Newton step.
+   * Default 100, range 0 to 100000. */
+  vtkSetClampMacro(LandmarkIterations, int, 0, 100000);
+  vtkGetMacro(LandmarkIterations, int);
   ///@}
 
   ///@{
-  /**
-   * Iteration cap of the landmark phase (only with landmarks; 0 skips it).
-   */
-  vtkSurfaceMapSettingMacro(LandmarkIterations, int);
+  /** Weight of the landmark term in the landmark phase. Default 1e6, range 0 to 1e12. */
+  vtkSetClampMacro(LandmarkWeight, double, 0.0, 1e12);
+  vtkGetMacro(LandmarkWeight, double);
   ///@}
 
   ///@{
-  /**
-   * Iteration cap of the coarse phase (0 skips it).
-   */
-  vtkSurfaceMapSettingMacro(CoarseIterations, int);
+  /** Weight of the bijectivity barrier in the landmark phase. Default 1, range 1e-12 to 1e6. */
+  vtkSetClampMacro(LandmarkBarrierWeight, double, 1e-12, 1e6);
+  vtkGetMacro(LandmarkBarrierWeight, double);
   ///@}
 
   ///@{
-  /**
-   * Iteration cap of the fine phase (0 skips it and the refinement).
-   */
-  vtkSurfaceMapSettingMacro(FineIterations, int);
+  /** Distance on the sphere below which every landmark counts as reached. Default 0.0001, range
+   * 0 to 1. */
+  vtkSetClampMacro(LandmarkTolerance, double, 0.0, 1.0);
+  vtkGetMacro(LandmarkTolerance, double);
   ///@}
 
   ///@{
-  /**
-   * Weight of the bijectivity barrier in the landmark phase.
-   */
-  vtkSurfaceMapSettingMacro(LandmarkBarrierWeight, double);
-  ///@}
-
-  ///@{
-  /**
-   * Weight of the bijectivity barrier in the coarse phase.
-   */
-  vtkSurfaceMapSettingMacro(CoarseBarrierWeight, double);
-  ///@}
-
-  ///@{
-  /**
-   * Weight of the bijectivity barrier in the fine phase and after it.
-   */
-  vtkSurfaceMapSettingMacro(FineBarrierWeight, double);
-  ///@}
-
-  ///@{
-  /**
-   * From the fine phase on, the barrier weight of a triangle that inverts on a sphere at a Newton
-   * step's full step is multiplied by this, at most three times (the next steps see the wall they
-   * ran into); 1: the same weight for every triangle. Default 4, range [1, 1000].
-   */
-  vtkSurfaceMapSettingMacro(FineBarrierRaise, double);
-  ///@}
-
-  ///@{
-  /**
-   * Weight of the mesh-quality term.
-   */
-  vtkSurfaceMapSettingMacro(MeshWeight, double);
-  ///@}
-
-  ///@{
-  /**
-   * Weight of the coverage term: per triangle of T and input, its lifted area
-   * against the input area its sphere triangle covers, so that no triangle of
-   * T is a sliver on one sphere over a fold of the surface (where the exact
-   * map would squeeze).
-   */
-  vtkSurfaceMapSettingMacro(CoverageWeight, double);
-  ///@}
-
-  ///@{
-  /**
-   * Weight of the map-distortion term.
-   */
-  vtkSurfaceMapSettingMacro(MapWeight, double);
-  ///@}
-
-  ///@{
-  /**
-   * Weight of the surface-approximation term.
-   */
-  vtkSurfaceMapSettingMacro(ApproximationWeight, double);
-  ///@}
-
-  ///@{
-  /**
-   * Weight of the landmark term in the landmark phase.
-   */
-  vtkSurfaceMapSettingMacro(LandmarkWeight, double);
-  ///@}
-
-  ///@{
-  /**
-   * Sphere distance below which every landmark counts as reached.
-   */
-  vtkSurfaceMapSettingMacro(LandmarkTolerance, double);
-  ///@}
-
-  ///@{
-  /**
-   * Once the landmarks are reached, relax T around them with flips and Newton steps before the
-   * landmark phase ends.
-   */
-  vtkSurfaceMapSettingMacro(RelaxLandmarkPhase, bool);
+  /** Once the landmarks are reached, go on with Newton steps and flips only until the landmark
+   * phase converges, so the barrier relaxes T around the moved landmarks; off: end the phase as
+   * soon as they are reached. Default on. */
+  vtkSetClampMacro(RelaxLandmarkPhase, bool, false, true);
+  vtkGetMacro(RelaxLandmarkPhase, bool);
   vtkBooleanMacro(RelaxLandmarkPhase, bool);
   ///@}
 
   ///@{
-  /**
-   * After the landmark phase, snap and lock T's landmark vertices (on) or release them (off).
-   */
-  vtkSurfaceMapSettingMacro(KeepLandmarks, bool);
+  /** After the landmark phase, snap T's landmark vertices exactly onto their input vertices and
+   * lock them; off: release them to the optimisation. Default on. */
+  vtkSetClampMacro(KeepLandmarks, bool, false, true);
+  vtkGetMacro(KeepLandmarks, bool);
   vtkBooleanMacro(KeepLandmarks, bool);
   ///@}
 
   ///@{
-  /**
-   * Which input pairs the map distortion measures: PAIRS_STAR, PAIRS_SEQUENCE, PAIRS_CYCLE or
-   * PAIRS_ALL.
-   */
-  vtkSurfaceMapSettingMacro(PairMode, int);
-  void SetPairModeToStar() { this->SetPairMode(PAIRS_STAR); }
-  void SetPairModeToSequence() { this->SetPairMode(PAIRS_SEQUENCE); }
-  void SetPairModeToCycle() { this->SetPairMode(PAIRS_CYCLE); }
-  void SetPairModeToAll() { this->SetPairMode(PAIRS_ALL); }
+  /** Iteration cap of the coarse phase (0 skips it). A phase also ends when no edit lowers the
+   * energy and the Newton decrement is below DecrementTolerance. Default 50, range 0 to 100000. */
+  vtkSetClampMacro(CoarseIterations, int, 0, 100000);
+  vtkGetMacro(CoarseIterations, int);
   ///@}
 
   ///@{
-  /**
-   * Rounds of refinement where the exact map is distorted, after the fine phase (0: off).
-   */
-  vtkSurfaceMapSettingMacro(RefinementRounds, int);
+  /** Approximation error eps of the coarse phase (unit-area units): approximation weight
+   * 1/eps^2, and the error the curvature sizing aims at. Default 0.01, range 1e-6 to 1. */
+  vtkSetClampMacro(CoarseError, double, 1e-6, 1.0);
+  vtkGetMacro(CoarseError, double);
   ///@}
 
   ///@{
-  /**
-   * Iterations of each refinement round (at most FineIterations).
-   */
-  vtkSurfaceMapSettingMacro(RefinementIterations, int);
+  /** Weight of the bijectivity barrier in the coarse phase. Default 0.001, range 1e-12 to 1e6. */
+  vtkSetClampMacro(CoarseBarrierWeight, double, 1e-12, 1e6);
+  vtkGetMacro(CoarseBarrierWeight, double);
   ///@}
 
   ///@{
-  /**
-   * The first refinement round's threshold on an input triangle's exact-map distortion max(s1,
-   * 1/s2).
-   */
-  vtkSurfaceMapSettingMacro(RefinementDistortion, double);
+  /** Iteration cap of the fine phase (0 skips it, and the refinement with it). Default 50, range
+   * 0 to 100000. */
+  vtkSetClampMacro(FineIterations, int, 0, 100000);
+  vtkGetMacro(FineIterations, int);
   ///@}
 
   ///@{
-  /**
-   * The later rounds' threshold: while the exact map squeezes an input triangle inside a T
-   * triangle beyond this, another round of iterations runs (the sizing stays as it is).
-   */
-  vtkSurfaceMapSettingMacro(SqueezeDistortion, double);
+  /** Approximation error eps of the fine phase (unit-area units): approximation weight 1/eps^2
+   * and the curvature sizing's error; smaller values give a larger T. Default 0.001, range 1e-6
+   * to 1. */
+  vtkSetClampMacro(TargetError, double, 1e-6, 1.0);
+  vtkGetMacro(TargetError, double);
   ///@}
 
   ///@{
-  /**
-   * Bounds the first round's refinement: sizing times 1/sqrt(1 + growth/area), at most halved.
-   */
-  vtkSurfaceMapSettingMacro(RefinementGrowth, double);
+  /** Weight of the bijectivity barrier in the fine phase and after it. Default 1e-6, range 1e-12
+   * to 1e6. */
+  vtkSetClampMacro(FineBarrierWeight, double, 1e-12, 1e6);
+  vtkGetMacro(FineBarrierWeight, double);
   ///@}
 
   ///@{
-  /**
-   * Error-bounded remeshing: largest distance of an input vertex from its base point on T, as a
-   * fraction of the input's bounding-box diagonal (0: off). Field data "BaseDistance" and
-   * "ErrorBound" per input; a bound that cannot be met is NotCertifiedError.
-   */
-  vtkSurfaceMapSettingMacro(MaxError, double);
+  /** From the fine phase on, the barrier weight of a triangle of T that inverts on a sphere at a
+   * Newton step's full step is multiplied by this (at most three times), so the next steps see
+   * the wall they ran into; 1: the same weight for every triangle. Default 4, range 1 to 1000. */
+  vtkSetClampMacro(FineBarrierRaise, double, 1.0, 1000.0);
+  vtkGetMacro(FineBarrierRaise, double);
   ///@}
 
   ///@{
-  /**
-   * Refinement rounds towards MaxError at most.
-   */
-  vtkSurfaceMapSettingMacro(BoundRefinementRounds, int);
+  /** Weight of the mesh-quality term (coarse phase on). Default 0.5, range 0 to 1e6. */
+  vtkSetClampMacro(MeshWeight, double, 0.0, 1e6);
+  vtkGetMacro(MeshWeight, double);
   ///@}
 
   ///@{
-  /**
-   * Iterations of each refinement round towards MaxError.
-   */
-  vtkSurfaceMapSettingMacro(BoundRefinementIterations, int);
+  /** Weight of the coverage term (coarse phase on): per triangle of T and input, its lifted area
+   * against the input area its sphere triangle covers; keeps T's triangles from being slivers
+   * on one sphere over a fold of the surface, where the exact map squeezes. Default 0.1, range
+   * 0 to 1e6. */
+  vtkSetClampMacro(CoverageWeight, double, 0.0, 1e6);
+  vtkGetMacro(CoverageWeight, double);
   ///@}
 
   ///@{
-  /**
-   * Refinement towards MaxError goes on while a vertex is beyond this fraction of the bound.
-   */
-  vtkSurfaceMapSettingMacro(BoundMargin, double);
+  /** Weight of the map-distortion term (coarse phase on): more, a lower distortion. Default 1,
+   * range 0 to 1e6. */
+  vtkSetClampMacro(MapWeight, double, 0.0, 1e6);
+  vtkGetMacro(MapWeight, double);
   ///@}
 
   ///@{
-  /**
-   * Iterations with the hard bound as a barrier when MaxError is set.
-   */
-  vtkSurfaceMapSettingMacro(BoundIterations, int);
+  /** Weight of the surface-approximation term (coarse phase on): more, a T and an exact map
+   * closer to the inputs. Default 0.25, range 0 to 1e6. */
+  vtkSetClampMacro(ApproximationWeight, double, 0.0, 1e6);
+  vtkGetMacro(ApproximationWeight, double);
   ///@}
 
   ///@{
-  /**
-   * Vertex budget of T: a map whose T would grow beyond it ends without a
-   * certified result (NotCertifiedError), naming the phase. 0 (default): 20
-   * times the largest input's vertex count, at least 20 000.
-   */
-  vtkSurfaceMapSettingMacro(MaxVertices, int);
+  /** After the fine phase, rounds that shrink the sizing around input triangles whose exact-map
+   * distortion exceeds a threshold, then iterate again with the fine phase's settings; rounds
+   * stop when no triangle exceeds it (0: off). Default 1, range 0 to 100. */
+  vtkSetClampMacro(RefinementRounds, int, 0, 100);
+  vtkGetMacro(RefinementRounds, int);
   ///@}
 
   ///@{
-  /**
-   * Input vertices per input the approximation term uses at most.
-   */
-  vtkSurfaceMapSettingMacro(ApproximationSamples, int);
+  /** Iterations of each refinement round (at most FineIterations). Default 10, range 1 to
+   * 100000. */
+  vtkSetClampMacro(RefinementIterations, int, 1, 100000);
+  vtkGetMacro(RefinementIterations, int);
   ///@}
 
   ///@{
-  /**
-   * Smallest edge length of the curvature sizing (unit-area units).
-   */
-  vtkSurfaceMapSettingMacro(MinEdgeLength, double);
+  /** The first round's threshold on the exact map's distortion max(s1, 1/s2) of an input
+   * triangle: T gets more vertices where the map is distorted. Default 1.4, range 1 to 1e12. */
+  vtkSetClampMacro(RefinementDistortion, double, 1.0, 1e12);
+  vtkGetMacro(RefinementDistortion, double);
   ///@}
 
   ///@{
-  /**
-   * Largest edge length of the curvature sizing (unit-area units).
-   */
-  vtkSurfaceMapSettingMacro(MaxEdgeLength, double);
+  /** The later rounds' threshold: while the exact map squeezes an input triangle inside a T
+   * triangle (which T's own map cannot see) beyond this, another round of iterations runs, with
+   * the sizing as it is. Default 10, range 1 to 1e12. */
+  vtkSetClampMacro(SqueezeDistortion, double, 1.0, 1e12);
+  vtkGetMacro(SqueezeDistortion, double);
   ///@}
 
   ///@{
-  /**
-   * A phase has converged when no edit lowers the energy and the Newton decrement is below this.
-   */
-  vtkSurfaceMapSettingMacro(DecrementTolerance, double);
+  /** Bounds the first round's refinement: with a fraction `area` of an input above the threshold
+   * the sizing there shrinks by 1/sqrt(1 + growth/area), at most by half (0: the round only
+   * iterates). Default 0.25, range 0 to 1e12. */
+  vtkSetClampMacro(RefinementGrowth, double, 0.0, 1e12);
+  vtkGetMacro(RefinementGrowth, double);
   ///@}
 
   ///@{
-  /**
-   * Largest tangent step of one point in a Newton step (the whole step is scaled down to respect
-   * it).
-   */
-  vtkSurfaceMapSettingMacro(MaxPointStep, double);
+  /** Error-bounded remeshing: the largest distance allowed between an input vertex and its base
+   * point on T, as a fraction of the input's bounding-box diagonal; refined until met, then
+   * optimised with the bound as a barrier and certified on every vertex (0: off). The filter's
+   * field data "BaseDistance" and "ErrorBound" give it per input; a bound that cannot be met
+   * leaves no certified map. Default 0, range 0 to 1. */
+  vtkSetClampMacro(MaxError, double, 0.0, 1.0);
+  vtkGetMacro(MaxError, double);
   ///@}
 
   ///@{
-  /**
-   * From this many inputs on, Newton systems are solved by conjugate gradients preconditioned with
-   * each embedding's own block (time linear in the number of inputs) instead of one factorisation
-   * of all embeddings together; 0: always the factorisation.
-   */
-  vtkSurfaceMapSettingMacro(BlockSolveInputs, int);
+  /** Rounds of refinement towards MaxError at most; a vertex still beyond the bound after them
+   * is an error (one only beyond BoundMargin of it goes on to the bound phase). Default 8,
+   * range 0 to 100. */
+  vtkSetClampMacro(BoundRefinementRounds, int, 0, 100);
+  vtkGetMacro(BoundRefinementRounds, int);
   ///@}
+
+  ///@{
+  /** Iterations of each refinement round towards MaxError. Default 10, range 0 to 100000. */
+  vtkSetClampMacro(BoundRefinementIterations, int, 0, 100000);
+  vtkGetMacro(BoundRefinementIterations, int);
+  ///@}
+
+  ///@{
+  /** Refinement towards MaxError goes on while a vertex is beyond this fraction of the bound, so
+   * that the barrier starts finite. Default 0.9, range 0.01 to 1. */
+  vtkSetClampMacro(BoundMargin, double, 0.01, 1.0);
+  vtkGetMacro(BoundMargin, double);
+  ///@}
+
+  ///@{
+  /** Iterations with the hard bound as a barrier when MaxError is set. Default 20, range 0 to
+   * 100000. */
+  vtkSetClampMacro(BoundIterations, int, 0, 100000);
+  vtkGetMacro(BoundIterations, int);
+  ///@}
+
+  ///@{
+  /** Vertex budget of T, checked after every remeshing: a map whose T would grow beyond it ends
+   * without a certified result, naming the phase, so that a target error or bound finer than
+   * the budget allows cannot run for ever (0: 20 times the largest input's vertex count, at
+   * least 20 000). Default 0, range 0 to 1000000000. */
+  vtkSetClampMacro(MaxVertices, int, 0, 1000000000);
+  vtkGetMacro(MaxVertices, int);
+  ///@}
+
+  ///@{
+  /** Input vertices per input the approximation term uses at most (an evenly spread subsample of
+   * larger inputs; every vertex with MaxError). Default 50000, range 1 to 1000000000. */
+  vtkSetClampMacro(ApproximationSamples, int, 1, 1000000000);
+  vtkGetMacro(ApproximationSamples, int);
+  ///@}
+
+  ///@{
+  /** Smallest edge length of the curvature sizing (unit-area units). Default 0.001, range 1e-9
+   * to 1e9. */
+  vtkSetClampMacro(MinEdgeLength, double, 1e-9, 1e9);
+  vtkGetMacro(MinEdgeLength, double);
+  ///@}
+
+  ///@{
+  /** Largest edge length of the curvature sizing (unit-area units). Default 100, range 1e-9 to
+   * 1e9. */
+  vtkSetClampMacro(MaxEdgeLength, double, 1e-9, 1e9);
+  vtkGetMacro(MaxEdgeLength, double);
+  ///@}
+
+  ///@{
+  /** A phase has converged when no edit lowers the energy and the Newton decrement sqrt(-d.g) is
+   * below this. Default 0.0001, range 0 to 1. */
+  vtkSetClampMacro(DecrementTolerance, double, 0.0, 1.0);
+  vtkGetMacro(DecrementTolerance, double);
+  ///@}
+
+  ///@{
+  /** Largest tangent step of one point in a Newton step, as the tan of its angle (tan 10 degrees
+   * is 0.176); the whole step is scaled down to respect it, never clamped per point. Default
+   * 0.17632698070846498, range 1e-6 to 1000. */
+  vtkSetClampMacro(MaxPointStep, double, 1e-6, 1000.0);
+  vtkGetMacro(MaxPointStep, double);
+  ///@}
+
+  ///@{
+  /** From this many inputs on, each Newton system is solved by conjugate gradients
+   * preconditioned with every sphere embedding's own block (time linear in the number of
+   * inputs) instead of one Cholesky factorisation of all embeddings together (whose cost grows
+   * with the cube of the number of inputs); 0: always the factorisation. Default 4, range 0 to
+   * 1000000. */
+  vtkSetClampMacro(BlockSolveInputs, int, 0, 1000000);
+  vtkGetMacro(BlockSolveInputs, int);
+  ///@}
+  // clang-format on
+  // END SETTINGS
 
   ///@{
   /**
@@ -494,7 +490,8 @@ public:
 
   ///@{
   /**
-   * The settings table for tools (command lines, GUIs): setting i's property
+   * The settings table for tools (command lines, GUIs), the same as
+   * vtkSurfaceMapsSettings' MAP_SETTINGS table: setting i's property
    * name (Set<Name>/Get<Name>), command-line flag (without "--"; for a
    * switch the flag that turns it on, GetSettingOffFlag the one that turns it
    * off, else nullptr), choices ("star|sequence|..." for SETTING_CHOICE,
@@ -514,10 +511,7 @@ public:
   static double GetSettingMinimum(int i);
   static double GetSettingMaximum(int i);
   static double GetSettingDefault(int i);
-  /**
-   * Reads setting i's value as a person writes it (a choice's name, a number
-   * in the range, whole for counts) into `value`; false if `text` is none.
-   */
+  /** Setting i's value from `text` as vtkSurfaceMapsSettings::Parse; false if none. */
   static bool ParseSettingValue(int i, const char* text, double* value);
   ///@}
 
@@ -632,6 +626,45 @@ protected:
    */
   virtual void UpdateNumberOfOutputPorts();
 
+  // BEGIN SETTING MEMBERS
+  // clang-format off
+  int PairMode = 0;
+  int LandmarkIterations = 100;
+  double LandmarkWeight = 1e6;
+  double LandmarkBarrierWeight = 1.0;
+  double LandmarkTolerance = 0.0001;
+  bool RelaxLandmarkPhase = true;
+  bool KeepLandmarks = true;
+  int CoarseIterations = 50;
+  double CoarseError = 0.01;
+  double CoarseBarrierWeight = 0.001;
+  int FineIterations = 50;
+  double TargetError = 0.001;
+  double FineBarrierWeight = 1e-6;
+  double FineBarrierRaise = 4.0;
+  double MeshWeight = 0.5;
+  double CoverageWeight = 0.1;
+  double MapWeight = 1.0;
+  double ApproximationWeight = 0.25;
+  int RefinementRounds = 1;
+  int RefinementIterations = 10;
+  double RefinementDistortion = 1.4;
+  double SqueezeDistortion = 10.0;
+  double RefinementGrowth = 0.25;
+  double MaxError = 0.0;
+  int BoundRefinementRounds = 8;
+  int BoundRefinementIterations = 10;
+  double BoundMargin = 0.9;
+  int BoundIterations = 20;
+  int MaxVertices = 0;
+  int ApproximationSamples = 50000;
+  double MinEdgeLength = 0.001;
+  double MaxEdgeLength = 100.0;
+  double DecrementTolerance = 0.0001;
+  double MaxPointStep = 0.17632698070846498;
+  int BlockSolveInputs = 4;
+  // clang-format on
+  // END SETTING MEMBERS
   int SizingMode = SIZING_ARRAY_OR_CURVATURE;
   int OutputMode = COMMON_TRIANGULATION;
   int MappedInput = 0;

@@ -17,44 +17,14 @@
 namespace surfacemaps
 {
 
+/// Every setting of embedOnSphere: one field per embedding setting of the
+/// list (settings/SettingList.def), which holds its type, default, range and
+/// documentation.
 struct SphereEmbeddingOptions
 {
-  /// Total weight of the barriers (orientation, edge length), spread evenly
-  /// over the triangles, against the distortion (whose minimum is 1). The
-  /// retry with a stronger barrier multiplies it by 100.
-  double barrierWeight = 0.1;
-  /// Newton iterations on the whole current mesh after inserting a level,
-  /// and the same above 1 000 vertices; they stop earlier once the decrease
-  /// a Newton step expects (decrement^2 / 2) is below levelTolerance (the
-  /// distortion's minimum is 1).
-  int levelIterations = 20;
-  int levelIterationsLarge = 5;
-  double levelTolerance = 1e-5;
-  /// Newton iterations on the input mesh at the end, and their tolerance
-  /// (as for the levels).
-  int finalIterations = 50;
-  double finalTolerance = 1e-5;
-  /// The final iterations go on, up to finalIterationsSqueezed in all (and
-  /// until the tolerance is met), while some triangle's share of the sphere is
-  /// below squeezedRatio times its share of the input's area. The exact map
-  /// inherits such a triangle: input triangles that land in it are squeezed
-  /// or stretched as much. Sound embeddings of real meshes have no triangle
-  /// below 0.07; after 50 iterations a few meshes still have triangles at
-  /// 1e-4 to 1e-3 that more iterations remove. 0 turns the check off.
-  int finalIterationsSqueezed = 150;
-  double squeezedRatio = 1e-2;
-  /// Newton iterations on each inserted vertex's own two variables.
-  int localIterations = 10;
-  /// An attempt whose final distortion exceeds this counts as failed and the
-  /// next attempt runs; if every certified attempt exceeds it, the least
-  /// distorted one is the result. The first attempt also gives up at the
-  /// first level whose distortion ends above it. A sound embedding's
-  /// distortion is of order 1-10; above 100 it is dominated by triangles
-  /// squeezed thousands of times on the sphere, which the map inherits: its
-  /// exact map squeezes the input there, however good T is.
-  double maxDistortion = 100.0;
-  /// Largest tangent step of one point per Newton step (tan 75 degrees).
-  double maxPointStep = 3.7320508075688772;
+#define SURFACEMAPS_EMBEDDING_SETTING(Name, field, Type, Kind, Default, ...) Type field = Default;
+#include "settings/SettingList.def"
+
   /// Called with the fraction done (0..1); return false to abort.
   std::function<bool(double)> progress;
   Logger log;

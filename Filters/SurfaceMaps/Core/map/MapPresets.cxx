@@ -1,9 +1,5 @@
 #include "map/MapPresets.h"
 
-#include "map/MapSettings.h"
-
-#include <stdexcept>
-
 namespace surfacemaps
 {
 
@@ -19,15 +15,14 @@ namespace
 /// no refinement rounds run (they grow T where any one of the N - 1 exact
 /// maps is distorted, so T grows with N). Landmarks stay locked: every
 /// specimen's landmarks are exact in the common triangulation.
-const std::vector<PresetValue>& populationValues()
+SurfaceMapOptions populationOptions()
 {
-  static const std::vector<PresetValue> values = {
-    { "TargetError", 1e-2 },
-    { "FineIterations", 30 },
-    { "ApproximationWeight", 2.0 },
-    { "RefinementRounds", 0 },
-  };
-  return values;
+  SurfaceMapOptions options;
+  options.targetError = 1e-2;
+  options.fineIterations = 30;
+  options.approximationWeight = 2.0;
+  options.refinementRounds = 0;
+  return options;
 }
 
 } // namespace
@@ -69,12 +64,14 @@ std::vector<MapPreset> presets()
 
 std::vector<PresetValue> presetValues(MapPreset preset)
 {
-  std::vector<PresetValue> values = populationValues();
-  if (preset == MapPreset::Pair)
+  const SurfaceMapOptions population = populationOptions();
+  std::vector<PresetValue> values;
+  for (const MapSetting& s : mapSettings())
   {
-    for (PresetValue& v : values)
+    const double value = s.get(population);
+    if (value != s.defaultValue)
     {
-      v.value = findMapSetting(v.setting)->defaultValue();
+      values.push_back({ &s, preset == MapPreset::Population ? value : s.defaultValue });
     }
   }
   return values;
@@ -84,13 +81,39 @@ void applyPreset(SurfaceMapOptions& options, MapPreset preset)
 {
   for (const PresetValue& v : presetValues(preset))
   {
-    const MapSetting* setting = findMapSetting(v.setting);
-    if (!setting)
-    {
-      throw std::logic_error(std::string("preset names no setting ") + v.setting);
-    }
-    setting->set(options, setting->clamp(v.value));
+    v.setting->set(options, v.value);
   }
+}
+
+std::string presetDescription(MapPreset preset)
+{
+  std::string text = std::string(presetDocumentation(preset)) + " Sets ";
+  const std::vector<PresetValue> values = presetValues(preset);
+  for (std::size_t k = 0; k < values.size(); ++k)
+  {
+    text += (k == 0 ? "" : ", ") + std::string(values[k].setting->name) + " " +
+      values[k].setting->format(values[k].value);
+  }
+  return text + ".";
+}
+
+std::string presetHelp()
+{
+  std::string names;
+  for (MapPreset p : presets())
+  {
+    names += (names.empty() ? "" : "|") + std::string(presetName(p));
+  }
+  std::string help = "  --preset " + names + "\n" +
+    wrapText("Sets a group of the settings below for a kind of study, wherever the flag stands; "
+             "the settings given as flags override it.",
+      6,
+      79);
+  for (MapPreset p : presets())
+  {
+    help += wrapText(std::string(presetName(p)) + ": " + presetDescription(p), 6, 79);
+  }
+  return help;
 }
 
 } // namespace surfacemaps

@@ -1,7 +1,8 @@
-// SurfaceMaps engine: named sets of settings for kinds of study.
+// SurfaceMaps engine: named sets of settings for kinds of study, and their
+// text (what a preset sets, the --preset help).
 #pragma once
 
-#include "map/MapOptions.h"
+#include "map/MapSettings.h"
 
 #include <string>
 #include <vector>
@@ -19,11 +20,10 @@ enum class MapPreset
   Population,
 };
 
-/// One setting a preset sets: its name in the settings table (MapSettings.h)
-/// and its value.
+/// One setting a preset sets, and its value.
 struct PresetValue
 {
-  const char* setting;
+  const MapSetting* setting;
   double value;
 };
 
@@ -36,12 +36,19 @@ bool parsePreset(const std::string& name, MapPreset& preset);
 /// Every preset, in enum order.
 std::vector<MapPreset> presets();
 
-/// The settings the preset sets, with their values. Every preset lists the
-/// same settings, so applying one undoes another; Pair's values are the
-/// defaults.
+/// The settings the preset sets, with their values, in the list's order.
+/// Every preset lists the same settings, so applying one undoes another;
+/// Pair's values are the defaults.
 std::vector<PresetValue> presetValues(MapPreset preset);
 
 /// Sets the preset's settings in `options`; the others stay.
 void applyPreset(SurfaceMapOptions& options, MapPreset preset);
+
+/// presetDocumentation followed by "Sets Name value, ...".
+std::string presetDescription(MapPreset preset);
+
+/// The --preset entry of a --help: the flag with the presets' names, what a
+/// preset does, then each preset's description (wrapped like Setting::help).
+std::string presetHelp();
 
 } // namespace surfacemaps

@@ -1,23 +1,24 @@
-// Build-time generator of the map filter's server-manager XML: the surface
-// map's settings become ParaView properties straight from the engine's
-// settings table (Core/map/MapSettings.cxx), their one home, so a setting
-// added there appears in ParaView with its range, default and documentation
-// without touching the plugin.
+// Build-time generator of the server-manager XML of the filters with
+// settings: the surface map's and the sphere embedding's settings become
+// ParaView properties straight from the engine's list of settings
+// (Core/settings/SettingList.def), their one home, so a setting added there
+// appears in ParaView with its range, default and documentation without
+// touching the plugin.
 //
-// Usage: GenerateMapSettingsXML TEMPLATE OUTPUT
+// Usage: GenerateSettingsXML TEMPLATE OUTPUT
 // Copies TEMPLATE to OUTPUT with the line holding @MAP_PRESET@ replaced by
-// the Preset property (one entry per preset of Core/map/MapPresets.cxx) and
-// the line holding @MAP_SETTINGS@ by one property per setting and one
-// property group per topic of the table. Exit code 1
-// (and a message) if the template lacks either line or a file cannot be read
-// or written.
+// the Preset property (one entry per preset of Core/map/MapPresets.cxx), the
+// line holding @MAP_SETTINGS@ by one property per map setting and one
+// property group per topic, and the line holding @EMBEDDING_SETTINGS@ by the
+// same for the sphere embedding's settings. Exit code 1 (and a message) if
+// the template holds none of these lines or a file cannot be read or
+// written.
 #include "map/MapPresets.h"
 #include "map/MapSettings.h"
 
 #include <cstdio>
 #include <fstream>
 #include <iostream>
-#include <set>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -59,24 +60,15 @@ std::string number(double value)
   return text;
 }
 
-// The settings shown without the panel's "advanced" toggle: the ones a
-// first map is tuned with (iteration caps, the error, the pairs).
-bool basic(const std::string& name)
-{
-  static const std::set<std::string> names = { "PairMode", "LandmarkIterations",
-    "CoarseIterations", "FineIterations", "TargetError", "RefinementRounds", "MaxError" };
-  return names.count(name) > 0;
-}
-
-void writeProperty(std::ostream& out, const surfacemaps::MapSetting& s)
+void writeProperty(std::ostream& out, const surfacemaps::Setting& s)
 {
   using surfacemaps::SettingKind;
   const bool real = s.kind == SettingKind::Real;
   const char* element = real ? "DoubleVectorProperty" : "IntVectorProperty";
   const std::string name = s.name;
   out << "      <" << element << " name=\"" << name << "\" command=\"Set" << name
-      << "\" number_of_elements=\"1\" default_values=\"" << number(s.defaultValue()) << "\"";
-  if (!basic(name))
+      << "\" number_of_elements=\"1\" default_values=\"" << number(s.defaultValue) << "\"";
+  if (s.panel == surfacemaps::SettingPanel::Advanced)
   {
     out << " panel_visibility=\"advanced\"";
   }
@@ -106,22 +98,21 @@ void writeProperty(std::ostream& out, const surfacemaps::MapSetting& s)
       break;
     }
   }
-  std::string range;
-  if (s.kind == SettingKind::Real || s.kind == SettingKind::Count)
-  {
-    range = " Range " + s.format(s.minimum) + " to " + s.format(s.maximum) + ".";
-  }
-  out << "        <Documentation>" << escaped(s.doc) << escaped(range)
-      << " Default: " << escaped(s.format(s.defaultValue())) << ". (Command line: --"
+  out << "        <Documentation>" << escaped(s.describe()) << " (Command line: --"
       << escaped(s.flag) << ".)</Documentation>\n";
   out << "      </" << element << ">\n";
 }
 
-// One PropertyGroup per topic of the table (its settings are consecutive),
-// so the panel shows the settings under the table's headings.
-void writeGroups(std::ostream& out)
+// One property per setting, then one PropertyGroup per topic of the table
+// (its settings are consecutive), so the panel shows the settings under the
+// list's headings.
+template<class S>
+void writeSettings(std::ostream& out, const std::vector<S>& table)
 {
-  const std::vector<surfacemaps::MapSetting>& table = surfacemaps::mapSettings();
+  for (const S& s : table)
+  {
+    writeProperty(out, s);
+  }
   for (std::size_t k = 0; k < table.size();)
   {
     const std::string topic = table[k].topic ? table[k].topic : "Other settings";
@@ -165,20 +156,40 @@ void writePreset(std::ostream& out)
   for (surfacemaps::MapPreset preset : all)
   {
     doc += std::string(" ") + label(surfacemaps::presetName(preset)) + ": " +
-      surfacemaps::presetDocumentation(preset) + " Sets ";
-    const std::vector<surfacemaps::PresetValue> values = surfacemaps::presetValues(preset);
-    for (std::size_t k = 0; k < values.size(); ++k)
-    {
-      const surfacemaps::MapSetting* s = surfacemaps::findMapSetting(values[k].setting);
-      doc += (k == 0 ? "" : ", ") + std::string(values[k].setting) + " " +
-        s->format(s->clamp(values[k].value));
-    }
-    doc += ".";
+      surfacemaps::presetDescription(preset);
   }
   out << "        <Documentation>" << escaped(doc)
       << " Default: " << escaped(label(surfacemaps::presetName(all.front())))
       << ". (Command line: --preset.)</Documentation>\n"
       << "      </IntVectorProperty>\n";
+}
+
+// The template with each marker line replaced; false if it holds none.
+bool substitute(std::istream& in, std::ostream& out)
+{
+  bool any = false;
+  for (std::string line; std::getline(in, line);)
+  {
+    if (line.find("@MAP_SETTINGS@") != std::string::npos)
+    {
+      writeSettings(out, surfacemaps::mapSettings());
+    }
+    else if (line.find("@EMBEDDING_SETTINGS@") != std::string::npos)
+    {
+      writeSettings(out, surfacemaps::embeddingSettings());
+    }
+    else if (line.find("@MAP_PRESET@") != std::string::npos)
+    {
+      writePreset(out);
+    }
+    else
+    {
+      out << line << "\n";
+      continue;
+    }
+    any = true;
+  }
+  return any;
 }
 
 } // namespace
@@ -197,33 +208,10 @@ int main(int argc, char* argv[])
     return 1;
   }
   std::ostringstream out;
-  bool settings = false;
-  bool preset = false;
-  for (std::string line; std::getline(in, line);)
+  if (!substitute(in, out))
   {
-    if (line.find("@MAP_SETTINGS@") != std::string::npos)
-    {
-      for (const surfacemaps::MapSetting& s : surfacemaps::mapSettings())
-      {
-        writeProperty(out, s);
-      }
-      writeGroups(out);
-      settings = true;
-    }
-    else if (line.find("@MAP_PRESET@") != std::string::npos)
-    {
-      writePreset(out);
-      preset = true;
-    }
-    else
-    {
-      out << line << "\n";
-    }
-  }
-  if (!settings || !preset)
-  {
-    std::cerr << argv[0] << ": " << argv[1] << " has no "
-              << (settings ? "@MAP_PRESET@" : "@MAP_SETTINGS@") << " line\n";
+    std::cerr << argv[0] << ": " << argv[1]
+              << " has no @MAP_SETTINGS@, @EMBEDDING_SETTINGS@ or @MAP_PRESET@ line\n";
     return 1;
   }
   std::ofstream file(argv[2]);
