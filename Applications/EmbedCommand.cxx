@@ -4,9 +4,11 @@
 #include "AtomicFiles.h"
 #include "Commands.h"
 #include "MeshFiles.h"
+#include "SettingFlags.h"
 #include "Terminal.h"
 
 #include "vtkSphereEmbeddingFilter.h"
+#include "vtkSurfaceMapsSettings.h"
 
 #include "vtkDataArray.h"
 #include "vtkFieldData.h"
@@ -44,7 +46,7 @@ namespace
 {
 const std::string EmbedHelpText =
   std::string("usage: surfacemap embed MESH -o OUT.vtp [--on-sphere] [--landmarks FILE]\n"
-              "                        [--reference EMBEDDED.vtp]\n"
+              "                        [--reference EMBEDDED.vtp] [SETTING ...]\n"
               "\n"
               "Computes a bijective embedding of MESH (closed, manifold, genus 0) on the\n"
               "unit sphere and writes MESH with the point array SpherePosition to OUT.vtp.\n"
@@ -63,8 +65,11 @@ const std::string EmbedHelpText =
               "                        rotate the new embedding so that its landmarks come\n"
               "                        closest to the reference's\n"
               "\n"
-              "Exit code 0 with a certified embedding, 2 for bad usage or input, 3 if no\n"
-              "certified embedding was found.\n") +
+              "Settings (surfacemap map computes its embeddings with their defaults):\n") +
+  settingsHelp(vtkSurfaceMapsSettings::SPHERE_EMBEDDING_SETTINGS) +
+  "\n"
+  "Exit code 0 with a certified embedding, 2 for bad usage or input, 3 if no\n"
+  "certified embedding was found.\n" +
   LandmarkFormatsHelp;
 } // namespace
 
@@ -79,7 +84,9 @@ struct EmbedArguments
   bool onSphere = false;
 };
 
-EmbedArguments parseArguments(const std::vector<std::string>& args)
+// The arguments; the settings' flags go to `embedding`.
+EmbedArguments parseArguments(const std::vector<std::string>& args,
+  vtkSphereEmbeddingFilter* embedding)
 {
   EmbedArguments parsed;
   for (std::size_t i = 0; i < args.size(); ++i)
@@ -95,6 +102,9 @@ EmbedArguments parseArguments(const std::vector<std::string>& args)
     else if (a == "--on-sphere")
     {
       parsed.onSphere = true;
+    }
+    else if (parseSettingFlag(embedding, args, i))
+    {
     }
     else if (isOption(a))
     {
@@ -178,13 +188,13 @@ void printEmbedding(vtkPolyData* result, const EmbedArguments& arguments)
 
 int runEmbed(const std::vector<std::string>& args)
 {
-  const EmbedArguments arguments = parseArguments(args);
+  vtkNew<vtkSphereEmbeddingFilter> embedding;
+  const EmbedArguments arguments = parseArguments(args, embedding);
   vtkSmartPointer<vtkPolyData> input = readValidMesh(arguments.mesh, arguments.landmarks);
   if (!input || !canWrite(arguments.output))
   {
     return ExitBadInput;
   }
-  vtkNew<vtkSphereEmbeddingFilter> embedding;
   embedding->SetInputData(input);
   if (!arguments.reference.empty() && !setReference(embedding, input, arguments.reference))
   {

@@ -14,6 +14,7 @@
 
 #include "vtkSurfaceMapEvaluation.h"
 #include "vtkSurfaceMapFilter.h"
+#include "vtkSurfaceMapsSettings.h"
 
 #include "vtkAbstractArray.h"
 #include "vtkDataArray.h"
@@ -61,9 +62,11 @@ const char* const MapHelpIntro =
   "                      input i with its sphere embedding in the map's frame\n"
   "                      (SpherePosition): with common_<i>.vtp, what\n"
   "                      'surfacemap transfer' reads to carry data between inputs\n"
-  "  DIR/report.json     every setting of the run, sizes, energies, per-phase\n"
-  "                      iterations and times, the certificate, the landmark\n"
-  "                      error and the metrics of the approximating map\n"
+  "  DIR/report.json     every setting of the run (and the sphere embedding's,\n"
+  "                      which the map computes embeddings with), sizes,\n"
+  "                      energies, per-phase iterations and times, the\n"
+  "                      certificate, the landmark error and the metrics of\n"
+  "                      the approximating map\n"
   "                      (common_0 -> common_i) and of the exact map (input 0 ->\n"
   "                      mapped_i): symmetric Dirichlet, area below distortion\n"
   "                      1.5 and 2, max distortion, Hausdorff distance per input\n"
@@ -104,7 +107,8 @@ const char* const MapExitCodes =
   "an internal error.\n";
 
 const std::string MapHelpText = std::string(MapHelpIntro) + ArrayTransferFlagsHelp +
-  MapHelpSettings + presetsHelp() + settingsHelp() + LandmarkFormatsHelp + MapExitCodes;
+  MapHelpSettings + vtkSurfaceMapsSettings::GetPresetHelp() +
+  settingsHelp(vtkSurfaceMapsSettings::MAP_SETTINGS) + LandmarkFormatsHelp + MapExitCodes;
 } // namespace
 
 const char* const MapHelp = MapHelpText.c_str();
@@ -404,6 +408,13 @@ Json::Value reportMap(vtkSurfaceMapFilter* map,
   report["seconds"]["map"] = jsonNumber(field(first, "MapSeconds"));
   report["preset"] = arguments.preset.empty() ? Json::Value() : Json::Value(arguments.preset);
   report["settings"] = settingsJson(map);
+  // The map computes the embeddings it is not given with the defaults.
+  report["embedding_settings"] = settingsJson(vtkSurfaceMapsSettings::SPHERE_EMBEDDING_SETTINGS,
+    [](int k)
+    {
+      return vtkSurfaceMapsSettings::GetDefault(
+        vtkSurfaceMapsSettings::SPHERE_EMBEDDING_SETTINGS, k);
+    });
   report["array_transfer_modes"] = Json::Value(Json::objectValue);
   for (int k = 0; k < map->GetNumberOfArrayTransferModes(); ++k)
   {

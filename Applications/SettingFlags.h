@@ -1,12 +1,14 @@
-// The `surfacemap` command line: the map's settings as flags, derived from
-// vtkSurfaceMapFilter's settings table (one flag per setting, its range
-// checked, its documentation and default in --help, its value in
-// report.json).
+// The `surfacemap` command line: a filter's settings as flags. Everything
+// about a setting (its flag, its value as text, its --help entry, its JSON)
+// comes from the engine's list through vtkSurfaceMapsSettings, the one
+// codec; this file only walks the arguments and the table.
 #pragma once
 
+#include <functional>
 #include <string>
 #include <vector>
 
+class vtkSphereEmbeddingFilter;
 class vtkSurfaceMapFilter;
 namespace Json
 {
@@ -16,10 +18,24 @@ class Value;
 namespace surfacemap
 {
 
-/// If args[i] is a setting's flag, sets the setting on `map` (consuming its
-/// value, i then at the value) and returns true; throws UsageError naming
-/// the flag and its range for a bad value. False for any other argument.
+/// If args[i] is a flag of a setting of `table` (vtkSurfaceMapsSettings::
+/// Tables), gives setting k its value through set(k, value), consuming the
+/// value (i then at it), and returns true; throws UsageError naming the flag
+/// and what it takes for a missing or bad value. False for any other
+/// argument.
+bool parseSettingFlag(int table,
+  const std::vector<std::string>& args,
+  std::size_t& i,
+  const std::function<void(int, double)>& set);
+
+/// The map's settings on `map`, and --preset (skipped with its value: see
+/// applyPresetFlag).
 bool parseSettingFlag(vtkSurfaceMapFilter* map,
+  const std::vector<std::string>& args,
+  std::size_t& i);
+
+/// The sphere embedding's settings on `embedding`.
+bool parseSettingFlag(vtkSphereEmbeddingFilter* embedding,
   const std::vector<std::string>& args,
   std::size_t& i);
 
@@ -29,14 +45,14 @@ bool parseSettingFlag(vtkSurfaceMapFilter* map,
 /// preset. parseSettingFlag then skips the flag and its value.
 std::string applyPresetFlag(vtkSurfaceMapFilter* map, const std::vector<std::string>& args);
 
-/// --preset with every preset's name and documentation, for --help.
-std::string presetsHelp();
+/// Every setting's --help entry of `table`, in the list's order.
+std::string settingsHelp(int table);
 
-/// Every setting's flag with its documentation, default and range, for --help.
-std::string settingsHelp();
+/// The settings of `table` as one JSON object, each value get(k) under its
+/// key: { "target_error": 0.001, ..., "pairs": "star", "keep_landmarks": true }.
+Json::Value settingsJson(int table, const std::function<double(int)>& get);
 
-/// Every setting of `map` as one JSON object: { "target_error": 0.001, ...,
-/// "pairs": "star", "keep_landmarks": true }.
+/// The map's settings of `map` as settingsJson, with "sizing_mode".
 Json::Value settingsJson(vtkSurfaceMapFilter* map);
 
 } // namespace surfacemap

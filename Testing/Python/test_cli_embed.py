@@ -80,3 +80,39 @@ def test_obj_output_keeps_corner_texture_coordinates_and_normals(tmp_path):
         assert all(a.GetTuple(c) == b.GetTuple(c) for c in range(a.GetNumberOfTuples())), name
     text = out.read_text()
     assert "\nvt " in text and "\nvn " in text and "SpherePosition" not in text
+
+
+def test_settings_are_flags_from_the_list(tmp_path):
+    import surfacemaps
+    from vtkmodules.util.numpy_support import vtk_to_numpy
+    from cli import read_vtp
+    S = surfacemaps.vtkSurfaceMapsSettings
+    table = S.SPHERE_EMBEDDING_SETTINGS
+    n = S.GetNumberOfSettings(table)
+    help_text = run("embed", "--help").stdout
+    for i in range(n):
+        assert S.GetHelp(table, i) in help_text, S.GetFlag(table, i)
+
+    def embed(name, *flags):
+        out = tmp_path / name
+        r = run("embed", data("blob.off"), "-o", out, *flags)
+        assert r.returncode == 0, r.stderr
+        iterations = int(re.search(r"(\d+) Newton iterations", r.stdout).group(1))
+        return vtk_to_numpy(read_vtp(out).GetPointData().GetArray("SpherePosition")), iterations
+
+    # Every flag at its default, as the codec writes it, is the embedding without flags.
+    defaults = [text for i in range(n)
+                for text in ("--" + S.GetFlag(table, i), S.Format(table, i, S.GetDefault(table, i)))]
+    plain, iterations = embed("plain.vtp")
+    flagged, _ = embed("defaults.vtp", *defaults)
+    assert (plain == flagged).all()
+    # A flag reaches the filter: no final iterations, fewer in all.
+    _, fewer = embed("fewer.vtp", "--final-iterations", "0", "--squeezed-final-iterations", "0")
+    assert fewer < iterations
+    for flag, value, message in (("--final-tolerance", "x", "--final-tolerance needs a number from 0 to 1, not 'x'"),
+                                 ("--barrier-weight", "0", "--barrier-weight needs a number from 1e-6 to 1000"),
+                                 ("--level-iterations", "2.5", "needs a whole number")):
+        r = run("embed", data("blob.off"), "-o", tmp_path / "bad.vtp", flag, value)
+        assert r.returncode == 2 and message in r.stderr, (flag, r.stderr)
+    r = run("embed", data("blob.off"), "-o", tmp_path / "bad.vtp", "--final-tolerance")
+    assert r.returncode == 2 and "--final-tolerance needs a value" in r.stderr

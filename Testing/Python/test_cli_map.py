@@ -292,6 +292,50 @@ def test_help_and_report_hold_every_setting(tmp_path):
             assert settings[key] == expected, key
 
 
+def test_every_setting_goes_from_its_flag_into_the_report(tmp_path):
+    # Each setting at a value other than its default, written as the list's codec writes it: the
+    # report holds every one exactly (the codec's JSON), and the sphere embedding's defaults.
+    import surfacemaps
+    S = surfacemaps.vtkSurfaceMapsSettings
+    table = S.MAP_SETTINGS
+    short = dict(zip(SHORT[::2], SHORT[1::2]))
+    chosen = {"max-vertices": 100000}  # a budget of one vertex more than none would fail the map
+    arguments, expected = [], {}
+    for i in range(S.GetNumberOfSettings(table)):
+        flag, default, kind = S.GetFlag(table, i), S.GetDefault(table, i), S.GetType(table, i)
+        low, high = S.GetMinimum(table, i), S.GetMaximum(table, i)
+        if kind == S.SWITCH:
+            arguments.append("--" + (S.GetOffFlag(table, i) if default else flag))
+            expected[S.GetJsonKey(table, i)] = not default
+            continue
+        if "--" + flag in short:
+            value = float(short["--" + flag])
+        elif flag in chosen:
+            value = float(chosen[flag])
+        elif kind == S.CHOICE:
+            value = high if default != high else low
+        elif kind == S.COUNT:
+            value = default + 1 if default + 1 <= high else default - 1
+        else:
+            value = next(v for v in (default * 1.25, default * 0.8, (low + high) / 2) if low <= v <= high and v != default)
+        text = S.Format(table, i, value)
+        assert S.Parse(table, i, text) == value, (flag, text)
+        arguments += ["--" + flag, text]
+        expected[S.GetJsonKey(table, i)] = json.loads(S.ToJson(table, i, value))
+    out = tmp_path / "out"
+    r = run("map", data("ellipsoid.obj"), *arguments, "--output-dir", out)
+    assert r.returncode == 0, (arguments, r.stderr)
+    report = json.loads((out / "report.json").read_text())
+    settings = report["settings"]
+    assert set(settings) == set(expected) | {"sizing_mode"}
+    for key, value in expected.items():
+        assert settings[key] == value and type(settings[key]) is type(value), key
+    embedding = S.SPHERE_EMBEDDING_SETTINGS
+    assert report["embedding_settings"] == {
+        S.GetJsonKey(embedding, i): json.loads(S.ToJson(embedding, i, S.GetDefault(embedding, i)))
+        for i in range(S.GetNumberOfSettings(embedding))}
+
+
 def test_point_landmarks_are_snapped_and_recorded_in_the_report(tmp_path):
     # blob.vts's landmarks as a Slicer .fcsv of points, 0.001 off their vertices.
     rows = [line.split() for line in open(data("blob.vts"))]

@@ -225,3 +225,22 @@ def test_two_mpi_ranks_give_the_serial_results(serial, stages_dir, tmp_path):
         assert np.array_equal(points(a), points(b)), path
     for name in ("scores.csv", "variance.csv"):
         assert (output / "statistics" / name).read_text() == (tmp_path / "statistics" / name).read_text()
+
+
+def test_every_map_setting_but_the_pairs_is_a_flag_of_the_list():
+    from surfacemaps import population
+    S = surfacemaps.vtkSurfaceMapsSettings
+    table = S.MAP_SETTINGS
+    text = population.parser().format_help()
+    for i in range(S.GetNumberOfSettings(table)):
+        flag = "--" + S.GetFlag(table, i)
+        assert (flag in text) == (flag != "--pairs"), flag
+    args = population.parse_args(["stages", "--output-dir", "out", "--target-error", "5e-3",
+                                  "--release-landmarks", "--fine-iterations", "3", "--preset", "population"])
+    assert population.map_settings(args) == dict(preset="population", TargetError=5e-3, KeepLandmarks=False,
+                                                 FineIterations=3)
+    assert population.settings_report(args) == dict(preset="population", target_error=5e-3,
+                                                     keep_landmarks=False, fine_iterations=3)
+    for bad in (["--target-error", "2"], ["--fine-iterations", "1.5"], ["--pairs", "all"]):
+        with pytest.raises(SystemExit):
+            population.parse_args(["stages", "--output-dir", "out", *bad])

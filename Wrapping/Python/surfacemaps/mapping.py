@@ -1,12 +1,15 @@
 """Running a map: map_surfaces (vtkSurfaceMapFilter) and what it returns, the settings table and
-presets it takes, a single sphere embedding, and the metrics of a map (vtkSurfaceMapEvaluation)."""
+presets it takes, a single sphere embedding, and the metrics of a map (vtkSurfaceMapEvaluation).
+The settings and their documentation come from the engine's list (vtkSurfaceMapsSettings)."""
 
 import math
 import os
+import textwrap
 
 from vtkmodules.vtkCommonDataModel import vtkPolyData
 
-from .SurfaceMapsFilters import vtkSphereEmbeddingFilter, vtkSurfaceMapEvaluation, vtkSurfaceMapFilter
+from .SurfaceMapsFilters import (vtkSphereEmbeddingFilter, vtkSurfaceMapEvaluation, vtkSurfaceMapFilter,
+                                 vtkSurfaceMapsSettings)
 from .errors import InputError, MapError, _collect_errors, _update
 from .mesh import _set_array_transfer_modes, _with_landmarks
 
@@ -20,10 +23,11 @@ _SUMMARY = ("SymmetricDirichlet", "AreaBelow1.5", "AreaBelow2", "MaxDistortion",
 def embed_on_sphere(mesh, **settings):
     """Certified bijective embedding of `mesh` (vtkPolyData) on the unit sphere.
 
-    Settings are vtkSphereEmbeddingFilter's, by name: e.g. ``BarrierWeight=0.1``,
-    ``FinalIterations=50``, ``OutputPointsOnSphere=True``. Returns the output
-    vtkPolyData (point array "SpherePosition"); raises InputError with the
-    filter's message when the input is invalid or no embedding is certified.
+    Settings are vtkSphereEmbeddingFilter's, by name: ``OutputPointsOnSphere=True``
+    and those listed below (``settings_table("sphere_embedding")``). Returns
+    the output vtkPolyData (point array "SpherePosition"); raises InputError
+    with the filter's message when the input is invalid or no embedding is
+    certified.
     """
     f = vtkSphereEmbeddingFilter()
     errors = _collect_errors(f)
@@ -53,28 +57,52 @@ def evaluate_map(source, target, source_original=None, target_original=None):
     return {name: fields.GetArray(name).GetValue(0) for name in _SUMMARY if fields.GetArray(name) is not None}
 
 
-_PAIR_MODES = {"star": vtkSurfaceMapFilter.PAIRS_STAR, "sequence": vtkSurfaceMapFilter.PAIRS_SEQUENCE,
-               "cycle": vtkSurfaceMapFilter.PAIRS_CYCLE, "all": vtkSurfaceMapFilter.PAIRS_ALL}
+_S = vtkSurfaceMapsSettings
+_TABLES = {"map": _S.MAP_SETTINGS, "sphere_embedding": _S.SPHERE_EMBEDDING_SETTINGS}
 
 
-def settings_table():
-    """The surface map's settings, one dict per setting, from the engine's one
-    table (vtkSurfaceMapFilter.GetSettingName(i) and friends): name (the
-    filter's Set<name>/Get<name>), flag (``surfacemap map --<flag>``), type
-    ("real", "count", "switch", "choice"), minimum, maximum, default,
-    choices (for "choice"), doc."""
-    f = vtkSurfaceMapFilter
-    types = {f.SETTING_REAL: "real", f.SETTING_COUNT: "count", f.SETTING_SWITCH: "switch",
-             f.SETTING_CHOICE: "choice"}
+def _flag_setting(flag):
+    """The index of the map setting whose command-line flag is `flag`."""
+    return _S.FindFlag(_S.MAP_SETTINGS, "--" + flag)
+
+
+_PAIRS = _flag_setting("pairs")
+_PAIR_MODES = {name: k for k, name in enumerate(_S.GetChoices(_S.MAP_SETTINGS, _PAIRS).split("|"))}
+
+
+def settings_table(of="map"):
+    """The settings of the surface map (``of="map"``, vtkSurfaceMapFilter) or
+    of the sphere embedding (``of="sphere_embedding"``,
+    vtkSphereEmbeddingFilter), one dict per setting, from the engine's one list
+    (vtkSurfaceMapsSettings): name (the filter's Set<name>/Get<name>), flag
+    (``surfacemap map --<flag>``, ``surfacemap embed --<flag>``), type ("real",
+    "count", "switch", "choice"), minimum, maximum, default, choices (for
+    "choice"), doc, topic, and description (the doc with the default and the
+    range, as every help text shows it)."""
+    t = _TABLES[of]
+    types = {_S.REAL: "real", _S.COUNT: "count", _S.SWITCH: "switch", _S.CHOICE: "choice"}
     rows = []
-    for i in range(f.GetNumberOfSettings()):
-        choices = f.GetSettingChoices(i)
-        rows.append({"name": f.GetSettingName(i), "flag": f.GetSettingFlag(i),
-                     "type": types[f.GetSettingType(i)], "minimum": f.GetSettingMinimum(i),
-                     "maximum": f.GetSettingMaximum(i), "default": f.GetSettingDefault(i),
-                     "choices": choices.split("|") if choices else None,
-                     "doc": f.GetSettingDocumentation(i)})
+    for i in range(_S.GetNumberOfSettings(t)):
+        choices = _S.GetChoices(t, i)
+        rows.append({"name": _S.GetName(t, i), "flag": _S.GetFlag(t, i), "type": types[_S.GetType(t, i)],
+                     "minimum": _S.GetMinimum(t, i), "maximum": _S.GetMaximum(t, i),
+                     "default": _S.GetDefault(t, i), "choices": choices.split("|") if choices else None,
+                     "doc": _S.GetDocumentation(t, i), "topic": _S.GetTopic(t, i),
+                     "description": _S.GetDescription(t, i)})
     return rows
+
+
+def _settings_doc(of):
+    """The settings of `of` for a docstring: each setting's name and description, by topic."""
+    text, topic = "", None
+    for row in settings_table(of):
+        if row["topic"] != topic:
+            topic = row["topic"]
+            text += f"\n    {topic}:\n"
+        text += textwrap.fill(f"``{row['name']}``: {row['description']}", width=100,
+                              initial_indent="    - ", subsequent_indent="      ",
+                              break_on_hyphens=False, break_long_words=False) + "\n"
+    return text
 
 
 def presets():
@@ -108,10 +136,10 @@ def map_surfaces(meshes, landmarks=None, target_error=None, pairs=None, keep_lan
       sets a group of settings for a kind of study first; every other
       argument overrides it. "population" is for many specimens in one map
       (statistics over the common triangulation).
-    - `settings`: any other setting of vtkSurfaceMapFilter's settings table by
-      name, e.g. ``CoarseIterations=10``, ``FineIterations=20``,
-      ``MapWeight=2.0`` (``settings_table()`` lists them).
-    A setting left at None keeps the filter's default (the settings table's).
+    - `settings`: any other setting of vtkSurfaceMapFilter by name: the
+      settings listed below (``settings_table()``), ``SizingMode`` and
+      ``NumberOfThreads``.
+    A setting left at None keeps the filter's default (the list's).
 
     Returns the list of outputs, one per mesh: the common triangulation lifted
     onto mesh i, same triangles for all, with the point arrays
@@ -148,14 +176,15 @@ def map_surfaces(meshes, landmarks=None, target_error=None, pairs=None, keep_lan
             raise ValueError(f"preset is one of {names}, not {preset!r}")
         f.ApplyPreset(names.index(preset))
     if pairs is not None:
-        f.SetPairMode(_PAIR_MODES[pairs])
+        f.SetSetting(_PAIRS, _PAIR_MODES[pairs])
     if keep_landmarks is not None:
-        f.SetKeepLandmarks(bool(keep_landmarks))
+        f.SetSetting(_flag_setting("keep-landmarks"), bool(keep_landmarks))
     _set_array_transfer_modes(f, categorical, continuous)
     table = {row["name"]: row for row in settings_table()}
     known = set(table) | {"SizingMode", "NumberOfThreads"}
     if target_error is not None:
-        settings = dict(settings, TargetError=target_error)
+        target = _S.GetName(_S.MAP_SETTINGS, _flag_setting("target-error"))
+        settings = dict(settings, **{target: target_error})
     for name, value in settings.items():
         if name not in known:
             raise TypeError(f"vtkSurfaceMapFilter has no setting {name!r}")
@@ -199,3 +228,8 @@ class MapResult(list):
     def __init__(self, outputs, algorithm):
         super().__init__(outputs)
         self.filter = algorithm
+
+
+map_surfaces.__doc__ += "\n    Settings of the map (the engine's list):\n" + _settings_doc("map")
+embed_on_sphere.__doc__ += ("\n    Settings of the sphere embedding (the engine's list):\n"
+                            + _settings_doc("sphere_embedding"))

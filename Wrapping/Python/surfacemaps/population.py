@@ -78,13 +78,11 @@ def parser():
     p.add_argument("--stage-times", type=float, nargs="+", metavar="T",
                    help="developmental time of each stage (default: the mean of the specimens' "
                         "DevelopmentalTime field, else evenly spaced in [0, 1])")
-    g = p.add_argument_group("maps (each stage's and the final one)")
+    g = p.add_argument_group("maps (each stage's and the final one): the settings of `surfacemap map`")
     g.add_argument("--preset", choices=sorted(surfacemaps.presets()),
-                   help="settings preset of every map (default: the filter's defaults)")
-    g.add_argument("--target-error", type=float, help="approximation error, unit-area units")
-    g.add_argument("--landmark-iterations", type=int, help="landmark phase cap")
-    g.add_argument("--coarse-iterations", type=int, help="coarse phase iterations")
-    g.add_argument("--fine-iterations", type=int, help="fine phase iterations")
+                   help="settings preset of every map (default: the filter's defaults); the setting flags "
+                        "override it")
+    add_setting_flags(g)
     g = p.add_argument_group("means and statistics")
     g.add_argument("--align", choices=("rigid", "similarity", "none"), default="rigid",
                    help="alignment before means and statistics (generalized Procrustes; default rigid)")
@@ -108,13 +106,60 @@ def parse_args(argv=None):
     return args
 
 
+# The map settings as flags: every setting of the engine's list (vtkSurfaceMapsSettings) but the
+# pairs, which each map here chooses itself (star within a stage, a sequence across the stages).
+# Flags, help and values come from the list's codec, as for `surfacemap map`.
+_SETTINGS = surfacemaps.vtkSurfaceMapsSettings
+_TABLE = _SETTINGS.MAP_SETTINGS
+_OWN_FLAGS = {"pairs"}
+
+
+def _setting_indices():
+    return [k for k in range(_SETTINGS.GetNumberOfSettings(_TABLE)) if _SETTINGS.GetFlag(_TABLE, k) not in _OWN_FLAGS]
+
+
+def _setting_value(k):
+    """argparse's `type` for setting k: the codec's value of the flag's text (a bool for a switch,
+    an int for a count or a choice)."""
+    def parse(text):
+        flag = "--" + _SETTINGS.GetFlag(_TABLE, k)
+        value = _SETTINGS.ParseFlag(_TABLE, k, flag, text)
+        if math.isnan(value):
+            raise argparse.ArgumentTypeError(_SETTINGS.GetValueError(_TABLE, k, flag, text))
+        return value if _SETTINGS.GetType(_TABLE, k) == _SETTINGS.REAL else int(value)
+    return parse
+
+
+def add_setting_flags(group):
+    for k in _setting_indices():
+        name, flag = _SETTINGS.GetName(_TABLE, k), "--" + _SETTINGS.GetFlag(_TABLE, k)
+        doc = _SETTINGS.GetDescription(_TABLE, k).replace("%", "%%")
+        if _SETTINGS.GetType(_TABLE, k) == _SETTINGS.SWITCH:
+            off = "--" + _SETTINGS.GetOffFlag(_TABLE, k)
+            group.add_argument(flag, dest=name, action="store_const", const=True, help=f"{doc} ({off}: off)")
+            group.add_argument(off, dest=name, action="store_const", const=False, help=argparse.SUPPRESS)
+        else:
+            choices = _SETTINGS.GetChoices(_TABLE, k)
+            group.add_argument(flag, dest=name, type=_setting_value(k),
+                               metavar=choices or ("N" if _SETTINGS.GetType(_TABLE, k) == _SETTINGS.COUNT else "X"),
+                               help=doc)
+
+
 def map_settings(args):
-    settings = dict(preset=args.preset, target_error=args.target_error)
-    for option, name in (("landmark_iterations", "LandmarkIterations"), ("coarse_iterations", "CoarseIterations"),
-                         ("fine_iterations", "FineIterations")):
-        if getattr(args, option) is not None:
-            settings[name] = getattr(args, option)
-    return settings
+    """The preset and the map settings given as flags, by the filter's names."""
+    settings = {_SETTINGS.GetName(_TABLE, k): getattr(args, _SETTINGS.GetName(_TABLE, k)) for k in _setting_indices()}
+    return dict(preset=args.preset, **{name: value for name, value in settings.items() if value is not None})
+
+
+def settings_report(args):
+    """The preset and the settings given, as report.json writes them (the keys and values of
+    `surfacemap map`'s report)."""
+    report = {} if args.preset is None else {"preset": args.preset}
+    for k in _setting_indices():
+        value = getattr(args, _SETTINGS.GetName(_TABLE, k))
+        if value is not None:
+            report[_SETTINGS.GetJsonKey(_TABLE, k)] = json.loads(_SETTINGS.ToJson(_TABLE, k, float(value)))
+    return report
 
 
 # ------------------------------------------------------------------ MPI
@@ -560,7 +605,7 @@ def run(args, comm):
 
     report = dict(
         stages_dir=os.path.abspath(args.stages_dir), ranks=comm.size, final_map_threads=final_threads or None,
-        settings={key: value for key, value in map_settings(args).items() if value is not None},
+        settings=settings_report(args),
         align=args.align,
         stages=[dict(stage=r["stage"], name=r["name"], time=float(t), rank=r["rank"], specimens=len(r["files"]),
                      files=r["files"], specimen_vertices=r["specimen_vertices"], mean_vertices=len(r["points"]),

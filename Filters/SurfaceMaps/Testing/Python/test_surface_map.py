@@ -212,3 +212,17 @@ def test_settings_table_is_the_filters():
         assert row["minimum"] <= row["default"] <= row["maximum"], row["name"]
     with pytest.raises(TypeError):
         surfacemaps.map_surfaces(["never_read.obj"], KinkRetries=1)  # removed setting
+
+
+def test_docstrings_and_tables_come_from_the_list():
+    S = surfacemaps.vtkSurfaceMapsSettings
+    for of, table, function in (("map", S.MAP_SETTINGS, surfacemaps.map_surfaces),
+                                ("sphere_embedding", S.SPHERE_EMBEDDING_SETTINGS, surfacemaps.embed_on_sphere)):
+        rows = surfacemaps.settings_table(of)
+        assert [row["name"] for row in rows] == [S.GetName(table, i) for i in range(S.GetNumberOfSettings(table))]
+        doc = " ".join(function.__doc__.split())
+        for row in rows:
+            assert f"``{row['name']}``: {row['description']}" in doc, row["name"]
+    f = surfacemaps.vtkSphereEmbeddingFilter()
+    for row in surfacemaps.settings_table("sphere_embedding"):
+        assert getattr(f, "Get" + row["name"])() == row["default"], row["name"]
