@@ -125,9 +125,6 @@ Pipeline buildPipeline(Scene& scene)
   {
     vtkSMPropertyHelper(pipeline.Map, "Input").Add(reader, 0);
   }
-  vtkSMPropertyHelper(pipeline.Map, "CoarseIterations").Set(20);
-  vtkSMPropertyHelper(pipeline.Map, "FineIterations").Set(20);
-  vtkSMPropertyHelper(pipeline.Map, "RefinementRounds").Set(1);
   scene.Register(pipeline.Map, "SurfaceMap");
 
   pipeline.Average = scene.New("filters", "SurfaceAverage");

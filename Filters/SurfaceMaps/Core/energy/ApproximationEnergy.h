@@ -85,7 +85,7 @@ T approximationEnergy(const T& distance2, double weight, double bound)
 
 /// The approximation samples of one input: sphere point, position and
 /// weight (vertex area, normalised so the weights sum to 1).
-struct ApproximationSamples
+struct ApproximationSampleSet
 {
   /// The input vertex each sample is.
   std::vector<int> vertices;
@@ -99,7 +99,7 @@ struct ApproximationSamples
 /// contains the sample's sphere point.
 struct ApproximationEnergy
 {
-  const ApproximationSamples* samples = nullptr;
+  const ApproximationSampleSet* samples = nullptr;
   const std::vector<int>* sampleTriangle = nullptr;
   const std::vector<std::array<int, 3>>* triangles = nullptr;
   const std::vector<const Lift*>* lifts = nullptr;

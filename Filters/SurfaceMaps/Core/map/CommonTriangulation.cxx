@@ -173,7 +173,7 @@ void CommonTriangulation::assignSamplesFromScratch()
       this->Mesh.property(this->Samples[i], f).clear();
     }
     const SphereLocator locator(positions, triangles);
-    const ApproximationSamples& samples = this->Surfaces[i].samples;
+    const ApproximationSampleSet& samples = this->Surfaces[i].samples;
     std::vector<int> triangleOf(samples.spherePoints.size());
     for (std::size_t s = 0; s < triangleOf.size(); ++s)
     {
@@ -218,7 +218,7 @@ double CommonTriangulation::coverageDensity(int i, int a, int b, int c) const
 
 std::vector<double> CommonTriangulation::baseDistances(int i) const
 {
-  const ApproximationSamples& samples = this->Surfaces[i].samples;
+  const ApproximationSampleSet& samples = this->Surfaces[i].samples;
   std::vector<double> distances(samples.positions.size(), Infinity);
   for (auto f : this->Mesh.faces())
   {

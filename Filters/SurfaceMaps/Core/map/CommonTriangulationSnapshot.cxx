@@ -195,7 +195,7 @@ bool CommonTriangulation::update(Snapshot& s, const SpherePoints& points) const
   {
     for (int i = 0; i < n && walked; ++i)
     {
-      const ApproximationSamples& samples = this->Surfaces[i].samples;
+      const ApproximationSampleSet& samples = this->Surfaces[i].samples;
       std::vector<int>& triangleOf = s.sampleTriangle[i];
       const Eigen::Vector3d* corners = positions.data() + static_cast<std::size_t>(i) * nv;
       const long long ns = static_cast<long long>(triangleOf.size());

@@ -133,7 +133,7 @@ double MapEnergy::sampleEnergy(int i,
   const MapVertex& b,
   const MapVertex& c) const
 {
-  const ApproximationSamples& samples = this->T.surface(i).samples;
+  const ApproximationSampleSet& samples = this->T.surface(i).samples;
   const double d2 = squaredBaseDistance<double>(samples.spherePoints[s],
     samples.positions[s],
     { a.g[i], b.g[i], c.g[i] },

@@ -3,29 +3,29 @@
 namespace surfacemaps
 {
 
-std::vector<std::array<int, 2>> mapPairs(PairMode mode, int n)
+std::vector<std::array<int, 2>> mapPairs(PairScheme mode, int n)
 {
   std::vector<std::array<int, 2>> pairs;
   switch (mode)
   {
-    case PairMode::Star:
+    case PairScheme::Star:
       for (int i = 1; i < n; ++i)
       {
         pairs.push_back({ 0, i });
       }
       break;
-    case PairMode::Sequence:
-    case PairMode::Cycle:
+    case PairScheme::Sequence:
+    case PairScheme::Cycle:
       for (int i = 0; i + 1 < n; ++i)
       {
         pairs.push_back({ i, i + 1 });
       }
-      if (mode == PairMode::Cycle && n > 2)
+      if (mode == PairScheme::Cycle && n > 2)
       {
         pairs.push_back({ n - 1, 0 });
       }
       break;
-    case PairMode::All:
+    case PairScheme::All:
       for (int i = 0; i < n; ++i)
       {
         for (int j = i + 1; j < n; ++j)

@@ -8,7 +8,7 @@ namespace surfacemaps
 {
 
 /// Which pairs of inputs the map-distortion term measures (DESIGN.md 1.8).
-enum class PairMode
+enum class PairScheme
 {
   Star,     ///< (0, i) for every i > 0
   Sequence, ///< (i, i + 1)
@@ -17,6 +17,6 @@ enum class PairMode
 };
 
 /// The pairs (i, j) of a mode for n inputs.
-std::vector<std::array<int, 2>> mapPairs(PairMode mode, int n);
+std::vector<std::array<int, 2>> mapPairs(PairScheme mode, int n);
 
 } // namespace surfacemaps

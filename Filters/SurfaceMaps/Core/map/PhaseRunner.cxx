@@ -4,6 +4,7 @@
 #include "base/Aborted.h"
 #include "geometry/Predicates.h"
 #include "map/MapNewtonProblem.h"
+#include "map/MapSettings.h"
 #include "map/Remeshing.h"
 #include "optimisation/NewtonSolver.h"
 
@@ -123,11 +124,13 @@ void PhaseRunner::checkVertexBudget(const MapPhase& phase, int iteration) const
 {
   if (this->T.mesh().n_vertices() > this->VertexBudget)
   {
+    // The setting's property name and flag come from the list.
+    const MapSetting& budget = *findSettingFlag(mapSettings(), "--max-vertices");
     throw NoResultError("the common triangulation reached its vertex budget in the " +
       std::string(phaseName(phase.kind)) + " phase (iteration " + std::to_string(iteration + 1) +
       "): " + std::to_string(this->T.mesh().n_vertices()) + " vertices, budget " +
-      std::to_string(this->VertexBudget) +
-      " (MaxVertices, --max-vertices); the target error or error bound asks for a finer T");
+      std::to_string(this->VertexBudget) + " (" + budget.name + ", --" + budget.flag +
+      "); the target error or error bound asks for a finer T");
   }
 }
 

@@ -94,7 +94,7 @@ PreparedInput prepareSurface(const MapInput& input, int index)
 /// inputs; weights = barycentric vertex areas normalised to sum 1.
 void buildSamples(PreparedInput& s, int samples)
 {
-  s.samples = ApproximationSamples();
+  s.samples = ApproximationSampleSet();
   const std::size_t nv = s.points.size();
   std::vector<double> vertexArea(nv, 0.0);
   for (const auto& t : s.triangles)

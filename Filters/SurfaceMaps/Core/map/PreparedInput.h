@@ -35,7 +35,7 @@ struct PreparedInput
   bool userSizing = false;
   /// Landmark id per vertex (-1 none), may be empty.
   std::vector<int> landmarks;
-  ApproximationSamples samples;
+  ApproximationSampleSet samples;
   /// original = points / scale + centre.
   Eigen::Vector3d centre = Eigen::Vector3d::Zero();
   double scale = 1.0;

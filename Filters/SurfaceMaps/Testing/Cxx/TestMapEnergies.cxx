@@ -45,7 +45,7 @@ struct EnergyCase
     {
       s.sizing.assign(s.points.size(), 0.3);
     }
-    this->T = std::make_unique<CommonTriangulation>(this->surfaces, mapPairs(PairMode::Star, 2));
+    this->T = std::make_unique<CommonTriangulation>(this->surfaces, mapPairs(PairScheme::Star, 2));
     this->energy = std::make_unique<MapEnergy>(*this->T, weights);
     this->T->setTrackSamples(true);
     this->T->updateTargetLengths();
@@ -198,7 +198,7 @@ TEST(MapEnergies, ApproximationGaussNewtonHessian)
   EXPECT_GT(largest, 1e-6);
   // Every sample onto its base point: then both Hessians agree.
   const ApproximationEnergy& energy = term->energy();
-  ApproximationSamples& samples = c.T->surface(energy.offset == 0 ? 0 : 1).samples;
+  ApproximationSampleSet& samples = c.T->surface(energy.offset == 0 ? 0 : 1).samples;
   for (int e = 0; e < ne; ++e)
   {
     const std::array<int, 3> idx = energy.points(e);

@@ -28,7 +28,7 @@ struct ThreeInputMap
     options.coarseIterations = 3;
     options.fineIterations = 4;
     options.targetError = 5e-3;
-    options.pairs = PairMode::All;
+    options.pairs = PairScheme::All;
     this->map = computeSurfaceMap(this->inputs, options);
   }
 };

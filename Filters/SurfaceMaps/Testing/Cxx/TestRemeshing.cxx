@@ -35,7 +35,7 @@ protected:
     {
       s.sizing.assign(s.points.size(), 0.25);
     }
-    this->T = std::make_unique<CommonTriangulation>(this->surfaces, mapPairs(PairMode::Star, 2));
+    this->T = std::make_unique<CommonTriangulation>(this->surfaces, mapPairs(PairScheme::Star, 2));
     this->handlers = triangulationHandlers(*this->T);
     MapEnergyWeights& w = this->weights;
     w.barrier = 1e-3;

@@ -5,7 +5,9 @@
 // differs from what the list gives, and with
 // SURFACEMAPS_UPDATE_SETTING_HEADERS=1 rewrites the blocks instead
 // (`SURFACEMAPS_UPDATE_SETTING_HEADERS=1 ctest -R SettingHeaders`). A second
-// test compiles every entry against the filters: names, defaults and ranges.
+// test compiles every entry against the filters: names, defaults and ranges;
+// a third fails while a non-test source file other than the list and the
+// header names a setting.
 #include "vtkSphereEmbeddingFilter.h"
 #include "vtkSurfaceMapFilter.h"
 #include "vtkSurfaceMapsSettings.h"
@@ -20,9 +22,12 @@
 #include <cctype>
 #include <cmath>
 #include <cstdlib>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace
 {
@@ -268,4 +273,88 @@ TEST(SettingHeaders, ASettingOutsideItsRangeIsAnInputError)
   EXPECT_NE(mapEvents.Errors[0].find("MapWeight needs a number"), std::string::npos)
     << mapEvents.Errors[0];
   EXPECT_EQ(map->GetErrorCode(), vtkSurfaceMapFilter::InvalidInputError);
+}
+
+namespace
+{
+/// Whether `text` holds `word` with no identifier character either side.
+bool holdsWord(const std::string& text, const std::string& word)
+{
+  auto identifier = [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; };
+  for (std::size_t at = text.find(word); at != std::string::npos; at = text.find(word, at + 1))
+  {
+    const std::size_t end = at + word.size();
+    if ((at == 0 || !identifier(text[at - 1])) && (end == text.size() || !identifier(text[end])))
+    {
+      return true;
+    }
+  }
+  return false;
+}
+
+/// The project's non-test source files (C++, Python, CMake, XML): every
+/// file under the source tree but build trees, hidden folders and Testing/.
+std::vector<std::filesystem::path> nonTestSources()
+{
+  namespace fs = std::filesystem;
+  const fs::path root = SURFACEMAPS_SOURCE_DIR;
+  std::vector<fs::path> found;
+  for (auto it = fs::recursive_directory_iterator(root); it != fs::recursive_directory_iterator(); ++it)
+  {
+    const std::string name = it->path().filename().string();
+    if (it->is_directory() && (name.rfind("build", 0) == 0 || name[0] == '.' || name == "Testing"))
+    {
+      it.disable_recursion_pending();
+      continue;
+    }
+    const std::string ext = it->path().extension().string();
+    if (it->is_regular_file() &&
+      (ext == ".h" || ext == ".cxx" || ext == ".def" || ext == ".py" || ext == ".xml" ||
+        ext == ".cmake" || ext == ".in" || name == "CMakeLists.txt"))
+    {
+      found.push_back(it->path());
+    }
+  }
+  return found;
+}
+} // namespace
+
+// A setting is named in the list and, where VTK's wrappers need it spelled
+// out, in its filter's public header; everything else reaches it through
+// the list (its name, flag and doc from the table). A third file naming it
+// is a second definition about to drift.
+TEST(SettingHeaders, EveryNameLivesInTheListAndOneHeaderAtMost)
+{
+  std::vector<std::pair<std::string, std::string>> texts;
+  for (const auto& path : nonTestSources())
+  {
+    std::ifstream in(path);
+    std::ostringstream text;
+    text << in.rdbuf();
+    texts.emplace_back(path.string(), text.str());
+  }
+  ASSERT_GT(texts.size(), 50u) << "the source tree was not found under " << SURFACEMAPS_SOURCE_DIR;
+  std::vector<std::string> names;
+  for (const auto& s : surfacemaps::mapSettings())
+  {
+    names.push_back(s.name);
+  }
+  for (const auto& s : surfacemaps::embeddingSettings())
+  {
+    names.push_back(s.name);
+  }
+  for (const std::string& name : names)
+  {
+    std::string files;
+    int count = 0;
+    for (const auto& [path, text] : texts)
+    {
+      if (holdsWord(text, name))
+      {
+        ++count;
+        files += "\n  " + path;
+      }
+    }
+    EXPECT_LE(count, 2) << name << " is named in " << count << " non-test source files:" << files;
+  }
 }

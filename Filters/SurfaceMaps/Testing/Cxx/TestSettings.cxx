@@ -174,7 +174,7 @@ TEST(Settings, FlagsSetTheirFieldAndSayWhatTheyTake)
   i = 2;
   EXPECT_TRUE(parseSettingFlag(args, i, options) && i == 2 && !options.keepLandmarks);
   i = 3;
-  EXPECT_TRUE(parseSettingFlag(args, i, options) && options.pairs == PairMode::All);
+  EXPECT_TRUE(parseSettingFlag(args, i, options) && options.pairs == PairScheme::All);
   i = 5;
   EXPECT_FALSE(parseSettingFlag(args, i, options)); // the embedding's flag
   EXPECT_TRUE(parseSettingFlag(args, i, embedding) && embedding.finalTolerance == 1e-7);

@@ -43,11 +43,11 @@ void expectCertified(const SurfaceMapResult& r)
 TEST(SurfaceMap, PairModes)
 {
   using P = std::vector<std::array<int, 2>>;
-  EXPECT_EQ(mapPairs(PairMode::Star, 4), (P{ { 0, 1 }, { 0, 2 }, { 0, 3 } }));
-  EXPECT_EQ(mapPairs(PairMode::Sequence, 3), (P{ { 0, 1 }, { 1, 2 } }));
-  EXPECT_EQ(mapPairs(PairMode::Cycle, 3), (P{ { 0, 1 }, { 1, 2 }, { 2, 0 } }));
-  EXPECT_EQ(mapPairs(PairMode::All, 3), (P{ { 0, 1 }, { 0, 2 }, { 1, 2 } }));
-  EXPECT_TRUE(mapPairs(PairMode::Star, 1).empty());
+  EXPECT_EQ(mapPairs(PairScheme::Star, 4), (P{ { 0, 1 }, { 0, 2 }, { 0, 3 } }));
+  EXPECT_EQ(mapPairs(PairScheme::Sequence, 3), (P{ { 0, 1 }, { 1, 2 } }));
+  EXPECT_EQ(mapPairs(PairScheme::Cycle, 3), (P{ { 0, 1 }, { 1, 2 }, { 2, 0 } }));
+  EXPECT_EQ(mapPairs(PairScheme::All, 3), (P{ { 0, 1 }, { 0, 2 }, { 1, 2 } }));
+  EXPECT_TRUE(mapPairs(PairScheme::Star, 1).empty());
 }
 
 TEST(SurfaceMap, LandmarkPhaseCoarsensAndReachesTheLandmarks)
@@ -150,7 +150,7 @@ TEST(SurfaceMap, ThreeInputsShareOneCertifiedTriangulation)
     icosphereInput(3, 0.3, { 1.4, 1.0, 0.8 }),
     icosphereInput(2, -0.2, { 0.8, 1.2, 1.0 }, 0.2) };
   SurfaceMapOptions options = shortSchedule(3, 4);
-  options.pairs = PairMode::All;
+  options.pairs = PairScheme::All;
   const SurfaceMapResult r = computeSurfaceMap(inputs, options);
   ASSERT_EQ(r.certificates.size(), 3u);
   expectCertified(r);
