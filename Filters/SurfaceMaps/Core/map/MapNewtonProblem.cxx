@@ -78,13 +78,14 @@ std::unique_ptr<NewtonProblem> MapNewtonProblem::trialCopy()
   return std::unique_ptr<NewtonProblem>(new MapNewtonProblem(*this));
 }
 
-void MapNewtonProblem::adopt(NewtonProblem& copy, const SpherePoints&)
+bool MapNewtonProblem::adopt(NewtonProblem& copy, const SpherePoints&)
 {
   // Only copies of this problem are ever adopted (TrialSearch's slots).
   auto& other = static_cast<MapNewtonProblem&>(copy);
   this->State.liftTriangle.swap(other.State.liftTriangle);
   this->State.lifts.swap(other.State.lifts);
   this->State.sampleTriangle.swap(other.State.sampleTriangle);
+  return true;
 }
 
 void MapNewtonProblem::writeBack(const SpherePoints& points)

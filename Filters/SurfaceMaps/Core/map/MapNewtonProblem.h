@@ -42,7 +42,7 @@ public:
   std::vector<int> blockingPoints(const SpherePoints& trial) override;
   std::vector<int> variableBlocks(const SpherePoints& points) const override;
   std::unique_ptr<NewtonProblem> trialCopy() override;
-  void adopt(NewtonProblem& copy, const SpherePoints& points) override;
+  bool adopt(NewtonProblem& copy, const SpherePoints& points) override;
 
   /// Writes the points, lifts and sample assignment back into T.
   void writeBack(const SpherePoints& points);

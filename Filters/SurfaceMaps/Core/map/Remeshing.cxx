@@ -291,6 +291,29 @@ std::vector<FaceHandle> facesAround(const HalfedgeMesh& mesh, VertexHandle v)
   return faces;
 }
 
+/// An edit of T when worthApplying: `change(mesh, edit)` changes the mesh
+/// (and T's vertex data) and returns the faces around the change, which
+/// `handlers` then hear of (the sample bookkeeping, the face caches).
+template<typename Build, typename Handle, typename Change>
+bool applyEdit(CommonTriangulation& T,
+  const MapEnergy& energy,
+  Handle handle,
+  Build build,
+  double minGain,
+  double* applied,
+  const std::vector<EditHandler>& handlers,
+  Change change)
+{
+  LocalEdit edit;
+  if (!worthApplying(energy, handle, build, minGain, applied, edit))
+  {
+    return false;
+  }
+  const std::vector<FaceHandle> faces = change(T.mesh(), edit);
+  notify(handlers, editedFaces(T, edit, faces));
+  return true;
+}
+
 /// Evaluates all candidates in parallel, then applies those that gain, best
 /// first, each re-evaluated on the mesh as it is by then.
 template<typename Handle, typename Gain, typename Apply>
@@ -356,19 +379,16 @@ bool applySplit(CommonTriangulation& T,
   double minGain,
   double* applied)
 {
-  LocalEdit edit;
-  if (!worthApplying(energy, e, buildSplit, minGain, applied, edit))
-  {
-    return false;
-  }
-  HalfedgeMesh& mesh = T.mesh();
-  const Eigen::Vector3d& p = edit.moved.lifted[0];
-  const VertexHandle m = mesh.add_vertex(HalfedgeMesh::Point(p[0], p[1], p[2]));
-  mesh.split(e, m);
-  T.setVertex(m, edit.moved);
-  edit.handles.push_back(m);
-  notify(handlers.split, editedFaces(T, edit, facesAround(mesh, m)));
-  return true;
+  return applyEdit(T, energy, e, buildSplit, minGain, applied, handlers.split,
+    [&T, e](HalfedgeMesh& mesh, LocalEdit& edit)
+    {
+      const Eigen::Vector3d& p = edit.moved.lifted[0];
+      const VertexHandle m = mesh.add_vertex(HalfedgeMesh::Point(p[0], p[1], p[2]));
+      mesh.split(e, m);
+      T.setVertex(m, edit.moved);
+      edit.handles.push_back(m);
+      return facesAround(mesh, m);
+    });
 }
 
 bool applyCollapse(CommonTriangulation& T,
@@ -378,17 +398,14 @@ bool applyCollapse(CommonTriangulation& T,
   double minGain,
   double* applied)
 {
-  LocalEdit edit;
-  if (!worthApplying(energy, h, buildCollapse, minGain, applied, edit))
-  {
-    return false;
-  }
-  HalfedgeMesh& mesh = T.mesh();
-  const VertexHandle kept = mesh.to_vertex_handle(h);
-  mesh.collapse(h);
-  T.setVertex(kept, edit.moved);
-  notify(handlers.collapse, editedFaces(T, edit, facesAround(mesh, kept)));
-  return true;
+  return applyEdit(T, energy, h, buildCollapse, minGain, applied, handlers.collapse,
+    [&T, h](HalfedgeMesh& mesh, LocalEdit& edit)
+    {
+      const VertexHandle kept = mesh.to_vertex_handle(h);
+      mesh.collapse(h);
+      T.setVertex(kept, edit.moved);
+      return facesAround(mesh, kept);
+    });
 }
 
 bool applyFlip(CommonTriangulation& T,
@@ -398,17 +415,13 @@ bool applyFlip(CommonTriangulation& T,
   double minGain,
   double* applied)
 {
-  LocalEdit edit;
-  if (!worthApplying(energy, e, buildFlip, minGain, applied, edit))
-  {
-    return false;
-  }
-  HalfedgeMesh& mesh = T.mesh();
-  mesh.flip(e);
-  const std::vector<FaceHandle> faces{ mesh.face_handle(mesh.halfedge_handle(e, 0)),
-    mesh.face_handle(mesh.halfedge_handle(e, 1)) };
-  notify(handlers.flip, editedFaces(T, edit, faces));
-  return true;
+  return applyEdit(T, energy, e, buildFlip, minGain, applied, handlers.flip,
+    [e](HalfedgeMesh& mesh, LocalEdit&)
+    {
+      mesh.flip(e);
+      return std::vector<FaceHandle>{ mesh.face_handle(mesh.halfedge_handle(e, 0)),
+        mesh.face_handle(mesh.halfedge_handle(e, 1)) };
+    });
 }
 
 RemeshingResult remesh(CommonTriangulation& T,

@@ -1,8 +1,6 @@
 // SurfaceMaps engine: NewtonProblem's defaults and ObjectiveProblem.
 #include "optimisation/NewtonProblem.h"
 
-#include <stdexcept>
-
 namespace surfacemaps
 {
 
@@ -21,12 +19,9 @@ std::unique_ptr<NewtonProblem> NewtonProblem::trialCopy()
   return nullptr;
 }
 
-void NewtonProblem::adopt(NewtonProblem&, const SpherePoints& points)
+bool NewtonProblem::adopt(NewtonProblem&, const SpherePoints&)
 {
-  if (!this->accept(points))
-  {
-    throw std::logic_error("a Newton step's accepted points failed their trial check again");
-  }
+  return false;
 }
 
 ObjectiveProblem::ObjectiveProblem(Objective& objective,

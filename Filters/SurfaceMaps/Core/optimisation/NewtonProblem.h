@@ -46,9 +46,9 @@ public:
   virtual std::unique_ptr<NewtonProblem> trialCopy();
 
   /// Takes over the state a copy's accept() computed for its last trial
-  /// (the step taken), instead of computing it again. Default: accept() on
-  /// `points`.
-  virtual void adopt(NewtonProblem& copy, const SpherePoints& points);
+  /// (the step taken, at `points`) instead of computing it again; true when
+  /// it did. Default: false, and the step calls accept(points) instead.
+  virtual bool adopt(NewtonProblem& copy, const SpherePoints& points);
 };
 
 /// A problem given by an objective alone, with an optional trial check

@@ -89,11 +89,8 @@ void TrialSearch::take(const Eigen::VectorXd& direction, double step, int tag)
     }
   }
   this->Points.recentreBases();
-  if (taken > 0)
-  {
-    this->Problem.adopt(*this->Copies[taken - 1], this->Points);
-  }
-  else if (taken < 0)
+  // Slot 0's problem holds the taken trial's state already.
+  if (taken != 0 && !(taken > 0 && this->Problem.adopt(*this->Copies[taken - 1], this->Points)))
   {
     this->acceptAgain();
   }

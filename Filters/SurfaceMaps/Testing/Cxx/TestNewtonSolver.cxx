@@ -132,9 +132,10 @@ struct CheckedProblem : NewtonProblem
     }
     return std::make_unique<CheckedProblem>(this->energy, this->check);
   }
-  void adopt(NewtonProblem& copy, const SpherePoints&) override
+  bool adopt(NewtonProblem& copy, const SpherePoints&) override
   {
     this->lastPassed = static_cast<CheckedProblem&>(copy).lastPassed;
+    return true;
   }
 };
 
