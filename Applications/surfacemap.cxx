@@ -2,7 +2,6 @@
 #include "AtomicFiles.h"
 #include "Commands.h"
 
-#include "base/FreedMemory.h"
 
 #include "vtkLogger.h"
 #include "vtkOutputWindow.h"
@@ -124,9 +123,6 @@ int main(int argc, char* argv[])
   vtkOutputWindow::GetInstance()->SetDisplayModeToNever();
   vtkLogger::SetStderrVerbosity(vtkLogger::VERBOSITY_OFF);
   surfacemap::installSignalHandlers();
-  // One job per process: freed factor-sized buffers are worth keeping for the
-  // next Newton step rather than returning them to the system.
-  surfacemaps::keepFreedMemoryForReuse();
 
   std::vector<std::string> args;
   int verbosity = 0;

@@ -88,7 +88,7 @@ def run_rounds(builds, cases, rounds, work, extra, variant_args):
 
 def table(builds, cases, seconds, peak, errors, work):
     first = builds[0][0]
-    lines = ["| build | corpus total, median of rounds (s) | / " + first + " | per case / " + first +
+    lines = ["| build | total of the cases, median of rounds (s) | / " + first + " | per case / " + first +
              " | peak MB | maps the same as " + first + " |",
              "|---|---|---|---|---|---|"]
     total = {}

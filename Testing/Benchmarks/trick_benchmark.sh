@@ -2,7 +2,9 @@
 # Measures what each hand-written parallel or memory trick of the engine
 # saves: builds `surfacemap` from the committed sources (HEAD) as they are
 # and once per patch in Testing/Benchmarks/tricks/ (each patch turns one
-# trick off), then times them on the benchmark corpus in one interleaved run
+# trick off: a trick stays only with its patch, and only while the corpus
+# shows it saves 5 % or more; the patches of the tricks that did not are
+# gone with them, their figures in the benchmark document), then times them on the benchmark corpus in one interleaved run
 # (interleaved_corpus.py), and times the block solves for many inputs
 # (--block-solve-inputs, a setting: no build of its own) against direct
 # solves on four-legged animal populations. The tables say, per variant, the
@@ -19,6 +21,7 @@
 # configured (CMAKE_CXX_COMPILER_LAUNCHER from the environment is passed on),
 # the variants' builds compile only the files their patches touch.
 set -euo pipefail
+shopt -s nullglob
 cd "$(dirname "$0")/../.."
 root=$PWD
 work=${1:?usage: trick_benchmark.sh WORK [CXXFLAGS] [ROUNDS] [BASE]}

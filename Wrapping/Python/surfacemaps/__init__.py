@@ -56,13 +56,9 @@ takes ``categorical=[names]`` and ``continuous=[names]`` to choose per array
     each time as .vtp files plus a ParaView .pvd collection.
 ``write_collection(meshes, times, directory, name)``
     Given meshes, one per time, as .vtp files plus a ParaView .pvd collection.
-``keep_freed_memory_for_reuse()``
-    Make the process keep the memory it frees (glibc) instead of faulting it
-    in again at every Newton step; for scripts that run maps, once at their
-    start (process-wide, cannot be undone; up to 1 GiB stays with the process).
 
 The helpers are defined by concept in the modules ``mesh``, ``mapping``,
-``transfer``, ``statistics``, ``files``, ``memory`` and ``errors``; import
+``transfer``, ``statistics``, ``files`` and ``errors``; import
 them from the package itself, as above.
 
 Submodules: ``surfacemaps.plots`` (distortion curves), ``surfacemaps.render``
@@ -84,6 +80,5 @@ from .mapping import MapResult, embed_on_sphere, evaluate_map, map_surfaces, pre
 from .transfer import transfer  # noqa: F401  (the function: it replaces the module's name here)
 from .statistics import ShapeStatistics, average_surfaces, shape_statistics  # noqa: F401
 from .files import map_file_stamp, write_collection, write_mesh, write_time_series  # noqa: F401
-from .memory import keep_freed_memory_for_reuse  # noqa: F401
 
 __version__ = "0.1.0"

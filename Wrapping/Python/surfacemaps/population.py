@@ -643,8 +643,6 @@ def summary(report):
 def main(argv=None, comm=None):
     """The command line; `comm` (an mpi4py communicator or Serial) when the caller already has one."""
     args = parse_args(argv)
-    # A program that runs maps and exits: keep freed factor-sized buffers for the next Newton step.
-    surfacemaps.keep_freed_memory_for_reuse()
     comm = comm or communicator(args.no_mpi)
     if comm is None:
         return 0

@@ -12,26 +12,12 @@ MapNewtonProblem::MapNewtonProblem(CommonTriangulation& T,
   bool lockLandmarks,
   int blockInputs)
   : T(T)
-  , Energy(energy)
-  , Targets(targets)
-  , InUse(&objective)
+  , Phase(energy)
+  , Energy(objective)
   , BlockInputs(blockInputs)
 {
   T.snapshot(this->State, points, lockLandmarks, energy.weights());
   energy.buildObjective(this->State, targets, objective);
-}
-
-MapNewtonProblem::MapNewtonProblem(const MapNewtonProblem& problem)
-  : T(problem.T)
-  , Energy(problem.Energy)
-  , Targets(problem.Targets)
-  , State(problem.State)
-  , OwnObjective(std::make_unique<Objective>())
-  , BlockInputs(problem.BlockInputs)
-{
-  // The objective reads the snapshot it is built over: this copy's own.
-  this->InUse = this->OwnObjective.get();
-  this->Energy.buildObjective(this->State, this->Targets, *this->InUse);
 }
 
 bool MapNewtonProblem::accept(const SpherePoints& trial)
@@ -43,7 +29,7 @@ std::vector<int> MapNewtonProblem::blockingPoints(const SpherePoints& trial)
 {
   if (!this->Raised)
   {
-    this->T.raiseBarrier(this->State, trial, this->Energy.weights().barrierRaise);
+    this->T.raiseBarrier(this->State, trial, this->Phase.weights().barrierRaise);
     this->Raised = true;
   }
   return this->T.invertedCorners(this->State, trial);
@@ -71,21 +57,6 @@ std::vector<int> MapNewtonProblem::variableBlocks(const SpherePoints& points) co
   }
   blocks[n] = variables;
   return blocks;
-}
-
-std::unique_ptr<NewtonProblem> MapNewtonProblem::trialCopy()
-{
-  return std::unique_ptr<NewtonProblem>(new MapNewtonProblem(*this));
-}
-
-bool MapNewtonProblem::adopt(NewtonProblem& copy, const SpherePoints&)
-{
-  // Only copies of this problem are ever adopted (TrialSearch's slots).
-  auto& other = static_cast<MapNewtonProblem&>(copy);
-  this->State.liftTriangle.swap(other.State.liftTriangle);
-  this->State.lifts.swap(other.State.lifts);
-  this->State.sampleTriangle.swap(other.State.sampleTriangle);
-  return true;
 }
 
 void MapNewtonProblem::writeBack(const SpherePoints& points)

@@ -35,21 +35,4 @@ LineSearchResult armijoBacktracking(const std::function<double(double)>& energyA
   double initialStep,
   const LineSearchOptions& options = LineSearchOptions());
 
-/// energyAt(slot, t): the energy at step t, evaluated in slot `slot`.
-using SlotEnergy = std::function<double(int, double)>;
-
-/// The same search with trials evaluated concurrently in `slots` slots, one
-/// thread each (slot numbers 0 .. slots - 1; a slot's calls come one after
-/// the other, and the caller's further threads are shared out to the
-/// parallel loops inside them). Trials are handed out in order to whichever
-/// slot is free, none past the first one known to pass. The result, `trials`
-/// included, is the one-by-one search's; up to slots - 1 trials after the
-/// one taken are evaluated in vain. An exception from energyAt is rethrown.
-LineSearchResult armijoBacktracking(const SlotEnergy& energyAt,
-  int slots,
-  double f0,
-  double slope,
-  double initialStep,
-  const LineSearchOptions& options = LineSearchOptions());
-
 } // namespace surfacemaps

@@ -14,16 +14,6 @@ std::vector<int> NewtonProblem::variableBlocks(const SpherePoints&) const
   return {};
 }
 
-std::unique_ptr<NewtonProblem> NewtonProblem::trialCopy()
-{
-  return nullptr;
-}
-
-bool NewtonProblem::adopt(NewtonProblem&, const SpherePoints&)
-{
-  return false;
-}
-
 ObjectiveProblem::ObjectiveProblem(Objective& objective,
   std::function<bool(const SpherePoints&)> check)
   : Energy(objective)

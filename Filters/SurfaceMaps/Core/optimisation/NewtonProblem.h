@@ -1,15 +1,14 @@
 // SurfaceMaps engine: what a projected-Newton step optimises. Owns the
 // interface between the step (optimisation/NewtonSolver.h) and a problem:
-// its energy, the check of a trial's points, the points that block a step,
-// the variable blocks a solver may split the system into, and copies for
-// trials evaluated at once. The step knows nothing else of the problem.
+// its energy, the check of a trial's points, the points that block a step
+// and the variable blocks a solver may split the system into. The step
+// knows nothing else of the problem.
 #pragma once
 
 #include "optimisation/Objective.h"
 #include "optimisation/SpherePoints.h"
 
 #include <functional>
-#include <memory>
 #include <vector>
 
 namespace surfacemaps
@@ -39,16 +38,6 @@ public:
   /// Offsets of variable blocks a solver may split the Newton system into
   /// (LinearSolver::setBlocks); empty: one system. Default: empty.
   virtual std::vector<int> variableBlocks(const SpherePoints& points) const;
-
-  /// A problem with the same energy over its own copy of whatever accept()
-  /// updates, so that its trials can run beside this one's on another
-  /// thread; nullptr (the default): trials run one by one.
-  virtual std::unique_ptr<NewtonProblem> trialCopy();
-
-  /// Takes over the state a copy's accept() computed for its last trial
-  /// (the step taken, at `points`) instead of computing it again; true when
-  /// it did. Default: false, and the step calls accept(points) instead.
-  virtual bool adopt(NewtonProblem& copy, const SpherePoints& points);
 };
 
 /// A problem given by an objective alone, with an optional trial check

@@ -5,8 +5,6 @@
 #include "optimisation/NewtonDirection.h"
 #include "optimisation/TrialSearch.h"
 
-#include <omp.h>
-
 #include <chrono>
 #include <cmath>
 #include <limits>
@@ -31,7 +29,7 @@ void searchStep(NewtonProblem& problem,
   const NewtonOptions& options,
   NewtonStepResult& result)
 {
-  TrialSearch trials(problem, points, omp_get_max_threads() > 1 ? options.trialSlots : 1);
+  TrialSearch trials(problem, points);
   const double first = firstStep(points, direction.d, options.maxPointStep);
   const LineSearchResult plain =
     trials.search(direction.d, result.energyBefore, direction.slope, first, 0, options.lineSearch);

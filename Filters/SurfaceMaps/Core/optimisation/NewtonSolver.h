@@ -23,11 +23,6 @@ struct NewtonOptions
   /// direction) to respect it. 0 = no cap.
   double maxPointStep = 0.0;
   LineSearchOptions lineSearch;
-  /// Line-search trials evaluated at once, one thread each, when OpenMP has
-  /// more than one thread and the problem gives trial copies
-  /// (NewtonProblem::trialCopy); threads beyond one per slot run the
-  /// parallel loops inside each trial. The step is the one-by-one search's.
-  int trialSlots = 2;
   Logger log;
 };
 

@@ -278,9 +278,6 @@ private:
     // triangle or locked variable).
     std::vector<int> Scatter;
   };
-  /// Below this many element Hessian entries, adding them into the matrix
-  /// stays on one thread.
-  static constexpr std::size_t ParallelScatterThreshold = 100000;
   /// The upper-triangle 2x2 blocks of the Hessian (diagonal included), by
   /// block column: column c's block rows, ascending (the diagonal last), are
   /// rows[start[c] .. start[c + 1]).

@@ -23,40 +23,25 @@ double firstStep(const SpherePoints& points, const Eigen::VectorXd& direction, d
   return largest > maxPointStep ? maxPointStep / largest : 1.0;
 }
 
-TrialSearch::TrialSearch(NewtonProblem& problem, SpherePoints& points, int slots)
+TrialSearch::TrialSearch(NewtonProblem& problem, SpherePoints& points)
   : Problem(problem)
   , Points(points)
   , Start(points.positions())
 {
-  for (int s = 1; s < slots; ++s)
-  {
-    std::unique_ptr<NewtonProblem> copy = problem.trialCopy();
-    if (!copy)
-    {
-      break;
-    }
-    this->Copies.push_back(std::move(copy));
-  }
-  // Copies retract their own points (with the same bases as slot 0's).
-  this->CopyPoints.assign(this->Copies.size(), points);
-  this->Last.resize(this->Copies.size() + 1);
 }
 
-double TrialSearch::trial(int slot, const Eigen::VectorXd& direction, double step, int tag)
+double TrialSearch::trial(const Eigen::VectorXd& direction, double step, int tag)
 {
-  SpherePoints& points = slot == 0 ? this->Points : this->CopyPoints[slot - 1];
-  NewtonProblem& problem = slot == 0 ? this->Problem : *this->Copies[slot - 1];
-  points.setPositions(this->Start);
-  points.retract(direction, step);
-  LastTrial& record = this->Last[slot];
-  record.tag = tag;
-  record.step = step;
-  record.accepted = problem.accept(points);
-  if (!record.accepted)
+  this->Points.setPositions(this->Start);
+  this->Points.retract(direction, step);
+  this->Last.tag = tag;
+  this->Last.step = step;
+  this->Last.accepted = this->Problem.accept(this->Points);
+  if (!this->Last.accepted)
   {
     return std::numeric_limits<double>::infinity();
   }
-  return problem.objective().value(points);
+  return this->Problem.objective().value(this->Points);
 }
 
 LineSearchResult TrialSearch::search(const Eigen::VectorXd& direction,
@@ -66,9 +51,7 @@ LineSearchResult TrialSearch::search(const Eigen::VectorXd& direction,
   int tag,
   const LineSearchOptions& options)
 {
-  return armijoBacktracking([&](int slot, double t)
-    { return this->trial(slot, direction, t, tag); },
-    static_cast<int>(this->Last.size()),
+  return armijoBacktracking([&](double t) { return this->trial(direction, t, tag); },
     f0,
     slope,
     firstStep,
@@ -79,18 +62,9 @@ void TrialSearch::take(const Eigen::VectorXd& direction, double step, int tag)
 {
   this->Points.setPositions(this->Start);
   this->Points.retract(direction, step);
-  int taken = -1;
-  for (int slot = 0; slot < static_cast<int>(this->Last.size()); ++slot)
-  {
-    const LastTrial& record = this->Last[slot];
-    if (record.accepted && record.tag == tag && record.step == step)
-    {
-      taken = slot;
-    }
-  }
+  const bool lastIsTaken = this->Last.accepted && this->Last.tag == tag && this->Last.step == step;
   this->Points.recentreBases();
-  // Slot 0's problem holds the taken trial's state already.
-  if (taken != 0 && !(taken > 0 && this->Problem.adopt(*this->Copies[taken - 1], this->Points)))
+  if (!lastIsTaken)
   {
     this->acceptAgain();
   }

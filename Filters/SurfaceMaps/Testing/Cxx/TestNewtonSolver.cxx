@@ -96,13 +96,12 @@ struct PullEnergy
 
 // A problem over an objective whose trial check remembers the points of the
 // last trial it passed, as a caller's point location would; optionally names
-// blocking points and gives trial copies (each with its own memory).
+// blocking points.
 struct CheckedProblem : NewtonProblem
 {
   Objective& energy;
   std::function<bool(const SpherePoints&)> check;
   std::function<std::vector<int>(const SpherePoints&)> blocking;
-  bool copies = false;
   std::vector<Eigen::Vector3d> lastPassed;
 
   CheckedProblem(Objective& objective, std::function<bool(const SpherePoints&)> check)
@@ -123,19 +122,6 @@ struct CheckedProblem : NewtonProblem
   std::vector<int> blockingPoints(const SpherePoints& trial) override
   {
     return this->blocking ? this->blocking(trial) : std::vector<int>{};
-  }
-  std::unique_ptr<NewtonProblem> trialCopy() override
-  {
-    if (!this->copies)
-    {
-      return nullptr;
-    }
-    return std::make_unique<CheckedProblem>(this->energy, this->check);
-  }
-  bool adopt(NewtonProblem& copy, const SpherePoints&) override
-  {
-    this->lastPassed = static_cast<CheckedProblem&>(copy).lastPassed;
-    return true;
   }
 };
 
@@ -384,12 +370,12 @@ TEST(NewtonSolver, TheProblemsLastCheckIsOfTheFinalPoints)
   EXPECT_EQ(step.heldPoints, 0);
 }
 
-TEST(NewtonSolver, ConcurrentTrialsTakeTheOneByOneStepBitForBit)
+TEST(NewtonSolver, TheProblemEndsWithTheFinalPoints)
 {
   // Trials that move point 0 farther than a fraction of its free move are
-  // rejected, so the searches run many trials (plain, then held). Each slot's
-  // problem remembers the points of its last passed trial; the problem must
-  // end with the final points, adopted from whichever slot took the step.
+  // rejected, so the searches run many trials (plain, then held). The
+  // problem remembers the points of its last passed trial; it must end with
+  // the final points, whichever search took the step.
   const auto blocked = pointZeroMovesBeyond(0.05);
   auto passes = [&](const SpherePoints& trial) { return !blocked(trial); };
 
@@ -399,21 +385,18 @@ TEST(NewtonSolver, ConcurrentTrialsTakeTheOneByOneStepBitForBit)
     std::vector<Eigen::Vector3d> final;
     std::vector<Eigen::Vector3d> remembered;
   };
-  auto runWith = [&](int slots, bool hold)
+  auto runWith = [&](bool hold)
   {
     Problem problem(0.05);
     CheckedProblem newton(problem.objective, passes);
-    newton.copies = true;
     if (hold)
     {
       newton.blocking = [&](const SpherePoints& trial)
       { return passes(trial) ? std::vector<int>{} : std::vector<int>{ 0 }; };
     }
-    NewtonOptions options;
-    options.trialSlots = slots;
     LinearSolver solver;
     Run run;
-    run.step = newtonStep(newton, problem.points, solver, options);
+    run.step = newtonStep(newton, problem.points, solver);
     run.final = problem.points.positions();
     run.remembered = newton.lastPassed;
     return run;
@@ -421,20 +404,10 @@ TEST(NewtonSolver, ConcurrentTrialsTakeTheOneByOneStepBitForBit)
 
   for (const bool hold : { false, true })
   {
-    const Run one = runWith(1, hold);
-    ASSERT_TRUE(one.step.moved);
-    ASSERT_GT(one.step.lineSearchTrials, 4);
-    EXPECT_EQ(one.step.heldPoints > 0, hold);
-    EXPECT_EQ(one.remembered, one.final);
-    for (const int slots : { 2, 3 })
-    {
-      const Run many = runWith(slots, hold);
-      EXPECT_EQ(many.final, one.final) << slots << " slots, hold " << hold;
-      EXPECT_EQ(many.step.step, one.step.step);
-      EXPECT_EQ(many.step.energyAfter, one.step.energyAfter);
-      EXPECT_EQ(many.step.lineSearchTrials, one.step.lineSearchTrials);
-      EXPECT_EQ(many.step.heldPoints, one.step.heldPoints);
-      EXPECT_EQ(many.remembered, many.final);
-    }
+    const Run run = runWith(hold);
+    ASSERT_TRUE(run.step.moved);
+    ASSERT_GT(run.step.lineSearchTrials, 4);
+    EXPECT_EQ(run.step.heldPoints > 0, hold);
+    EXPECT_EQ(run.remembered, run.final) << "hold " << hold;
   }
 }

@@ -451,9 +451,8 @@ TEST(SurfaceMapFilter, MappedFirstInputReusesTheMap)
 }
 
 // NumberOfThreads changes how fast, not what: the same map bit for bit with
-// one, two and four threads (line-search trials one at a time, in two slots,
-// in two slots of two threads each), and the caller's OpenMP thread count is
-// its own again after the update.
+// one, two and four threads, and the caller's OpenMP thread count is its own
+// again after the update.
 TEST(SurfaceMapFilter, NumberOfThreadsGivesTheSameMapAndIsRestored)
 {
   vtkSmartPointer<vtkPolyData> a = ellipsoid(2, 1.0, 0.8, 0.6);

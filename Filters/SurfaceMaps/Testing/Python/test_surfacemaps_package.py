@@ -1,8 +1,6 @@
 """The Python package: import, readers, validation, pipelines."""
 
 import os
-import subprocess
-import sys
 
 import pytest
 
@@ -20,56 +18,6 @@ def test_classes_are_exported():
     assert issubclass(surfacemaps.vtkSurfaceMeshReader, vtkAlgorithm)
     assert issubclass(surfacemaps.vtkSurfaceMeshValidator, vtkAlgorithm)
     assert surfacemaps.__version__
-
-
-# Run in a fresh process each: the policy is process-wide and cannot be undone. Prints whether it
-# was applied, then whether a 16 MiB block came from the heap and stayed there after free (with
-# glibc's defaults it is mapped on its own and unmapped on free).
-_FREED_MEMORY_PROBE = """
-import ctypes, surfacemaps
-class Mallinfo2(ctypes.Structure):
-    _fields_ = [(name, ctypes.c_size_t) for name in ("arena", "ordblks", "smblks", "hblks", "hblkhd",
-                                                     "usmblks", "fsmblks", "uordblks", "fordblks", "keepcost")]
-libc = ctypes.CDLL(None)
-libc.mallinfo2.restype = Mallinfo2
-libc.malloc.restype = ctypes.c_void_p
-libc.malloc.argtypes = (ctypes.c_size_t,)
-libc.free.argtypes = (ctypes.c_void_p,)
-applied = surfacemaps.keep_freed_memory_for_reuse()
-size = 16 << 20
-before = libc.mallinfo2()
-block = libc.malloc(size)
-ctypes.memset(block, 1, size)
-allocated = libc.mallinfo2()
-libc.free(block)
-freed = libc.mallinfo2()
-# Kept: the block came from the heap, not a mapping of its own, and freeing
-# it put all of it on the heap's free lists (the heap did not shrink). The
-# allocation may take part of the heap's free top, so compare with the
-# figures just before the free, not with those before the allocation.
-print(applied, allocated.hblkhd == before.hblkhd and freed.arena == allocated.arena
-      and freed.fordblks - allocated.fordblks >= size)
-"""
-
-
-def _freed_memory_probe(tunables):
-    env = {k: v for k, v in os.environ.items() if k != "GLIBC_TUNABLES"}
-    if tunables:
-        env["GLIBC_TUNABLES"] = tunables
-    r = subprocess.run([sys.executable, "-c", _FREED_MEMORY_PROBE], env=env, capture_output=True, text=True,
-                       timeout=60)
-    assert r.returncode == 0, r.stderr
-    return r.stdout.split()
-
-
-@pytest.mark.skipif(not sys.platform.startswith("linux"), reason="glibc only")
-def test_keep_freed_memory_for_reuse_keeps_large_freed_blocks_in_the_heap():
-    assert _freed_memory_probe(None) == ["True", "True"]
-
-
-@pytest.mark.skipif(not sys.platform.startswith("linux"), reason="glibc only")
-def test_keep_freed_memory_for_reuse_leaves_the_users_malloc_tunables():
-    assert _freed_memory_probe("glibc.malloc.trim_threshold=4096")[0] == "False"
 
 
 def test_read_mesh_every_format():

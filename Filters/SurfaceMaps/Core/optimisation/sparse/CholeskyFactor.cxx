@@ -1,13 +1,11 @@
 // SurfaceMaps engine: CholeskyFactor, the CHOLMOD calls: settings, analysis
-// (serialised for METIS), the numeric factorisation in cholmod_factorize's
-// steps with its rows in thread lists, solves and the diagonal shift.
+// (serialised for METIS), the numeric factorisation, solves and the
+// diagonal shift.
 #include "optimisation/sparse/CholeskyFactor.h"
 
 #include "optimisation/sparse/BlasThreadGuard.h"
 
 #include <Eigen/CholmodSupport>
-
-#include <omp.h>
 
 #include <algorithm>
 #include <cmath>
@@ -44,7 +42,6 @@ CholeskyFactor::CholeskyFactor(LinearSolver::Ordering ordering)
   common.supernodal_switch = 200;
   common.nmethods = 1;
   common.method[0].ordering = ordering == LinearSolver::Ordering::Amd ? CHOLMOD_AMD : CHOLMOD_METIS;
-  common.postorder = 1; // also what the split factorisation relies on
   quietCholmod(common);
 }
 
@@ -52,10 +49,6 @@ CholeskyFactor::~CholeskyFactor()
 {
   cholmod_free_factor(&this->Factor, &this->Common);
   cholmod_finish(&this->Common);
-  for (auto& common : this->ThreadCommons)
-  {
-    cholmod_finish(common.get());
-  }
 }
 
 void CholeskyFactor::analyseAhead(const Eigen::SparseMatrix<double>& pattern)
@@ -71,8 +64,6 @@ LinearSolveResult CholeskyFactor::solve(const Eigen::SparseMatrix<double>& H,
   const Logger& log)
 {
   LinearSolveResult result;
-  // Taken before the BLAS guard, which may set the OpenMP thread count to 1.
-  const int threads = omp_get_max_threads();
   const BlasThreadGuard blasThreads;
   const bool ahead = this->AnalysedAhead;
   this->AnalysedAhead = false;
@@ -82,16 +73,15 @@ LinearSolveResult CholeskyFactor::solve(const Eigen::SparseMatrix<double>& H,
     result.analysed = true;
   }
   result.analysed = result.analysed || (patternChanged && ahead);
-  if (this->factorise(H, threads))
+  if (this->factorise(H))
   {
-    result.factorisationThreads = this->FactorisationThreads;
     result.success = this->solveWith(b, x);
     if (result.success)
     {
       return result;
     }
   }
-  if (!this->solveShifted(H, b, x, threads, log, result))
+  if (!this->solveShifted(H, b, x, log, result))
   {
     log(Logger::Warning, "Cholesky factorisation failed even with a diagonal shift");
   }
@@ -113,7 +103,6 @@ void CholeskyFactor::analyse(const Eigen::SparseMatrix<double>& H)
   {
     throw std::bad_alloc();
   }
-  this->Split.valid = false;
 }
 
 void CholeskyFactor::analyseLocked(const Eigen::SparseMatrix<double>& H)
@@ -139,7 +128,6 @@ void CholeskyFactor::analyseLocked(const Eigen::SparseMatrix<double>& H)
 bool CholeskyFactor::solveShifted(const Eigen::SparseMatrix<double>& H,
   const Eigen::VectorXd& b,
   Eigen::VectorXd& x,
-  int threads,
   const Logger& log,
   LinearSolveResult& result)
 {
@@ -159,9 +147,8 @@ bool CholeskyFactor::solveShifted(const Eigen::SparseMatrix<double>& H,
       double& h = shifted.coeffRef(i, i);
       h += shift * std::max(std::abs(h), floor);
     }
-    if (this->factorise(shifted, threads) && this->solveWith(b, x))
+    if (this->factorise(shifted) && this->solveWith(b, x))
     {
-      result.factorisationThreads = this->FactorisationThreads;
       std::ostringstream message;
       message << "Cholesky factorisation failed; solved with the diagonal scaled by 1 + " << shift;
       log(Logger::Detail, message.str());
@@ -173,145 +160,12 @@ bool CholeskyFactor::solveShifted(const Eigen::SparseMatrix<double>& H,
   return false;
 }
 
-/// Numeric factorisation of H (the analysed pattern) on up to `threads`
-/// threads; false if H is not numerically positive definite.
-bool CholeskyFactor::factorise(const Eigen::SparseMatrix<double>& H, int threads)
+/// Numeric factorisation of H (the analysed pattern); false if H is not
+/// numerically positive definite.
+bool CholeskyFactor::factorise(const Eigen::SparseMatrix<double>& H)
 {
   cholmod_sparse A = Eigen::viewAsCholmod(H.selfadjointView<Eigen::Upper>());
-  cholmod_factor* L = this->Factor;
-  this->FactorisationThreads = 1;
-  const bool splitKnown = this->Split.valid && this->Split.threads == threads;
-  if (L->is_super || threads < 2 || (splitKnown && this->Split.lists.empty()))
-  {
-    return cholmod_factorize(&A, L, &this->Common) && L->minor == L->n;
-  }
-  cholmod_sparse* S = this->permutedUpper(A);
-  const int n = static_cast<int>(L->n);
-  if (!splitKnown)
-  {
-    std::vector<int> parent(n);
-    cholmod_etree(S, parent.data(), &this->Common);
-    this->Split = splitEliminationTree(*S, parent, threads);
-  }
-  this->prepareRows(S);
-  const int parallelLists = std::max(0, static_cast<int>(this->Split.lists.size()) - 1);
-  double beta[2] = { 0.0, 0.0 };
-  bool ok = parallelLists == 0 ? cholmod_rowfac(S, nullptr, beta, 0, n, L, &this->Common)
-                               : this->factoriseSplit(*S, threads);
-  ok = ok && this->finishFactor();
-  cholmod_free_sparse(&S, &this->Common);
-  return ok && L->minor == L->n;
-}
-
-// The matrix cholmod_factorize factorises for an upper triangle:
-// S = triu(A(p, p)), by two transposes.
-cholmod_sparse* CholeskyFactor::permutedUpper(cholmod_sparse& A)
-{
-  cholmod_sparse* lower =
-    cholmod_ptranspose(&A, 2, static_cast<int*>(this->Factor->Perm), nullptr, 0, &this->Common);
-  cholmod_sparse* S =
-    lower ? cholmod_ptranspose(lower, 2, nullptr, nullptr, 0, &this->Common) : nullptr;
-  cholmod_free_sparse(&lower, &this->Common);
-  if (!S)
-  {
-    throw std::bad_alloc();
-  }
-  return S;
-}
-
-// What cholmod_factorize does before its rows: LL^T as asked, a symbolic
-// factor allocated (exactly the space the analysis counted) and made the
-// identity, a numeric one emptied. Done here because the rows may be
-// factorised in several calls. Frees S if it throws.
-void CholeskyFactor::prepareRows(cholmod_sparse*& S)
-{
-  cholmod_factor* L = this->Factor;
-  L->is_ll = this->Common.final_ll;
-  if (L->xtype == CHOLMOD_PATTERN)
-  {
-    const double grow2 = this->Common.grow2;
-    if (this->Common.final_pack)
-    {
-      this->Common.grow2 = 0;
-    }
-    const bool allocated =
-      cholmod_change_factor(CHOLMOD_REAL, L->is_ll, false, false, true, L, &this->Common);
-    this->Common.grow2 = grow2;
-    if (!allocated)
-    {
-      cholmod_free_sparse(&S, &this->Common);
-      throw std::bad_alloc();
-    }
-  }
-  else
-  {
-    L->minor = L->n;
-    std::fill(static_cast<int*>(L->nz), static_cast<int*>(L->nz) + L->n, 1);
-  }
-}
-
-// The split's thread lists at once, then its remainder (pipelined on two
-// threads where it applies).
-bool CholeskyFactor::factoriseSplit(cholmod_sparse& S, int threads)
-{
-  const EliminationTreeSplit& split = this->Split;
-  const int parallelLists = static_cast<int>(split.lists.size()) - 1;
-  while (static_cast<int>(this->ThreadCommons.size()) < parallelLists - 1)
-  {
-    auto common = std::make_unique<cholmod_common>();
-    cholmod_start(common.get());
-    quietCholmod(*common);
-    this->ThreadCommons.push_back(std::move(common));
-  }
-  // Each thread has workspaces of its own and writes only its subtrees'
-  // columns of L. One shared word: a row that finds H not positive
-  // definite sets L->minor, which rows of other threads may read; the
-  // factorisation then fails whatever they read, as the serial one does.
-  this->FactorisationThreads = std::min(threads, parallelLists);
-  std::vector<char> listOk(parallelLists, 1);
-#pragma omp parallel for schedule(static, 1) num_threads(this->FactorisationThreads)
-  for (int t = 0; t < parallelLists; ++t)
-  {
-    cholmod_common* common = t == 0 ? &this->Common : this->ThreadCommons[t - 1].get();
-    listOk[t] = this->factoriseList(S, t, common);
-  }
-  const bool ok = std::all_of(listOk.begin(), listOk.end(), [](char c) { return c != 0; });
-  if (ok && this->FactorisationThreads > 1 && split.remainder.size() > 1 &&
-    RemainderPipeline::applies(S, *this->Factor))
-  {
-    return this->Pipeline.factorise(S, split.parent, split.remainder, *this->Factor);
-  }
-  return ok && this->factoriseList(S, parallelLists, &this->Common);
-}
-
-// The rows of the split's list `list`, with the workspaces of `common`.
-bool CholeskyFactor::factoriseList(cholmod_sparse& S, int list, cholmod_common* common)
-{
-  double beta[2] = { 0.0, 0.0 };
-  return cholmod_rowfac_mask2(&S,
-    nullptr,
-    beta,
-    this->Split.lists[list][0],
-    this->Split.lists[list][1],
-    nullptr,
-    0,
-    this->Split.next.data(),
-    this->Factor,
-    common);
-}
-
-// cholmod_factorize's final form.
-bool CholeskyFactor::finishFactor()
-{
-  cholmod_factor* L = this->Factor;
-  return this->Common.final_asis ||
-    cholmod_change_factor(L->xtype,
-      L->is_ll,
-      false,
-      this->Common.final_pack,
-      this->Common.final_monotonic,
-      L,
-      &this->Common);
+  return cholmod_factorize(&A, this->Factor, &this->Common) && this->Factor->minor == this->Factor->n;
 }
 
 bool CholeskyFactor::solveWith(const Eigen::VectorXd& b, Eigen::VectorXd& x)

@@ -1,28 +1,25 @@
 // SurfaceMaps engine: CholeskyFactor, CHOLMOD's Cholesky factor of one sparse
-// symmetric matrix: analysis, numeric factorisation (split over threads
-// along the elimination tree where that pays), solves, and the diagonal
-// shift that rescues a matrix that is not numerically positive definite.
+// symmetric matrix: analysis, numeric factorisation, solves, and the
+// diagonal shift that rescues a matrix that is not numerically positive
+// definite.
 #pragma once
 
-#include "optimisation/sparse/EliminationTreeSplit.h"
 #include "optimisation/sparse/LinearSolver.h"
-#include "optimisation/sparse/RemainderPipeline.h"
 
 #include <cholmod.h>
 
 #include <Eigen/Core>
 #include <Eigen/SparseCore>
 
-#include <memory>
-#include <vector>
 
 namespace surfacemaps
 {
 
 /// The direct solves of LinearSolver (its class comment says what they
-/// guarantee). CHOLMOD's simplicial factorisation is serial; this class runs
-/// cholmod_factorize's steps itself so that the rows can be factorised in
-/// the lists of an EliminationTreeSplit and by the RemainderPipeline.
+/// guarantee): cholmod_analyze, cholmod_factorize and cholmod_solve. A
+/// simplicial factorisation runs on one thread (a hand-written split of it
+/// over threads along the elimination tree saved under 5 % of the corpus'
+/// time on two cores: Testing/Benchmarks/README.md, tricks on and off).
 class CholeskyFactor
 {
 public:
@@ -53,25 +50,13 @@ private:
   bool solveShifted(const Eigen::SparseMatrix<double>& H,
     const Eigen::VectorXd& b,
     Eigen::VectorXd& x,
-    int threads,
     const Logger& log,
     LinearSolveResult& result);
-  bool factorise(const Eigen::SparseMatrix<double>& H, int threads);
-  cholmod_sparse* permutedUpper(cholmod_sparse& A);
-  void prepareRows(cholmod_sparse*& S);
-  bool factoriseSplit(cholmod_sparse& S, int threads);
-  bool factoriseList(cholmod_sparse& S, int list, cholmod_common* common);
-  bool finishFactor();
+  bool factorise(const Eigen::SparseMatrix<double>& H);
   bool solveWith(const Eigen::VectorXd& b, Eigen::VectorXd& x);
 
   cholmod_common Common;
   cholmod_factor* Factor = nullptr;
-  // Workspaces of the further threads of a split factorisation.
-  std::vector<std::unique_ptr<cholmod_common>> ThreadCommons;
-  EliminationTreeSplit Split;
-  RemainderPipeline Pipeline;
-  // How many threads the last factorisation ran on.
-  int FactorisationThreads = 1;
   // analyseAhead() was called for the next solve's pattern.
   bool AnalysedAhead = false;
 };

@@ -25,18 +25,12 @@ struct LinearSolveResult
   bool analysed = false;
   /// Conjugate-gradient iterations (block solves only; 0 for a direct solve).
   int iterations = 0;
-  /// Threads the (last) numeric factorisation ran on: more than one when a
-  /// simplicial factor's elimination tree was split between threads.
-  int factorisationThreads = 1;
 };
 
 /// Solves H x = b for a sparse symmetric positive (semi-)definite H given by
 /// its upper triangle, with CHOLMOD's Cholesky factorisation (supernodal for
 /// dense factors, simplicial for sparse ones). The symbolic
-/// analysis is kept while the sparsity pattern stays the same. A simplicial
-/// factorisation runs on the caller's OpenMP threads where its elimination
-/// tree has independent subtrees of enough work; the factor is CHOLMOD's
-/// serial one bit for bit, whatever the thread count. If the
+/// analysis is kept while the sparsity pattern stays the same. If the
 /// factorisation fails (H not numerically positive definite, or definite but
 /// scaled beyond what rounding allows), H + mu diag(H) is factorised with a
 /// growing mu (Levenberg-Marquardt's scaling, so that every variable keeps its
