@@ -3,7 +3,8 @@
 The VTK classes of the module are available directly from this package::
 
     import surfacemaps
-    reader = surfacemaps.vtkSurfaceMeshReader(file_name="spot.obj")
+    reader = surfacemaps.vtkSurfaceMeshReader()
+    reader.SetFileName("spot.obj")
 
 Helpers:
 
