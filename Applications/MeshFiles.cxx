@@ -164,7 +164,7 @@ bool isFile(const std::string& path)
   return std::filesystem::is_regular_file(path, ec);
 }
 
-void writePolyDataAtomically(vtkPolyData* data, const std::string& path)
+std::string polyDataFileBytes(vtkPolyData* data, const std::string& path)
 {
   // Into memory first: the XML writer does not notice every failed write
   // (a full disk), so the bytes go to the file through writeFileAtomically.
@@ -184,7 +184,12 @@ void writePolyDataAtomically(vtkPolyData* data, const std::string& path)
         ? "the XML writer failed (VTK error code " + std::to_string(code) + ")"
         : errors.messages().front());
   }
-  writeFileAtomically(path, writer->GetOutputString());
+  return writer->GetOutputString();
+}
+
+void writePolyDataAtomically(vtkPolyData* data, const std::string& path)
+{
+  writeFileAtomically(path, polyDataFileBytes(data, path));
 }
 
 void writeMeshAtomically(vtkPolyData* data, const std::string& path)
