@@ -277,6 +277,8 @@ void MapDestination::prepareStaged()
       }
     }
     this->Path = withPid(this->Directory, "tmp");
+    // Created and registered for removal on SIGINT/SIGTERM in one step.
+    const InterruptHold hold;
     if (mkdir(this->Path.c_str(), 0777) != 0)
     {
       const int error = errno;
