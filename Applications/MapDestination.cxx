@@ -176,11 +176,24 @@ MapDestination::MapDestination(const std::string& directory, bool overwrite)
   , Path(directory)
   , Overwrite(overwrite)
 {
+  try
+  {
+    this->prepare();
+  }
+  catch (...)
+  {
+    this->discard(); // no destructor runs for a constructor that throws
+    throw;
+  }
+}
+
+void MapDestination::prepare()
+{
   std::error_code ec;
-  fs::path target = fs::absolute(directory, ec).lexically_normal();
+  fs::path target = fs::absolute(this->Given, ec).lexically_normal();
   if (ec)
   {
-    throw std::runtime_error(cannotCreate(directory, ec.message()));
+    throw std::runtime_error(cannotCreate(this->Given, ec.message()));
   }
   if (!target.has_filename())
   {
@@ -200,7 +213,7 @@ MapDestination::MapDestination(const std::string& directory, bool overwrite)
   }
   else if (fs::exists(fs::symlink_status(target, ec)))
   {
-    throw std::runtime_error(cannotCreate(directory, "it exists and is not a directory"));
+    throw std::runtime_error(cannotCreate(this->Given, "it exists and is not a directory"));
   }
   else
   {
@@ -213,7 +226,7 @@ MapDestination::MapDestination(const std::string& directory, bool overwrite)
     fs::create_directories(parent, ec);
     if (ec && !fs::is_directory(parent))
     {
-      throw std::runtime_error(cannotCreate(directory, ec.message()));
+      throw std::runtime_error(cannotCreate(this->Given, ec.message()));
     }
     this->Directory = target.string();
   }
@@ -221,6 +234,11 @@ MapDestination::MapDestination(const std::string& directory, bool overwrite)
 }
 
 MapDestination::~MapDestination()
+{
+  this->discard();
+}
+
+void MapDestination::discard()
 {
   if (this->Committed)
   {

@@ -70,6 +70,10 @@ public:
   void commit(const std::vector<std::string>& names);
 
 private:
+  void prepare();
+  /// What the destructor does: removes the staging directory and the
+  /// parents created, unless committed.
+  void discard();
   void prepareInPlace(const std::string& why);
   void prepareStaged();
   /// Refuses when a live run's staging directory is beside DIR; with
