@@ -170,6 +170,16 @@ def test_an_interrupted_run_leaves_no_frames_without_their_index_files(populatio
         assert not [name for name in left if ".tmp." in name], left
 
 
+def test_a_second_run_replaces_the_frames_as_a_whole(population, tmp_path):
+    out = tmp_path / "stats"
+    for frames in ("5", "3"):
+        result = run("statistics", *population, "--output-dir", out, "--frames", frames, "--modes", "1")
+        assert result.returncode == 0, result.stderr
+    assert sorted(os.listdir(out / "mode_1")) == ["frame_000.vtp", "frame_001.vtp", "frame_002.vtp"]
+    assert len(list(ET.parse(out / "mode_1.pvd").getroot().iter("DataSet"))) == 3
+    assert not [name for name in os.listdir(out) if ".tmp." in name]
+
+
 def test_pictures_need_a_display(population, tmp_path):
     import subprocess
     from cli import CLI
