@@ -714,14 +714,15 @@ def test_what_killed_runs_left_beside_the_directory_is_cleaned_up(two_maps, tmp_
     them in D.tmp.<pid> with the earlier map: they come back into D. An earlier version killed
     between its two renames left no D and the earlier map in D.old.<pid>: it becomes D again."""
     target = tmp_path / "D"
-    process = map_process(target, data("ellipsoid.obj"), data("blob.off"), schedule=SHORT)
+    process = map_process(target, data("ellipsoid.obj"), data("blob.off"))
     staging = tmp_path / f"D.tmp.{process.pid}"
     assert wait_for(staging, process)
     process.kill()
     process.communicate()
     if process.returncode == -signal.SIGKILL:
         assert staging.exists()
-    r = run("map", data("ellipsoid.obj"), data("blob.off"), "--output-dir", target, *NO_ITERATIONS)
+    r = run("map", data("ellipsoid.obj"), data("blob.off"), "--output-dir", target, "--overwrite",
+            *NO_ITERATIONS)
     assert r.returncode == 0, r.stderr
     if process.returncode == -signal.SIGKILL:
         assert (f"note: removed {staging}, left by an interrupted 'surfacemap map' (pid {process.pid})"
