@@ -66,13 +66,18 @@ void addStamp(vtkFieldData* fields, const char* name, const std::string& value)
   fields->AddArray(array);
 }
 
-// The stamp `name` of a map file, empty if unreadable or absent.
-std::string stampOf(const std::string& path, const char* name)
+// The stamp `name` of a map file, empty if unreadable or absent; `readable`
+// (if given) receives whether the file reads as a mesh at all.
+std::string stampOf(const std::string& path, const char* name, bool* readable = nullptr)
 {
   vtkNew<vtkSurfaceMeshReader> reader;
   ErrorCapture quiet(reader);
   reader->SetFileName(path.c_str());
   reader->Update();
+  if (readable)
+  {
+    *readable = quiet.messages().empty() && reader->GetOutput()->GetNumberOfPoints() > 0;
+  }
   auto* array =
     vtkUnsignedCharArray::SafeDownCast(reader->GetOutput()->GetFieldData()->GetAbstractArray(name));
   std::string text;
@@ -265,8 +270,15 @@ void verifyMapFiles(const std::string& directory, const std::vector<std::string>
     {
       continue;
     }
-    const std::string fileId = stampOf(path, MapIdName);
+    bool readable = false;
+    const std::string fileId = stampOf(path, MapIdName, &readable);
     const std::string fileName = stampOf(path, MapFileName);
+    if (!readable)
+    {
+      throw std::runtime_error(path + " is damaged or truncated: it does not read as a mesh (" +
+        std::to_string(bytes.size()) + " bytes, " + directory + "/report.json records " +
+        std::to_string((*record)["bytes"].asUInt64()) + ")");
+    }
     if (fileId != id)
     {
       throw std::runtime_error(path + " belongs to another map (map id " +

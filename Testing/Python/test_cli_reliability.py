@@ -770,6 +770,19 @@ def test_an_interrupted_run_is_named_as_such_everywhere(two_maps, tmp_path):
     complete_map(interrupted)
 
 
+def test_a_truncated_or_deleted_map_file_is_named(two_maps, tmp_path):
+    damaged = copy_map(two_maps[0], tmp_path / "damaged")
+    content = (damaged / "common_1.vtp").read_bytes()
+    (damaged / "common_1.vtp").write_bytes(content[:len(content) // 2])
+    for r in transfer_and_evaluate(damaged, tmp_path):
+        assert r.returncode == 2, (r.stdout, r.stderr)
+        assert f"{damaged / 'common_1.vtp'} is damaged or truncated: it does not read as a mesh" in r.stderr
+    (damaged / "common_1.vtp").unlink()
+    r = run("evaluate", damaged, "--output-dir", tmp_path / "evaluation")
+    assert r.returncode == 2, (r.stdout, r.stderr)
+    assert f"{damaged / 'common_1.vtp'} is missing ({damaged}/report.json lists it)" in r.stderr
+
+
 # Every reader of a map directory checks what it reads: statistics as evaluate does.
 
 def test_statistics_refuses_a_swapped_or_stale_common_file(two_maps, tmp_path):
