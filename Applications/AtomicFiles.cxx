@@ -1,6 +1,7 @@
 // The `surfacemap` command line: atomic file writes, and the signal handler
-// that removes temporary files (and an interrupted map's files) on SIGINT
-// and SIGTERM. The handler's paths live in fixed storage registered here.
+// that removes temporary files (and an interrupted command's staging
+// directory or map files) on SIGINT and SIGTERM. The handler's paths live in fixed storage
+// registered here.
 #include "AtomicFiles.h"
 
 #include "Terminal.h"
@@ -40,14 +41,11 @@ constexpr std::size_t TemporaryPathSize = 4096;
 char TemporaryPaths[TemporarySlots][TemporaryPathSize];
 volatile std::sig_atomic_t TemporaryInUse[TemporarySlots];
 
-// Directories for InterruptCleanup and the one rename of InterruptRestore,
-// in the same kind of fixed storage.
+// Directories for InterruptCleanup, in the same kind of fixed storage.
 constexpr int DirectorySlots = 4;
 char DirectoryPaths[DirectorySlots][TemporaryPathSize];
+volatile std::sig_atomic_t DirectoryScope[DirectorySlots];
 volatile std::sig_atomic_t DirectoryInUse[DirectorySlots];
-char RestoreFrom[TemporaryPathSize];
-char RestoreTo[TemporaryPathSize];
-volatile std::sig_atomic_t RestoreInUse = 0;
 
 bool registerPath(char* slot, const std::string& path)
 {
@@ -79,45 +77,75 @@ bool isMapWrittenName(const char* name)
     length > 4 && std::strcmp(name + length - 4, ".vtp") == 0;
 }
 
-// Removes the map's files from `directory`, then the directory if empty,
-// with system calls only (a signal handler may not allocate).
-void removeMapFilesOf(const char* directory)
+struct DirectoryEntry
 {
-  const int fd = open(directory, O_RDONLY | O_DIRECTORY | O_CLOEXEC);
-  if (fd < 0)
-  {
-    return;
-  }
-  struct Entry
-  {
-    std::uint64_t inode;
-    std::int64_t offset;
-    unsigned short length;
-    unsigned char type;
-    char name[1];
-  };
-  alignas(8) static char buffer[8192];
+  std::uint64_t inode;
+  std::int64_t offset;
+  unsigned short length;
+  unsigned char type;
+  char name[1];
+};
+
+// Removes the entries of the open directory `fd` (only the map's files with
+// `mapFilesOnly`; otherwise every file, and the subdirectories with their
+// files while `depth` > 0), with system calls only: a signal handler may
+// not allocate. One buffer per depth, since a subdirectory is read while
+// its parent's buffer is still being walked.
+void removeEntriesAt(int fd, int depth, bool mapFilesOnly)
+{
+  constexpr int Depths = 2;
+  alignas(8) static char buffers[Depths][8192];
+  char* buffer = buffers[depth < Depths ? depth : Depths - 1];
   // Unlinking while reading the directory may skip entries: read it again
   // until a pass removes nothing.
   for (bool removed = true; removed;)
   {
     removed = false;
     lseek(fd, 0, SEEK_SET);
-    for (long n; (n = syscall(SYS_getdents64, fd, buffer, sizeof(buffer))) > 0;)
+    for (long n; (n = syscall(SYS_getdents64, fd, buffer, sizeof(buffers[0]))) > 0;)
     {
       for (long at = 0; at < n;)
       {
-        const auto* entry = reinterpret_cast<const Entry*>(buffer + at);
+        const auto* entry = reinterpret_cast<const DirectoryEntry*>(buffer + at);
         at += entry->length;
-        if (isMapWrittenName(entry->name) && unlinkat(fd, entry->name, 0) == 0)
+        const char* name = entry->name;
+        if (std::strcmp(name, ".") == 0 || std::strcmp(name, "..") == 0 ||
+          (mapFilesOnly && !isMapWrittenName(name)))
+        {
+          continue;
+        }
+        if (unlinkat(fd, name, 0) == 0)
         {
           removed = true;
+        }
+        else if (errno == EISDIR && depth > 0 && !mapFilesOnly)
+        {
+          const int sub = openat(fd, name, O_RDONLY | O_DIRECTORY | O_CLOEXEC);
+          if (sub >= 0)
+          {
+            removeEntriesAt(sub, depth - 1, false);
+            close(sub);
+          }
+          removed = unlinkat(fd, name, AT_REMOVEDIR) == 0 || removed;
         }
       }
     }
   }
+}
+
+void removeWrittenFilesOf(const char* directory, bool mapFilesOnly)
+{
+  const int fd = open(directory, O_RDONLY | O_DIRECTORY | O_CLOEXEC);
+  if (fd < 0)
+  {
+    return;
+  }
+  removeEntriesAt(fd, 1, mapFilesOnly);
   close(fd);
-  rmdir(directory);
+  if (!mapFilesOnly)
+  {
+    rmdir(directory);
+  }
 }
 
 extern "C" void removeTemporariesAndExit(int signal)
@@ -129,15 +157,11 @@ extern "C" void removeTemporariesAndExit(int signal)
       unlink(TemporaryPaths[k]);
     }
   }
-  if (RestoreInUse)
-  {
-    rename(RestoreFrom, RestoreTo);
-  }
   for (int k = 0; k < DirectorySlots; ++k)
   {
     if (DirectoryInUse[k])
     {
-      removeMapFilesOf(DirectoryPaths[k]);
+      removeWrittenFilesOf(DirectoryPaths[k], DirectoryScope[k] == InterruptCleanup::MapFiles);
     }
   }
   // The default action, so the parent sees death by this signal.
@@ -250,12 +274,13 @@ void writeChecked(const std::string& temporary, const std::string& path, const s
 }
 } // namespace
 
-InterruptCleanup::InterruptCleanup(const std::string& directory)
+InterruptCleanup::InterruptCleanup(const std::string& directory, Scope scope)
 {
   for (int k = 0; k < DirectorySlots; ++k)
   {
     if (!DirectoryInUse[k] && registerPath(DirectoryPaths[k], directory))
     {
+      DirectoryScope[k] = scope;
       DirectoryInUse[k] = 1;
       this->Slot = k;
       return;
@@ -271,21 +296,18 @@ InterruptCleanup::~InterruptCleanup()
   }
 }
 
-InterruptRestore::InterruptRestore(const std::string& moved, const std::string& original)
+InterruptHold::InterruptHold()
 {
-  if (!RestoreInUse && registerPath(RestoreFrom, moved) && registerPath(RestoreTo, original))
-  {
-    RestoreInUse = 1;
-    this->Registered = true;
-  }
+  sigset_t held;
+  sigemptyset(&held);
+  sigaddset(&held, SIGINT);
+  sigaddset(&held, SIGTERM);
+  sigprocmask(SIG_BLOCK, &held, &this->Previous);
 }
 
-InterruptRestore::~InterruptRestore()
+InterruptHold::~InterruptHold()
 {
-  if (this->Registered)
-  {
-    RestoreInUse = 0;
-  }
+  sigprocmask(SIG_SETMASK, &this->Previous, nullptr);
 }
 
 void installSignalHandlers()
@@ -298,6 +320,34 @@ void installSignalHandlers()
   // Past a file size limit write() then fails with EFBIG, which is reported,
   // instead of the process dying with the temporary file left behind.
   std::signal(SIGXFSZ, SIG_IGN);
+}
+
+bool renameUnsupported(int error)
+{
+  return error == EINVAL || error == ENOSYS || error == EOPNOTSUPP;
+}
+
+int renameNoReplace(const std::string& from, const std::string& to)
+{
+  if (renameat2(AT_FDCWD, from.c_str(), AT_FDCWD, to.c_str(), RENAME_NOREPLACE) == 0)
+  {
+    return 0;
+  }
+  if (!renameUnsupported(errno))
+  {
+    return errno;
+  }
+  struct stat info;
+  if (lstat(to.c_str(), &info) == 0)
+  {
+    return EEXIST;
+  }
+  return std::rename(from.c_str(), to.c_str()) == 0 ? 0 : errno;
+}
+
+int exchangePaths(const std::string& a, const std::string& b)
+{
+  return renameat2(AT_FDCWD, a.c_str(), AT_FDCWD, b.c_str(), RENAME_EXCHANGE) == 0 ? 0 : errno;
 }
 
 void checkWritable(const std::string& path)

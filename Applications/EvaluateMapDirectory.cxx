@@ -42,10 +42,17 @@ struct MapMeshes
   std::string file(const char* stem, int i) const { return mapFile(this->directory, stem, i); }
 };
 
-// The number of inputs of the map in `directory` (common_<i>.vtp, each with
-// its mapped_<i>.vtp); 0 after printing why it is no map directory.
+// The number of inputs of the map in `directory`: as its report.json says
+// (so that verifyMapFiles names a missing file), else as many as it holds
+// common_<i>.vtp, each with its mapped_<i>.vtp; 0 after printing why it is
+// no map directory.
 int countInputs(const std::string& directory)
 {
+  if (isFile(directory + "/report.json"))
+  {
+    int n = 0;
+    return succeeds([&] { n = mapInputCount(directory); }) ? n : 0;
+  }
   const auto file = [&directory](const char* stem, int i) { return mapFile(directory, stem, i); };
   if (!isFile(file("common", 0)))
   {

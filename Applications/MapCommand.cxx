@@ -6,9 +6,9 @@
 #include "Commands.h"
 #include "EvaluationSummary.h"
 #include "Json.h"
+#include "MapDestination.h"
 #include "MapDirectory.h"
 #include "MeshFiles.h"
-#include "OutputDirectory.h"
 #include "SettingFlags.h"
 #include "Terminal.h"
 
@@ -31,6 +31,7 @@
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
+#include <memory>
 #include <sstream>
 #include <stdexcept>
 #include <system_error>
@@ -75,13 +76,18 @@ const char* const MapHelpIntro =
   "                      map's id and every file's size and MD5 checksum,\n"
   "                      which 'evaluate' and 'transfer' verify\n"
   "\n"
-  "  --output-dir DIR     where to write (created if missing; checked for\n"
-  "                       writing before computing)\n"
+  "  --output-dir DIR     where to write (created if missing). The map is\n"
+  "                       written into DIR.tmp.<pid> beside DIR (checked for\n"
+  "                       writing before computing) and put in place as a\n"
+  "                       whole when complete; other files in DIR stay. One\n"
+  "                       run at a time: a second run for DIR is refused\n"
+  "                       while one computes, and a DIR that received a map\n"
+  "                       meanwhile is not replaced without --overwrite\n"
   "  --overwrite          replace an earlier map in DIR as a whole: the new map\n"
-  "                       is written beside DIR and checked, then swapped in;\n"
-  "                       on failure the earlier map stays; other files in DIR\n"
-  "                       stay; without it a DIR holding a map is refused\n"
-  "                       before computing\n"
+  "                       is checked, then exchanged with DIR in one step;\n"
+  "                       on failure the earlier map stays; without it a DIR\n"
+  "                       holding a map (or an interrupted run's files) is\n"
+  "                       refused before computing\n"
   "  --landmarks FA FB ...\n"
   "                       one landmark file per mesh, in the same order (give\n"
   "                       the meshes first); same id = corresponding points\n"
@@ -560,24 +566,22 @@ int runMap(const std::vector<std::string>& args)
     throw UsageError{ "no input has a point array " + missing +
       " (named by --categorical or --continuous)" };
   }
-  std::string created;
-  if (!prepareOutputDirectory(arguments.outputDir, "report.json", created))
+  // Before computing: the directory's parents, this run's staging
+  // directory, and the refusals (an earlier map, another run writing it).
+  std::unique_ptr<MapDestination> destination;
+  if (!succeeds(
+        [&] {
+          destination = std::make_unique<MapDestination>(arguments.outputDir, arguments.overwrite);
+        }))
   {
     return ExitBadInput;
-  }
-  if (!arguments.overwrite && holdsMap(arguments.outputDir))
-  {
-    throw UsageError{ arguments.outputDir +
-      " holds an earlier map (report.json or common_/mapped_/embedding_ files); give "
-      "--overwrite to replace it" };
   }
   const auto start = std::chrono::steady_clock::now();
   ErrorCapture errors(map);
   const int computed = computeMap(map, inputs, errors);
   if (computed != ExitOk)
   {
-    removeCreatedDirectory(created); // created here, nothing written yet
-    return computed;
+    return computed; // the destination removes its staging directory
   }
   const double seconds =
     std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -589,13 +593,8 @@ int runMap(const std::vector<std::string>& args)
   {
     // The earlier map, if any, stays untouched until the new one is
     // complete and checked beside it (MapDestination).
-    MapDestination destination(arguments.outputDir, holdsMap(arguments.outputDir));
-    if (!destination.note().empty())
-    {
-      std::fprintf(stderr, "note: %s\n", destination.note().c_str());
-    }
-    const std::string& dir = destination.path();
-    MapWriter files(dir);
+    destination->beginWriting();
+    MapWriter files(destination->path());
     report["approximating_map"] =
       writeOutputs(map, errors, files, "common", "approximating map", inputs, true);
     map->SetOutputModeToMappedFirstInput();
@@ -603,8 +602,8 @@ int runMap(const std::vector<std::string>& args)
     map->SetOutputModeToInputEmbeddings();
     writeOutputs(map, errors, files, "embedding", nullptr, inputs, false);
     files.addToReport(report);
-    writeFileAtomically(dir + "/report.json", jsonText(report));
-    destination.commit(files.names());
+    writeFileAtomically(destination->path() + "/report.json", jsonText(report));
+    destination->commit(files.names());
   }
   catch (const std::runtime_error& e)
   {

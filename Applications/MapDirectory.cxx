@@ -3,7 +3,6 @@
 #include "AlgorithmMessages.h"
 #include "AtomicFiles.h"
 #include "MeshFiles.h"
-#include "OutputDirectory.h"
 
 #include "vtkFieldData.h"
 #include "vtkNew.h"
@@ -19,9 +18,6 @@
 #include <regex>
 #include <sstream>
 #include <stdexcept>
-
-#include <sys/stat.h>
-#include <unistd.h>
 
 namespace surfacemap
 {
@@ -70,13 +66,18 @@ void addStamp(vtkFieldData* fields, const char* name, const std::string& value)
   fields->AddArray(array);
 }
 
-// The stamp `name` of a map file, empty if unreadable or absent.
-std::string stampOf(const std::string& path, const char* name)
+// The stamp `name` of a map file, empty if unreadable or absent; `readable`
+// (if given) receives whether the file reads as a mesh at all.
+std::string stampOf(const std::string& path, const char* name, bool* readable = nullptr)
 {
   vtkNew<vtkSurfaceMeshReader> reader;
   ErrorCapture quiet(reader);
   reader->SetFileName(path.c_str());
   reader->Update();
+  if (readable)
+  {
+    *readable = quiet.messages().empty() && reader->GetOutput()->GetNumberOfPoints() > 0;
+  }
   auto* array =
     vtkUnsignedCharArray::SafeDownCast(reader->GetOutput()->GetFieldData()->GetAbstractArray(name));
   std::string text;
@@ -89,8 +90,12 @@ std::string stampOf(const std::string& path, const char* name)
 
 Json::Value readReport(const std::string& directory)
 {
-  const Json::Value root = readJsonFile(directory + "/report.json",
-    "the directory holds no complete map (was 'surfacemap map' interrupted?)");
+  if (!isFile(directory + "/report.json") && mapState(directory) == MapState::Interrupted)
+  {
+    throw std::runtime_error(interruptedRunMessage(directory));
+  }
+  const Json::Value root = readJsonFile(
+    directory + "/report.json", "the directory holds no map (written by 'surfacemap map')");
   if (!root["map_id"].isString() || !root["files"].isArray())
   {
     throw std::runtime_error(directory +
@@ -128,10 +133,9 @@ void MapWriter::write(vtkPolyData* data, const std::string& name)
   addStamp(fields, MapFileName, name);
   stamped->SetFieldData(fields);
   const std::string path = this->Directory + "/" + name;
-  writePolyDataAtomically(stamped, path);
+  const std::string bytes = polyDataFileBytes(stamped, path);
+  writeFileAtomically(path, bytes);
   this->Names.push_back(name);
-  // As on disk: what readers will compare against.
-  const std::string bytes = readBytes(path);
   Json::Value record(Json::objectValue);
   record["name"] = name;
   record["bytes"] = static_cast<Json::UInt64>(bytes.size());
@@ -156,18 +160,39 @@ bool isMapFileName(const std::string& name)
   return std::regex_match(name, pattern);
 }
 
-bool holdsMap(const std::string& directory)
+MapState mapState(const std::string& directory)
 {
+  MapState state = MapState::None;
   std::error_code error;
   for (const auto& entry : std::filesystem::directory_iterator(directory, error))
   {
     const std::string name = entry.path().filename().string();
-    if (name == "report.json" || isMapFileName(name))
+    if (name == "report.json")
     {
-      return true;
+      return MapState::Complete;
+    }
+    if (isMapFileName(name))
+    {
+      state = MapState::Interrupted;
     }
   }
-  return false;
+  return state;
+}
+
+std::string interruptedRunMessage(const std::string& directory)
+{
+  return directory +
+    " holds an interrupted run (common_/mapped_/embedding_ files, no report.json): give "
+    "--overwrite or remove it";
+}
+
+int mapInputCount(const std::string& directory)
+{
+  if (!isFile(directory + "/report.json") && mapState(directory) == MapState::Interrupted)
+  {
+    throw std::runtime_error(interruptedRunMessage(directory));
+  }
+  return static_cast<int>(mapReportInputs(directory + "/report.json").size());
 }
 
 void removeMap(const std::string& directory)
@@ -245,8 +270,15 @@ void verifyMapFiles(const std::string& directory, const std::vector<std::string>
     {
       continue;
     }
-    const std::string fileId = stampOf(path, MapIdName);
+    bool readable = false;
+    const std::string fileId = stampOf(path, MapIdName, &readable);
     const std::string fileName = stampOf(path, MapFileName);
+    if (!readable)
+    {
+      throw std::runtime_error(path + " is damaged or truncated: it does not read as a mesh (" +
+        std::to_string(bytes.size()) + " bytes, " + directory + "/report.json records " +
+        std::to_string((*record)["bytes"].asUInt64()) + ")");
+    }
     if (fileId != id)
     {
       throw std::runtime_error(path + " belongs to another map (map id " +
@@ -263,134 +295,6 @@ void verifyMapFiles(const std::string& directory, const std::vector<std::string>
       "checksum differs from " +
       directory + "/report.json)");
   }
-}
-
-namespace
-{
-// Why DIR cannot be swapped by renames; empty if it can.
-std::string whyNotSwappable(const std::filesystem::path& directory)
-{
-  std::error_code ec;
-  const std::filesystem::path cwd = std::filesystem::current_path(ec);
-  if (!ec)
-  {
-    const auto relative = cwd.lexically_relative(directory);
-    if (!relative.empty() && *relative.begin() != "..")
-    {
-      return "it is or holds the working directory";
-    }
-  }
-  struct stat self, parent;
-  if (stat(directory.c_str(), &self) != 0 || stat(directory.parent_path().c_str(), &parent) != 0 ||
-    self.st_dev != parent.st_dev)
-  {
-    return "it is a mount point";
-  }
-  if (access(directory.parent_path().c_str(), W_OK) != 0)
-  {
-    return "its parent directory is not writable";
-  }
-  return "";
-}
-
-std::string withPid(const std::filesystem::path& directory, const char* kind)
-{
-  return directory.string() + "." + kind + "." + std::to_string(getpid());
-}
-} // namespace
-
-MapDestination::MapDestination(const std::string& directory, bool replacing)
-  : Directory(directory)
-  , Path(directory)
-{
-  if (!replacing)
-  {
-    return;
-  }
-  std::error_code ec;
-  // A symbolic link keeps pointing at the directory's path, which then holds the new map.
-  const std::filesystem::path real = std::filesystem::canonical(directory, ec);
-  const std::string why = ec ? ec.message() : whyNotSwappable(real);
-  if (!why.empty())
-  {
-    this->Note = "the earlier map in " + directory + " is removed before the new one is written (" +
-      why + ": it cannot be replaced as a whole)";
-    // No reader takes a directory without report.json for a map, and the
-    // new report lists only the new files: an interruption from here on
-    // leaves no map rather than a mix of two.
-    removeMap(directory);
-    return;
-  }
-  this->Directory = real.string();
-  this->Path = withPid(real, "tmp");
-  std::filesystem::remove_all(this->Path, ec); // a leftover of a killed run with this pid
-  this->Cleanup = std::make_unique<InterruptCleanup>(this->Path);
-  this->Staged = true;
-  createOutputDirectory(this->Path, "report.json");
-}
-
-MapDestination::~MapDestination()
-{
-  if (this->Staged && !this->Committed)
-  {
-    std::error_code ec;
-    std::filesystem::remove_all(this->Path, ec);
-  }
-}
-
-void MapDestination::commit(const std::vector<std::string>& names)
-{
-  verifyMapFiles(this->Path, names);
-  if (!this->Staged)
-  {
-    this->Committed = true;
-    return;
-  }
-  namespace fs = std::filesystem;
-  const std::string old = withPid(this->Directory, "old");
-  std::error_code ec;
-  fs::remove_all(old, ec);
-  {
-    InterruptRestore restore(old, this->Directory);
-    fs::rename(this->Directory, old, ec);
-    if (ec)
-    {
-      throw std::runtime_error("cannot move the earlier map in " + this->Directory +
-        " aside: " + ec.message() + " (it is unchanged)");
-    }
-    fs::rename(this->Path, this->Directory, ec);
-    if (ec)
-    {
-      const std::string reason = ec.message();
-      fs::rename(old, this->Directory, ec);
-      throw std::runtime_error("cannot move the new map into " + this->Directory + ": " + reason +
-        (ec ? " (the earlier map is in " + old + ")" : " (the earlier map is unchanged)"));
-    }
-  }
-  this->Committed = true;
-  this->Cleanup.reset(); // the staging directory is DIR now
-  InterruptCleanup removeOld(old);
-  // What the directory held besides the earlier map stays in it.
-  bool carried = true;
-  for (const auto& entry : fs::directory_iterator(old, ec))
-  {
-    const std::string name = entry.path().filename().string();
-    if (name == "report.json" || isMapFileName(name))
-    {
-      continue;
-    }
-    std::error_code moved;
-    fs::rename(entry.path(), fs::path(this->Directory) / name, moved);
-    carried = carried && !moved;
-  }
-  if (!carried || ec)
-  {
-    throw std::runtime_error("the new map is in " + this->Directory +
-      ", but not every other file of the earlier directory could be moved into it: they are "
-      "in " +
-      old);
-  }
-  fs::remove_all(old, ec);
 }
 
 } // namespace surfacemap

@@ -41,9 +41,13 @@ const char* const LandmarkFormatsHelp =
   "  .csv               'x,y,z' or 'x,y,z,id' per line, or columns named by a\n"
   "                     header line (x, y, z, id, label)\n"
   "  .fcsv              3D Slicer markups CSV ('#' comment lines, columns\n"
-  "                     id,x,y,z,...; integer ids are used, node names are not)\n"
+  "                     id,x,y,z,...)\n"
   "  .mrk.json          3D Slicer markups JSON: markups[0].controlPoints, each\n"
-  "                     with a position (and optional integer id and label)\n"
+  "                     with a position (and optional id and label)\n"
+  "                     Slicer ids: integers (0 to 2147483647) on every point\n"
+  "                     are the ids; node names (vtkMRMLMarkups...) on every\n"
+  "                     point mean the file order; a mix, or another number,\n"
+  "                     is refused\n"
   "A point becomes the closest vertex of its mesh; the snap distance is\n"
   "printed (and recorded in report.json by 'map'), with a warning when it\n"
   "exceeds 1 % of the mesh's bounding-box diagonal. Points are read in the\n"
@@ -160,7 +164,7 @@ bool isFile(const std::string& path)
   return std::filesystem::is_regular_file(path, ec);
 }
 
-void writePolyDataAtomically(vtkPolyData* data, const std::string& path)
+std::string polyDataFileBytes(vtkPolyData* data, const std::string& path)
 {
   // Into memory first: the XML writer does not notice every failed write
   // (a full disk), so the bytes go to the file through writeFileAtomically.
@@ -180,7 +184,12 @@ void writePolyDataAtomically(vtkPolyData* data, const std::string& path)
         ? "the XML writer failed (VTK error code " + std::to_string(code) + ")"
         : errors.messages().front());
   }
-  writeFileAtomically(path, writer->GetOutputString());
+  return writer->GetOutputString();
+}
+
+void writePolyDataAtomically(vtkPolyData* data, const std::string& path)
+{
+  writeFileAtomically(path, polyDataFileBytes(data, path));
 }
 
 void writeMeshAtomically(vtkPolyData* data, const std::string& path)

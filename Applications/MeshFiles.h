@@ -44,6 +44,11 @@ Json::Value landmarkSnapJson(vtkPolyData* mesh);
 /// True if `path` is a regular file (false on any error).
 bool isFile(const std::string& path);
 
+/// `data` as the bytes of a VTK XML PolyData file (appended raw, zlib), as
+/// writePolyDataAtomically writes them. Throws std::runtime_error naming
+/// `path` when the XML writer fails.
+std::string polyDataFileBytes(vtkPolyData* data, const std::string& path);
+
 /// Writes VTK XML PolyData (also checking the writer's own error code)
 /// through writeFileAtomically, so a failed or interrupted write never leaves
 /// a half-written file. Throws std::runtime_error naming the file on failure.

@@ -18,10 +18,12 @@
 #include "vtkSmartPointer.h"
 #include "vtkSurfaceShapeStatistics.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <iomanip>
+#include <limits>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -40,7 +42,9 @@ const char* const StatisticsHelp =
   "mean (area-weighted; the mean does not depend on the order of the\n"
   "specimens), then the principal modes of variation. MAPDIR is an output\n"
   "directory of 'surfacemap map': its common_<i>.vtp, one per input its\n"
-  "report.json lists (the common triangulation lifted onto each specimen).\n"
+  "report.json lists (the common triangulation lifted onto each specimen),\n"
+  "each checked against report.json as 'evaluate' does (a missing, stale,\n"
+  "swapped or changed file is refused by name).\n"
   "Otherwise give two or more meshes of one connectivity.\n"
   "\n"
   "Variances, scores and modes use the area-weighted inner product (vertex\n"
@@ -54,13 +58,14 @@ const char* const StatisticsHelp =
   "  --align MODE       rigid (default: size is part of the variation),\n"
   "                     similarity (also a uniform scale: shape alone) or none\n"
   "  --frames F         frames of each mode's animation, from -2 to +2\n"
-  "                     standard deviations (default 9, at least 2)\n"
+  "                     standard deviations (default 9, from 2 to 1000)\n"
   "  --pictures         also write the PNGs below, rendered with VTK through\n"
   "                     OpenGL: this needs a display (on a machine without\n"
   "                     one run under 'xvfb-run -a'); without a display the\n"
   "                     command stops with exit code 2 before computing\n"
   "\n"
-  "Writes, each file atomically:\n"
+  "Writes, each file atomically, the frames and the files naming them put in\n"
+  "place together at the end (an interrupted run leaves none of them):\n"
   "  DIR/mean.vtp                  the mean shape with the point arrays\n"
   "                                StandardDeviation (per vertex: RMS distance\n"
   "                                of the aligned specimens to the mean) and\n"
@@ -96,24 +101,31 @@ struct StatisticsArguments
   bool pictures = false;
 };
 
-int integerValue(const std::string& option, const std::string& text, int lowest)
+// Animation frames per mode: enough for any smooth animation, and a bound
+// on what a mistyped number writes (1000 frames of a mode is 1000 files).
+constexpr int MaxFrames = 1000;
+
+int integerValue(const std::string& option, const std::string& text, int lowest, int highest)
 {
   std::size_t used = 0;
-  int value = 0;
+  long long value = 0;
   try
   {
-    value = std::stoi(text, &used);
+    value = std::stoll(text, &used);
   }
   catch (const std::exception&)
   {
     used = 0;
   }
-  if (used != text.size() || value < lowest)
+  if (used != text.size() || value < lowest || value > highest)
   {
-    throw UsageError{ option + " needs an integer >= " + std::to_string(lowest) + ", not '" + text +
-      "'" };
+    throw UsageError{ option + " needs an integer " +
+      (highest == std::numeric_limits<int>::max()
+          ? ">= " + std::to_string(lowest)
+          : "from " + std::to_string(lowest) + " to " + std::to_string(highest)) +
+      ", not '" + text + "'" };
   }
-  return value;
+  return static_cast<int>(value);
 }
 
 StatisticsArguments parseArguments(const std::vector<std::string>& args)
@@ -128,11 +140,12 @@ StatisticsArguments parseArguments(const std::vector<std::string>& args)
     }
     else if (a == "--modes")
     {
-      parsed.modes = integerValue(a, optionValue(args, i, "a number"), 1);
+      parsed.modes =
+        integerValue(a, optionValue(args, i, "a number"), 1, std::numeric_limits<int>::max());
     }
     else if (a == "--frames")
     {
-      parsed.frames = integerValue(a, optionValue(args, i, "a number"), 2);
+      parsed.frames = integerValue(a, optionValue(args, i, "a number"), 2, MaxFrames);
     }
     else if (a == "--align")
     {
@@ -179,8 +192,8 @@ StatisticsArguments parseArguments(const std::vector<std::string>& args)
 }
 
 // The specimen files: a map directory's common_<i>.vtp (one per input its
-// report.json lists) or the meshes given. Throws std::runtime_error naming
-// what is missing.
+// report.json lists, each checked against it as 'evaluate' does) or the
+// meshes given. Throws std::runtime_error naming what is missing or wrong.
 std::vector<std::string> specimenFiles(const std::vector<std::string>& sources)
 {
   std::error_code ec;
@@ -189,17 +202,14 @@ std::vector<std::string> specimenFiles(const std::vector<std::string>& sources)
     return sources;
   }
   const std::string& directory = sources[0];
-  const std::size_t n = mapReportInputs(directory + "/report.json").size();
-  std::vector<std::string> files;
-  for (std::size_t i = 0; i < n; ++i)
+  const int n = mapInputCount(directory);
+  std::vector<std::string> names, files;
+  for (int i = 0; i < n; ++i)
   {
-    files.push_back(directory + "/" + mapFileName("common", static_cast<int>(i)));
-    if (!isFile(files.back()))
-    {
-      throw std::runtime_error(directory + "/report.json lists " + std::to_string(n) +
-        " inputs but " + files.back() + " is missing");
-    }
+    names.push_back(mapFileName("common", i));
+    files.push_back(directory + "/" + names.back());
   }
+  verifyMapFiles(directory, names);
   return files;
 }
 
@@ -285,7 +295,7 @@ void writeModeAnimation(vtkSurfaceShapeStatistics* statistics,
 {
   const std::string stem = "mode_" + std::to_string(mode);
   std::filesystem::create_directories(dir + "/" + stem);
-  const int digits = frames > 1000 ? static_cast<int>(std::to_string(frames - 1).size()) : 3;
+  const int digits = std::max(3, static_cast<int>(std::to_string(frames - 1).size()));
   std::ostringstream pvd;
   pvd << "<?xml version=\"1.0\"?>\n"
          "<VTKFile type=\"Collection\" version=\"0.1\" byte_order=\"LittleEndian\">\n"
@@ -366,6 +376,12 @@ void printModes(vtkPolyData* mean, std::size_t specimens)
 // Writes mean.vtp, each mode's animation, scores.csv, variance.csv and, with
 // --pictures, the pictures into the output directory. Throws
 // std::runtime_error naming a file that cannot be written.
+//
+// Everything but the pictures is written into a staging directory first and
+// moved into place at the end, frames before the files naming them: an
+// interrupted run (a signal, a full disk, a failed frame) leaves no frames
+// without mode_<m>.pvd, scores.csv and variance.csv, and no index file
+// without its frames.
 void writeResults(vtkSurfaceShapeStatistics* statistics,
   ErrorCapture& errors,
   vtkPolyData* mean,
@@ -375,13 +391,23 @@ void writeResults(vtkSurfaceShapeStatistics* statistics,
   const std::vector<double> fractions = fieldValues(mean, "ExplainedVarianceFraction");
   const int modes = static_cast<int>(fractions.size());
   const std::string& dir = arguments.outputDir;
-  writePolyDataAtomically(mean, dir + "/mean.vtp");
+  StagingDirectory staging(dir, "statistics");
+  std::vector<std::string> frames, indexes;
   for (int m = 1; m <= modes; ++m)
   {
-    writeModeAnimation(statistics, errors, dir, m, arguments.frames);
+    writeModeAnimation(statistics, errors, staging.path(), m, arguments.frames);
+    frames.push_back("mode_" + std::to_string(m));
+    indexes.push_back("mode_" + std::to_string(m) + ".pvd");
   }
-  writeFileAtomically(dir + "/scores.csv", scoresTable(mean, files, modes));
-  writeFileAtomically(dir + "/variance.csv", varianceTable(mean));
+  writePolyDataAtomically(mean, staging.path() + "/mean.vtp");
+  writeFileAtomically(staging.path() + "/scores.csv", scoresTable(mean, files, modes));
+  writeFileAtomically(staging.path() + "/variance.csv", varianceTable(mean));
+  std::vector<std::string> order = frames;
+  order.push_back("mean.vtp");
+  order.insert(order.end(), indexes.begin(), indexes.end());
+  order.push_back("scores.csv");
+  order.push_back("variance.csv");
+  staging.publish(order);
   if (arguments.pictures)
   {
     writeExplainedVariancePicture(fractions, dir + "/explained_variance.png");

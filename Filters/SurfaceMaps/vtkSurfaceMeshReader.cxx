@@ -383,25 +383,38 @@ surfacemaps::LandmarkRecord controlPointRecord(const Json::Value& point,
   return record;
 }
 
-// Slicer's ids are strings ("1") or node names; integers >= 0 are ids, and
-// anything else is -1 (no id).
-long long controlPointId(const Json::Value& point)
+// Slicer's ids are strings ("1") or node names (markupLandmarkId), or
+// numbers; `text` receives the id as the file gives it, for messages.
+long long controlPointId(const Json::Value& point,
+  const std::string& which,
+  const JsonFile& file,
+  std::string& text)
 {
-  long long id = -1;
   const Json::Value& given = point["id"];
-  if (given.isString() && !surfacemaps::parseInt(given.asString(), id))
+  std::ostringstream number;
+  number.precision(17);
+  if (given.isString())
   {
-    id = -1;
+    text = given.asString();
   }
-  else if (given.isInt())
+  else if (given.isInt64())
   {
-    id = given.asInt();
+    text = std::to_string(given.asInt64());
   }
-  if (id > std::numeric_limits<int>::max())
+  else if (given.isUInt64())
   {
-    id = -1;
+    text = std::to_string(given.asUInt64());
   }
-  return id;
+  else if (given.isNumeric())
+  {
+    number << given.asDouble();
+    text = number.str();
+  }
+  else if (!given.isNull())
+  {
+    file.fail(given, which + " has an id that is neither a string nor a number");
+  }
+  return surfacemaps::markupLandmarkId(text, which, file.Path, file.lineOf(point));
 }
 
 // 3D Slicer's markups JSON (.mrk.json): markups[0].controlPoints[i] with
@@ -414,13 +427,15 @@ std::vector<surfacemaps::LandmarkRecord> parseMarkupsJsonValues(const std::strin
   const Json::Value& points = markupControlPoints(root, file);
   std::vector<surfacemaps::LandmarkRecord> records;
   std::vector<long long> ids;
+  std::vector<std::string> idTexts(points.size());
   for (Json::ArrayIndex k = 0; k < points.size(); ++k)
   {
     const Json::Value& point = points[k];
-    records.push_back(controlPointRecord(point, "control point " + std::to_string(k), file));
-    ids.push_back(controlPointId(point));
+    const std::string which = "control point " + std::to_string(k);
+    records.push_back(controlPointRecord(point, which, file));
+    ids.push_back(controlPointId(point, which, file, idTexts[k]));
   }
-  surfacemaps::finishLandmarkIds(records, ids, path);
+  surfacemaps::finishLandmarkIds(records, ids, path, idTexts);
   return records;
 }
 

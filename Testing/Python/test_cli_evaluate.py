@@ -166,7 +166,7 @@ def test_missing_files_are_named(map_dir, tmp_path):
     shutil.copytree(map_dir, copy)
     (copy / "mapped_1.vtp").unlink()
     r = run("evaluate", copy)
-    assert r.returncode == 2 and "has common_1.vtp but no mapped_1.vtp" in r.stderr
+    assert r.returncode == 2 and f"{copy / 'mapped_1.vtp'} is missing ({copy}/report.json lists it)" in r.stderr
 
     copy = tmp_path / "moved_input"
     shutil.copytree(map_dir, copy)

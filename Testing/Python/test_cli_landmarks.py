@@ -98,6 +98,25 @@ def test_ids_are_the_given_integer_ids_or_the_file_order(tmp_path):
     assert landmark_ids(tmp_path / "order.vtp") == {vertex: 3 - k for vertex, k in expected.items()}
 
 
+def test_slicer_files_with_one_unusable_id_are_refused(tmp_path):
+    """Ids 3, 2, 1 and one node name (or one id beyond the integer range) used to be read as
+    0..3 in file order, silently permuting the landmarks: now the file is refused by line and id."""
+    rows = blob_landmarks()
+    ids = ["3", "2", "1", "vtkMRMLMarkupsFiducialNode_3"]
+    fcsv = tmp_path / "mixed.fcsv"
+    fcsv.write_text("# columns = id,x,y,z,ow,ox,oy,oz,vis,sel,lock,label,desc,associatedNodeID\n" +
+                    "".join(f"{i},{x!r},{y!r},{z!r},0,0,0,1,1,1,0,F,,\n" for i, (_, x, y, z) in zip(ids, rows)))
+    points = [{"id": i, "position": [x, y, z]} for i, (_, x, y, z) in zip(["3", "2", "1", "99999999999"], rows)]
+    markups = tmp_path / "huge.mrk.json"
+    markups.write_text(json.dumps({"markups": [{"controlPoints": points}]}, indent=1))
+    for path, message in ((fcsv, ":5: the id 'vtkMRMLMarkupsFiducialNode_3' is no landmark id (an integer >= 0), "
+                                 "but line 2 gives one (3)"),
+                          (markups, ":29: control point 3 has the id '99999999999', which is no landmark id")):
+        r = run("check", data("blob.off"), "--landmarks", path)
+        assert r.returncode == 2, (r.stdout, r.stderr)
+        assert f"surfacemap: error: {path}{message}" in r.stderr, r.stderr
+
+
 MALFORMED = [
     ("bad.csv", "1,2,3\n1,2\n", ":2: expected x,y,z or x,y,z,id, got 2 values"),
     ("bad.csv", "1,2,3,0\n4,5,6,0\n", ":2: landmark id 0 is given twice (also on line 1)"),

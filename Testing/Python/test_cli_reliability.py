@@ -84,19 +84,23 @@ def test_stdout_write_error_is_reported():
 
 @pytest.mark.parametrize("signum", [signal.SIGTERM, signal.SIGINT], ids=["SIGTERM", "SIGINT"])
 def test_signal_removes_the_temporary_file(tmp_path, signum):
-    """A FIFO stands in for the temporary file of common_0.vtp: the map blocks writing it
-    (a 4 KiB pipe nobody reads), so the signal arrives while the temporary file exists."""
+    """A FIFO stands in for the temporary file of common_0.vtp in the run's staging directory
+    (made while the map computes): the map blocks writing it (a 4 KiB pipe nobody reads), so
+    the signal arrives while the temporary file exists. The staging directory goes with it."""
+    import time
     out = tmp_path / "map"
     out.mkdir()
-
-    def make_fifo():
-        os.mkfifo(out / f"common_0.vtp.tmp.{os.getpid()}")
     process = subprocess.Popen([CLI, "map", data("ellipsoid.obj"), data("blob.off"), "--output-dir", out,
-                                *SHORT], stdout=subprocess.DEVNULL, stderr=subprocess.PIPE,
-                               preexec_fn=make_fifo)
-    fifo = out / f"common_0.vtp.tmp.{process.pid}"
-    reader = os.open(fifo, os.O_RDONLY | os.O_NONBLOCK)
+                                *SHORT], stdout=subprocess.DEVNULL, stderr=subprocess.PIPE)
+    staging = tmp_path / f"map.tmp.{process.pid}"
+    fifo = staging / f"common_0.vtp.tmp.{process.pid}"
+    reader = None
     try:
+        deadline = time.monotonic() + 120
+        while process.poll() is None and not staging.exists() and time.monotonic() < deadline:
+            time.sleep(0.001)
+        os.mkfifo(fifo)
+        reader = os.open(fifo, os.O_RDONLY | os.O_NONBLOCK)
         import fcntl
         fcntl.fcntl(reader, 1031, 4096)  # F_SETPIPE_SZ: the writer blocks after 4 KiB
         ready, _, _ = select.select([reader], [], [], 120)
@@ -105,14 +109,15 @@ def test_signal_removes_the_temporary_file(tmp_path, signum):
         process.send_signal(signum)
         process.wait(timeout=60)
     finally:
-        os.close(reader)
+        if reader is not None:
+            os.close(reader)
         if process.poll() is None:
             process.kill()
             process.wait()
     assert process.returncode == -signum, process.stderr.read()
     assert not fifo.exists()
-    assert leftovers(out) == []
-    assert not (out / "common_0.vtp").exists()
+    assert not staging.exists()
+    assert os.listdir(out) == []
 
 
 # Defect 2: 64-bit vertex ids are rejected, never wrapped.
@@ -496,7 +501,8 @@ def test_missing_report_or_file_is_refused(two_maps, tmp_path):
     (incomplete / "report.json").unlink()
     for r in transfer_and_evaluate(incomplete, tmp_path):
         assert r.returncode == 2, (r.stdout, r.stderr)
-        assert "report.json is missing: the directory holds no complete map" in r.stderr
+        assert (f"{incomplete} holds an interrupted run (common_/mapped_/embedding_ files, no report.json): "
+                "give --overwrite or remove it") in r.stderr
 
 
 def test_map_refuses_an_earlier_map_without_overwrite(two_maps, tmp_path):
@@ -601,6 +607,201 @@ def test_overwrite_swaps_in_a_complete_map_and_keeps_other_files(two_maps, tmp_p
     assert r.returncode == 0 and e.returncode == 0, (r.stderr, e.stderr)
 
 
+# One writer per map directory: every run stages its map beside the directory and publishes it
+# as a whole; a second run is refused, and nothing is left half written or beside it.
+
+def map_process(out, *meshes, schedule=NO_ITERATIONS, extra=()):
+    """`surfacemap map MESHES --output-dir OUT`, started (not waited for)."""
+    return subprocess.Popen([CLI, "map", *map(str, meshes), "--output-dir", str(out), *schedule, *extra],
+                            stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+
+
+def wait_for(path, process, seconds=240):
+    """Polls (every ms) until `path` exists or `process` ends; whether it exists."""
+    import time
+    deadline = time.monotonic() + seconds
+    while process.poll() is None and not os.path.exists(path) and time.monotonic() < deadline:
+        time.sleep(0.001)
+    return os.path.exists(path)
+
+
+def complete_map(directory):
+    """The report of the one complete map `directory` holds: exactly the files report.json lists
+    (and report.json), each of the recorded size and checksum."""
+    import hashlib
+    import json
+    report = json.loads((directory / "report.json").read_text())
+    names = {record["name"] for record in report["files"]}
+    assert sorted(os.listdir(directory)) == sorted(names | {"report.json"})
+    for record in report["files"]:
+        content = (directory / record["name"]).read_bytes()
+        assert (len(content), hashlib.md5(content).hexdigest()) == (record["bytes"], record["md5"]), record
+    return report
+
+
+def test_two_runs_into_one_new_directory_leave_one_complete_map(tmp_path):
+    """`map A B --output-dir D & map A C --output-dir D` (both started at once), 20 rounds, or
+    as many as fit in 120 s (the sanitizer build is slower): D holds exactly one complete map,
+    that of the run that exits 0; the other exits 2 saying why; nothing is left beside D."""
+    import time
+    second = [data("blob.off"), data("ellipsoid_coarse.stl")]
+    deadline = time.monotonic() + 120
+    rounds = 0
+    while rounds < 20 and time.monotonic() < deadline:
+        out = tmp_path / f"D{rounds}"
+        processes = [map_process(out, data("ellipsoid.obj"), mesh) for mesh in second]
+        results = [(p.communicate(timeout=240), p.returncode) for p in processes]
+        codes = [code for _, code in results]
+        assert sorted(codes) == [0, 2], results
+        winner = codes.index(0)
+        refusal = results[1 - winner][0][1]
+        assert any(reason in refusal for reason in (
+            "another 'surfacemap map' (pid", "holds an earlier map", "now holds a map that another run wrote")), refusal
+        report = complete_map(out)
+        assert report["inputs"][1]["file"] == os.path.abspath(second[winner])
+        assert siblings_left_behind(tmp_path) == []
+        rounds += 1
+    assert rounds >= 5
+
+
+def test_a_second_run_is_refused_while_the_first_computes(tmp_path):
+    target = tmp_path / "D"
+    first = map_process(target, data("ellipsoid.obj"), data("blob.off"), schedule=SHORT)
+    assert wait_for(tmp_path / f"D.tmp.{first.pid}", first)
+    r = run("map", data("ellipsoid.obj"), data("blob.off"), "--output-dir", target, *NO_ITERATIONS)
+    still_running = first.poll() is None
+    _, err = first.communicate(timeout=240)
+    assert first.returncode == 0, err
+    assert r.returncode == 2, (r.stdout, r.stderr)
+    if still_running:  # otherwise the first had published its map: "holds an earlier map"
+        assert (f"another 'surfacemap map' (pid {first.pid}) is writing a map into {target}: wait for it "
+                "to finish, or choose another --output-dir") in r.stderr, r.stderr
+        assert "map of" not in r.stdout  # refused before computing
+    complete_map(target)
+    assert siblings_left_behind(tmp_path) == []
+
+
+def test_a_map_that_appears_while_a_run_computes_is_not_replaced(two_maps, tmp_path):
+    """Another map is put at D (not by a surfacemap run) while a run for D computes: the run
+    refuses to replace it without --overwrite, and leaves it byte for byte."""
+    import shutil
+    target = tmp_path / "D"
+    process = map_process(target, data("ellipsoid.obj"), data("blob.off"), schedule=SHORT)
+    assert wait_for(tmp_path / f"D.tmp.{process.pid}", process)
+    other = copy_map(two_maps[1], tmp_path / "other")
+    before = {name: (other / name).read_bytes() for name in os.listdir(other)}
+    try:
+        os.rename(other, target)
+        placed = True
+    except OSError:  # the run was first
+        placed = False
+        shutil.rmtree(other)
+    _, err = process.communicate(timeout=240)
+    assert siblings_left_behind(tmp_path) == []
+    if not placed:
+        assert process.returncode == 0, err
+        complete_map(target)
+        return
+    assert process.returncode == 2, err
+    assert (f"{target} now holds a map that another run wrote while this one computed: this map is not "
+            "written (give --overwrite to replace that one)") in err
+    assert {name: (target / name).read_bytes() for name in os.listdir(target)} == before
+
+
+def test_what_killed_runs_left_beside_the_directory_is_cleaned_up(two_maps, tmp_path):
+    """SIGKILL (no handler runs) leaves the staging directory D.tmp.<pid>: the next run removes
+    it, with a note. A run killed between exchanging D and carrying the user's files over left
+    them in D.tmp.<pid> with the earlier map: they come back into D. An earlier version killed
+    between its two renames left no D and the earlier map in D.old.<pid>: it becomes D again."""
+    target = tmp_path / "D"
+    process = map_process(target, data("ellipsoid.obj"), data("blob.off"))
+    staging = tmp_path / f"D.tmp.{process.pid}"
+    assert wait_for(staging, process)
+    process.kill()
+    process.communicate()
+    if process.returncode == -signal.SIGKILL:
+        assert staging.exists()
+    r = run("map", data("ellipsoid.obj"), data("blob.off"), "--output-dir", target, "--overwrite",
+            *NO_ITERATIONS)
+    assert r.returncode == 0, r.stderr
+    if process.returncode == -signal.SIGKILL:
+        assert (f"note: removed {staging}, left by an interrupted 'surfacemap map' (pid {process.pid})"
+                in r.stderr), r.stderr
+    assert siblings_left_behind(tmp_path) == []
+    complete_map(target)
+
+    left = copy_map(two_maps[1], tmp_path / "D.tmp.999999999")
+    (left / "notes.txt").write_text("mine")
+    r = run("map", data("ellipsoid.obj"), data("blob.off"), "--output-dir", target, "--overwrite",
+            *NO_ITERATIONS)
+    assert r.returncode == 0, r.stderr
+    assert f"note: removed {left}" in r.stderr, r.stderr
+    assert (target / "notes.txt").read_text() == "mine"
+    assert siblings_left_behind(tmp_path) == []
+
+    import shutil
+    shutil.rmtree(target)
+    old = copy_map(two_maps[0], tmp_path / "D.old.999999998")
+    before = {name: (old / name).read_bytes() for name in os.listdir(old)}
+    r = run("map", data("ellipsoid.obj"), data("blob.off"), "--output-dir", target, *NO_ITERATIONS)
+    assert r.returncode == 2, r.stderr
+    assert f"note: restored {target} from {old}" in r.stderr, r.stderr
+    assert "holds an earlier map" in r.stderr
+    assert {name: (target / name).read_bytes() for name in os.listdir(target)} == before
+    assert siblings_left_behind(tmp_path) == []
+
+
+def test_an_interrupted_run_is_named_as_such_everywhere(two_maps, tmp_path):
+    """Map files without report.json (a run interrupted where it writes in place, or files put
+    there by hand): every command says "interrupted run", and --overwrite replaces them."""
+    interrupted = copy_map(two_maps[0], tmp_path / "interrupted")
+    (interrupted / "report.json").unlink()
+    message = (f"{interrupted} holds an interrupted run (common_/mapped_/embedding_ files, no report.json): "
+               "give --overwrite or remove it")
+    for r in (*transfer_and_evaluate(interrupted, tmp_path),
+              run("statistics", interrupted, "--output-dir", tmp_path / "statistics"),
+              run("map", data("ellipsoid.obj"), data("blob.off"), "--output-dir", interrupted, *NO_ITERATIONS)):
+        assert r.returncode == 2, (r.args, r.stdout, r.stderr)
+        assert message in r.stderr, (r.args, r.stderr)
+        assert "map of" not in r.stdout
+    r = run("map", data("ellipsoid.obj"), data("blob.off"), "--output-dir", interrupted, "--overwrite",
+            *NO_ITERATIONS)
+    assert r.returncode == 0, r.stderr
+    complete_map(interrupted)
+
+
+def test_a_truncated_or_deleted_map_file_is_named(two_maps, tmp_path):
+    damaged = copy_map(two_maps[0], tmp_path / "damaged")
+    content = (damaged / "common_1.vtp").read_bytes()
+    (damaged / "common_1.vtp").write_bytes(content[:len(content) // 2])
+    for r in transfer_and_evaluate(damaged, tmp_path):
+        assert r.returncode == 2, (r.stdout, r.stderr)
+        assert f"{damaged / 'common_1.vtp'} is damaged or truncated: it does not read as a mesh" in r.stderr
+    (damaged / "common_1.vtp").unlink()
+    r = run("evaluate", damaged, "--output-dir", tmp_path / "evaluation")
+    assert r.returncode == 2, (r.stdout, r.stderr)
+    assert f"{damaged / 'common_1.vtp'} is missing ({damaged}/report.json lists it)" in r.stderr
+
+
+# Every reader of a map directory checks what it reads: statistics as evaluate does.
+
+def test_statistics_refuses_a_swapped_or_stale_common_file(two_maps, tmp_path):
+    import shutil
+    swapped = copy_map(two_maps[0], tmp_path / "swapped")
+    shutil.copy(swapped / "common_0.vtp", swapped / "common_1.vtp")
+    r = run("statistics", swapped, "--output-dir", tmp_path / "stats")
+    assert r.returncode == 2, (r.stdout, r.stderr)
+    assert f"{swapped / 'common_1.vtp'} is common_0.vtp of this map, not common_1.vtp: swapped or renamed" in r.stderr
+    assert "total variance" not in r.stdout
+    stale = copy_map(two_maps[0], tmp_path / "stale")
+    shutil.copy(two_maps[1] / "common_1.vtp", stale / "common_1.vtp")
+    r = run("statistics", stale, "--output-dir", tmp_path / "stats")
+    assert r.returncode == 2 and "belongs to another map" in r.stderr, r.stderr
+    assert not (tmp_path / "stats").exists()
+    r = run("statistics", two_maps[0], "--output-dir", tmp_path / "stats")
+    assert r.returncode == 0, r.stderr
+
+
 # Weak spot: landmarks that are the mirror image of input 0's are warned about, by name.
 
 def mirrored_blob(tmp_path):
@@ -645,7 +846,7 @@ def test_python_transfer_refuses_what_the_command_line_refuses(two_maps, tmp_pat
     with pytest.raises(surfacemaps.InputError, match="embedding_1.vtp belongs to another map"):
         surfacemaps.transfer(mixed, 0, 1)
     (mixed / "report.json").unlink()
-    with pytest.raises(surfacemaps.InputError, match="report.json is missing"):
+    with pytest.raises(surfacemaps.InputError, match="holds an interrupted run .* give --overwrite or remove it"):
         surfacemaps.transfer(mixed, 0, 1)
     assert surfacemaps.transfer(two_maps[0], 0, 1).GetNumberOfPoints() > 0
 

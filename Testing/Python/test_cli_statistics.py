@@ -131,13 +131,55 @@ def test_statistics_errors(population, tmp_path):
     result = run("statistics", *population, "--output-dir", out, "--align", "affine")
     assert result.returncode == 2 and "--align is rigid, similarity or none" in result.stderr
     result = run("statistics", *population, "--output-dir", out, "--frames", "1")
-    assert result.returncode == 2 and "--frames needs an integer >= 2" in result.stderr
+    assert result.returncode == 2 and "--frames needs an integer from 2 to 1000" in result.stderr
+    # A bound on what a mistyped number writes, said in --help.
+    result = run("statistics", *population, "--output-dir", out, "--frames", "1000000000")
+    assert result.returncode == 2 and "--frames needs an integer from 2 to 1000, not '1000000000'" in result.stderr
+    assert not out.exists()
     result = run("statistics", *population)
     assert result.returncode == 2 and "--output-dir" in result.stderr
     result = run("statistics", tmp_path, "--output-dir", out)
     assert result.returncode == 2 and "report.json" in result.stderr
     help_text = run("statistics", "--help")
     assert help_text.returncode == 0 and "--pictures" in help_text.stdout and "xvfb-run" in help_text.stdout
+    assert "(default 9, from 2 to 1000)" in help_text.stdout
+
+
+def test_an_interrupted_run_leaves_no_frames_without_their_index_files(population, tmp_path):
+    """SIGTERM while the frames are being written (polled every ms): the frames were staged
+    (DIR/statistics.tmp.<pid>) and go with it; nothing of the run is left in DIR."""
+    import signal
+    import subprocess
+    import time
+    from cli import CLI
+    out = tmp_path / "stats"
+    process = subprocess.Popen([CLI, "statistics", *population, "--output-dir", out, "--frames", "1000"],
+                               stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True)
+
+    def frames_written():  # anywhere below DIR: the run decides where frames go
+        return any(name.startswith("frame_") for _, _, names in os.walk(out) for name in names)
+    deadline = time.monotonic() + 240
+    while process.poll() is None and time.monotonic() < deadline and not frames_written():
+        time.sleep(0.001)
+    process.send_signal(signal.SIGTERM)
+    _, err = process.communicate(timeout=60)
+    left = sorted(os.listdir(out))
+    if process.returncode == -signal.SIGTERM:
+        assert left == [], left
+    else:  # finished before the signal: everything is there
+        assert process.returncode == 0, err
+        assert {"mean.vtp", "mode_1", "mode_1.pvd", "scores.csv", "variance.csv"} <= set(left), left
+        assert not [name for name in left if ".tmp." in name], left
+
+
+def test_a_second_run_replaces_the_frames_as_a_whole(population, tmp_path):
+    out = tmp_path / "stats"
+    for frames in ("5", "3"):
+        result = run("statistics", *population, "--output-dir", out, "--frames", frames, "--modes", "1")
+        assert result.returncode == 0, result.stderr
+    assert sorted(os.listdir(out / "mode_1")) == ["frame_000.vtp", "frame_001.vtp", "frame_002.vtp"]
+    assert len(list(ET.parse(out / "mode_1.pvd").getroot().iter("DataSet"))) == 3
+    assert not [name for name in os.listdir(out) if ".tmp." in name]
 
 
 def test_pictures_need_a_display(population, tmp_path):

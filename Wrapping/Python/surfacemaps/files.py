@@ -4,6 +4,7 @@ collections written that way, and a map directory's files checked against its re
 import hashlib
 import json
 import os
+import re
 from xml.sax.saxutils import quoteattr
 
 from vtkmodules.vtkIOXML import vtkXMLPolyDataWriter
@@ -141,6 +142,9 @@ def map_file_stamp(path, name):
     return bytes(int(array.GetValue(k)) for k in range(array.GetNumberOfValues())).decode("utf-8", "replace")
 
 
+_MAP_FILE = re.compile(r"(common|mapped|embedding)_[0-9]+\.vtp")
+
+
 def _verify_map_files(map_dir, names):
     """Raises InputError naming the first of the files `names` of a map directory that its
     report.json does not vouch for: missing, from another map, another file of this map
@@ -150,8 +154,11 @@ def _verify_map_files(map_dir, names):
         with open(report_path) as f:
             report = json.load(f)
     except FileNotFoundError:
-        raise InputError(f"{report_path} is missing: the directory holds no complete map "
-                         "(was 'surfacemap map' interrupted?)") from None
+        if any(_MAP_FILE.fullmatch(name) for name in os.listdir(map_dir)):
+            raise InputError(f"{map_dir} holds an interrupted run (common_/mapped_/embedding_ files, "
+                             "no report.json): give --overwrite or remove it") from None
+        raise InputError(f"{report_path} is missing: the directory holds no map (written by "
+                         "'surfacemap map')") from None
     except ValueError:
         raise InputError(f"{report_path} is not valid JSON") from None
     if not isinstance(report.get("map_id"), str) or not isinstance(report.get("files"), list):

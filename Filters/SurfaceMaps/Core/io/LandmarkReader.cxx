@@ -118,9 +118,8 @@ std::vector<LandmarkRecord> parseWhitespaceLandmarks(const std::string& text,
         double ignored;
         if (!parseDouble(tokens[k], ignored))
         {
-          failAtLine(name,
-            line,
-            "unexpected '" + std::string(tokens[k]) + "' after the vertex index");
+          failAtLine(
+            name, line, "unexpected '" + std::string(tokens[k]) + "' after the vertex index");
         }
       }
     }
@@ -216,7 +215,7 @@ struct Columns
 
 // Splits `text` into lines (1-based numbers), without a UTF-8 byte order mark
 // and carriage returns.
-template <typename Visit>
+template<typename Visit>
 void forEachLine(const std::string& text, Visit visit)
 {
   std::string_view rest(text);
@@ -236,15 +235,16 @@ void forEachLine(const std::string& text, Visit visit)
 }
 
 // A point of a CSV-like line; `strictId`: the id column must hold a
-// non-negative integer (plain CSV), otherwise a non-integer id (a Slicer
-// node name) counts as no id.
+// non-negative integer (plain CSV), otherwise it holds a Slicer id
+// (markupLandmarkId: a node name counts as no id).
 void addCsvPoint(const std::vector<std::string>& fields,
   const Columns& columns,
   bool strictId,
   const std::string& name,
   int line,
   std::vector<LandmarkRecord>& records,
-  std::vector<long long>& ids)
+  std::vector<long long>& ids,
+  std::vector<std::string>& idTexts)
 {
   // The label is optional: hand-written files stop after the coordinates.
   const int needed = std::max({ columns.X, columns.Y, columns.Z, columns.Id }) + 1;
@@ -265,34 +265,47 @@ void addCsvPoint(const std::vector<std::string>& fields,
     record.Label = fields[columns.Label];
   }
   long long id = -1;
-  if (columns.Id >= 0)
+  if (columns.Id >= 0 && !strictId)
+  {
+    id = markupLandmarkId(fields[columns.Id], "this point", name, line);
+  }
+  else if (columns.Id >= 0)
   {
     long long value;
-    const bool integer = parseInt(fields[columns.Id], value) && value >= 0 &&
-      value <= std::numeric_limits<int>::max();
-    if (integer)
+    if (!parseInt(fields[columns.Id], value) || value < 0 ||
+      value > std::numeric_limits<int>::max())
     {
-      id = value;
+      failAtLine(
+        name, line, "expected a landmark id (an integer >= 0), got '" + fields[columns.Id] + "'");
     }
-    else if (strictId)
-    {
-      failAtLine(name,
-        line,
-        "expected a landmark id (an integer >= 0), got '" + fields[columns.Id] + "'");
-    }
+    id = value;
   }
   records.push_back(record);
   ids.push_back(id);
+  idTexts.push_back(columns.Id >= 0 ? fields[columns.Id] : std::string());
 }
 
 // 3D Slicer's markups CSV: '#' lines are comments, "# columns = ..." names
 // the columns.
 std::vector<LandmarkRecord> parseFcsv(const std::string& text, const std::string& name)
 {
-  Columns columns = Columns::named({ "id", "x", "y", "z", "ow", "ox", "oy", "oz", "vis", "sel",
-    "lock", "label", "desc", "associatedNodeID" });
+  Columns columns = Columns::named({ "id",
+    "x",
+    "y",
+    "z",
+    "ow",
+    "ox",
+    "oy",
+    "oz",
+    "vis",
+    "sel",
+    "lock",
+    "label",
+    "desc",
+    "associatedNodeID" });
   std::vector<LandmarkRecord> records;
   std::vector<long long> ids;
+  std::vector<std::string> idTexts;
   forEachLine(text,
     [&](std::string_view line, int number)
     {
@@ -313,9 +326,10 @@ std::vector<LandmarkRecord> parseFcsv(const std::string& text, const std::string
         }
         return;
       }
-      addCsvPoint(csvFields(line, name, number), columns, false, name, number, records, ids);
+      addCsvPoint(
+        csvFields(line, name, number), columns, false, name, number, records, ids, idTexts);
     });
-  finishLandmarkIds(records, ids, name);
+  finishLandmarkIds(records, ids, name, idTexts);
   return records;
 }
 
@@ -330,6 +344,7 @@ std::vector<LandmarkRecord> parseCsv(const std::string& text, const std::string&
 {
   std::vector<LandmarkRecord> records;
   std::vector<long long> ids;
+  std::vector<std::string> idTexts;
   bool first = true;
   Columns header;
   forEachLine(text,
@@ -375,7 +390,7 @@ std::vector<LandmarkRecord> parseCsv(const std::string& text, const std::string&
           "expected " + std::to_string(columns.Count) + " values as the header names, got " +
             std::to_string(fields.size()));
       }
-      addCsvPoint(fields, columns, true, name, number, records, ids);
+      addCsvPoint(fields, columns, true, name, number, records, ids, idTexts);
     });
   // A plain CSV gives ids on every line or on none.
   const auto given = std::count_if(ids.begin(), ids.end(), [](long long id) { return id >= 0; });
@@ -394,10 +409,27 @@ std::vector<LandmarkRecord> parseCsv(const std::string& text, const std::string&
 
 void finishLandmarkIds(std::vector<LandmarkRecord>& records,
   const std::vector<long long>& givenIds,
-  const std::string& name)
+  const std::string& name,
+  const std::vector<std::string>& idTexts)
 {
-  const bool given = !records.empty() &&
-    std::all_of(givenIds.begin(), givenIds.end(), [](long long id) { return id >= 0; });
+  const auto hasId = [](long long id) { return id >= 0; };
+  const auto firstWith = std::find_if(givenIds.begin(), givenIds.end(), hasId);
+  const auto firstWithout = std::find_if_not(givenIds.begin(), givenIds.end(), hasId);
+  const bool given = !records.empty() && firstWithout == givenIds.end();
+  if (firstWith != givenIds.end() && firstWithout != givenIds.end())
+  {
+    // Numbering the rest in file order would silently drop the ids given.
+    const std::size_t k = firstWithout - givenIds.begin();
+    const std::size_t g = firstWith - givenIds.begin();
+    const std::string text = k < idTexts.size() ? idTexts[k] : std::string();
+    failAtLine(name,
+      records[k].Line,
+      (text.empty() ? std::string("this point gives no landmark id")
+                    : "the id '" + text + "' is no landmark id (an integer >= 0)") +
+        ", but line " + std::to_string(records[g].Line) + " gives one (" +
+        std::to_string(givenIds[g]) +
+        "): give an integer id to every point or to none (the file order then numbers them)");
+  }
   std::map<int, int> lineOfId;
   for (std::size_t k = 0; k < records.size(); ++k)
   {
@@ -411,6 +443,28 @@ void finishLandmarkIds(std::vector<LandmarkRecord>& records,
           std::to_string(where->second) + ")");
     }
   }
+}
+
+long long markupLandmarkId(const std::string& text,
+  const std::string& what,
+  const std::string& name,
+  int line)
+{
+  long long id;
+  double number;
+  const bool integer = parseInt(text, id);
+  if (integer && id >= 0 && id <= std::numeric_limits<int>::max())
+  {
+    return id;
+  }
+  if (integer || parseDouble(text, number))
+  {
+    failAtLine(name,
+      line,
+      what + " has the id '" + text + "', which is no landmark id (an integer from 0 to " +
+        std::to_string(std::numeric_limits<int>::max()) + ")");
+  }
+  return -1;
 }
 
 std::vector<LandmarkRecord> parseLandmarkRecords(const std::string& text, const std::string& name)

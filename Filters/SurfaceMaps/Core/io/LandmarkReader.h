@@ -36,7 +36,7 @@ struct LandmarkRecord
 /// `.mrk.json` (Slicer markups JSON) is read by the VTK layer, which has a
 /// JSON parser; it calls finishLandmarkIds like the parsers here.
 /// Ids follow the file order unless the file gives them (see
-/// finishLandmarkIds). Throws InputError "name:line: defect".
+/// finishLandmarkIds; Slicer ids: markupLandmarkId). Throws InputError "name:line: defect".
 std::vector<LandmarkRecord> parseLandmarkRecords(const std::string& text, const std::string& name);
 
 /// Reads and parses a landmark file (parseLandmarkRecords); throws InputError
@@ -45,12 +45,26 @@ std::vector<LandmarkRecord> readLandmarkRecords(const std::string& path);
 
 /// Sets the ids of records read in file order: `givenIds[k]` is the id the
 /// file gives record k (-1 if none). When every record has one, those are the
-/// ids; otherwise (no id, or ids that are not non-negative integers, as
-/// Slicer's node names) the k-th record gets id k. Throws InputError
-/// "name:line: ..." for an id given twice.
+/// ids; when none has (no id column, or Slicer node names), the k-th record
+/// gets id k. A file that gives ids to some records only is refused: it
+/// cannot be told which points the others correspond to. `idTexts[k]`, when
+/// given, is the file's text of record k's id, for that message. Throws
+/// InputError "name:line: ..." for that and for an id given twice.
 void finishLandmarkIds(std::vector<LandmarkRecord>& records,
   const std::vector<long long>& givenIds,
-  const std::string& name);
+  const std::string& name,
+  const std::vector<std::string>& idTexts = {});
+
+/// The id a 3D Slicer markups file gives a point, from its text (the `.fcsv`
+/// id column, the `.mrk.json` "id"): an integer from 0 to INT_MAX is the id;
+/// text that is no number (a node name such as vtkMRMLMarkupsFiducialNode_0,
+/// or nothing) gives none (-1). Any other number is refused: InputError
+/// "name:line: `what` has the id 'text', ..." (a negative, fractional or
+/// too large id is a mistake, not a name).
+long long markupLandmarkId(const std::string& text,
+  const std::string& what,
+  const std::string& name,
+  int line);
 
 /// Reads a landmark file of vertex indices only (any whitespace format of
 /// parseLandmarkRecords); the k-th index carries landmark id k. Throws

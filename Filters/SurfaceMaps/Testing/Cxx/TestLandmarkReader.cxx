@@ -151,6 +151,12 @@ TEST(LandmarkReader, MalformedPointFilesNameTheLine)
          Case{ "a.csv", "name,value\n", "a.csv:1: the header names no x, y and z columns" },
          Case{ "a.fcsv", "# columns = id,x,y,z\nn0,1,2\n", "a.fcsv:2: expected at least 4 comma-separated values, got 3" },
          Case{ "a.fcsv", "n0,1,2,\"3\n", "a.fcsv:1: a quoted field is not closed" },
+         // Slicer ids: one unusable id refuses the file instead of renumbering every point.
+         Case{ "a.fcsv", "# columns = id,x,y,z\n3,0,0,0\n2,1,0,0\n1,0,1,0\nF-4,0,0,1\n", "a.fcsv:5: the id 'F-4' is no landmark id (an integer >= 0), but line 2 gives one (3): give an integer id to every point or to none" },
+         Case{ "a.fcsv", "# columns = id,x,y,z\n3,0,0,0\n,1,0,0\n", "a.fcsv:3: this point gives no landmark id, but line 2 gives one (3)" },
+         Case{ "a.fcsv", "3,0,0,0\n99999999999,1,0,0\n", "a.fcsv:2: this point has the id '99999999999', which is no landmark id (an integer from 0 to 2147483647)" },
+         Case{ "a.fcsv", "-2,0,0,0\n", "a.fcsv:1: this point has the id '-2', which is no landmark id" },
+         Case{ "a.fcsv", "1.5,0,0,0\n", "a.fcsv:1: this point has the id '1.5', which is no landmark id" },
          Case{ "a.vts", "1 2\n", "a.vts:1: expected 'index', 'index x y z' or 'x y z', got 2 values" },
          Case{ "a.vts", "0 0 0\n1 inf 0\n", "a.vts:2: the coordinate 'inf' is not finite" },
        })

@@ -464,6 +464,12 @@ TEST(SurfaceMeshReader, MalformedMarkupsJsonNamesTheLine)
          Case{ "{\"markups\": []}", ":1: not a Slicer markups file" },
          Case{ "{\"markups\": [{\"controlPoints\": []}]}", ": the landmark file lists no landmarks" },
          Case{ "{\n\"markups\": [\n", ":3: not valid JSON" },
+         // Slicer ids: one unusable id refuses the file instead of renumbering every point.
+         Case{ "{\"markups\": [{\"controlPoints\": [\n{\"id\": \"3\", \"position\": [0,0,0]},\n{\"id\": \"2\", \"position\": [1,0,0]},\n{\"id\": \"99999999999\", \"position\": [0,1,0]}]}]}", ":4: control point 2 has the id '99999999999', which is no landmark id (an integer from 0 to 2147483647)" },
+         Case{ "{\"markups\": [{\"controlPoints\": [\n{\"id\": 3, \"position\": [0,0,0]},\n{\"id\": 99999999999, \"position\": [1,0,0]}]}]}", ":3: control point 1 has the id '99999999999', which is no landmark id" },
+         Case{ "{\"markups\": [{\"controlPoints\": [\n{\"id\": \"3\", \"position\": [0,0,0]},\n{\"id\": \"vtkMRMLMarkupsFiducialNode_1\", \"position\": [1,0,0]}]}]}", ":3: the id 'vtkMRMLMarkupsFiducialNode_1' is no landmark id (an integer >= 0), but line 2 gives one (3)" },
+         Case{ "{\"markups\": [{\"controlPoints\": [\n{\"id\": \"3\", \"position\": [0,0,0]},\n{\"position\": [1,0,0]}]}]}", ":3: this point gives no landmark id, but line 2 gives one (3)" },
+         Case{ "{\"markups\": [{\"controlPoints\": [\n{\"id\": true, \"position\": [0,0,0]}]}]}", ":2: control point 0 has an id that is neither a string nor a number" },
        })
   {
     const ScratchFile file("bad.mrk.json", c.Text);
