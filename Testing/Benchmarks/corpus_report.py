@@ -86,6 +86,14 @@ def ours(report, seconds, swap=False):
     }
 
 
+def write_report(path, text):
+    """Writes `text` to `path` through a temporary file beside it, so that a
+    report is either the old one or the new one, never half-written."""
+    with open(path + ".tmp", "w") as f:
+        f.write(text)
+    os.replace(path + ".tmp", path)
+
+
 def number(value, digits=4):
     if value is None:
         return "-"
@@ -201,9 +209,7 @@ def main(argv):
     text = "\n".join(lines) + "\n\n" + means + "\n"
     print(text)
     if args.output:
-        with open(args.output + ".tmp", "w") as f:
-            f.write(text)
-        os.replace(args.output + ".tmp", args.output)
+        write_report(args.output, text)
     return 1 if failures else 0
 
 

@@ -145,9 +145,7 @@ def main(argv):
     text = table(builds, cases, seconds, peak, errors, args.work)
     print(text)
     if args.output:
-        with open(args.output + ".tmp", "w") as f:
-            f.write(text)
-        os.replace(args.output + ".tmp", args.output)
+        corpus_report.write_report(args.output, text)
     return 1 if errors else 0
 
 

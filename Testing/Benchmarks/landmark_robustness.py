@@ -198,9 +198,7 @@ def main(argv):
     text = "\n".join(lines) + f"\n\nFound in {found_count} of {cases} cases.\n"
     print(text)
     if args.output:
-        with open(args.output + ".tmp", "w") as f:
-            f.write(text)
-        os.replace(args.output + ".tmp", args.output)
+        corpus_report.write_report(args.output, text)
     return 0
 
 
