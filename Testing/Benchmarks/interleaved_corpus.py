@@ -20,7 +20,6 @@ Run it on an otherwise idle machine.
 """
 
 import argparse
-import glob
 import json
 import os
 import shlex
@@ -30,19 +29,18 @@ import sys
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import compare_maps  # noqa: E402
 import corpus_report  # noqa: E402
+import population_benchmark  # noqa: E402
 
 
 def population_cases(data, sizes):
     """(name, map arguments) per population size: the first N animals of
     DATA (sorted by name) with landmarks (MESH.off beside MESH.vts)."""
-    meshes = [m for m in sorted(glob.glob(os.path.join(data, "*.off"))) if os.path.exists(m[:-4] + ".vts")]
+    meshes = population_benchmark.specimens(data)
     cases = []
     for n in sizes:
-        chosen = meshes[:n]
-        if len(chosen) < n:
+        if len(meshes) < n:
             raise SystemExit(f"{data} holds {len(meshes)} meshes with landmarks, fewer than {n}")
-        landmarks = [m[:-4] + ".vts" for m in chosen]
-        cases.append((f"population_{n}", chosen + ["--landmarks"] + landmarks + ["--preset", "population"]))
+        cases.append((f"population_{n}", population_benchmark.population_arguments(meshes[:n])))
     return cases
 
 

@@ -27,10 +27,20 @@ import sys
 from corpus_report import run_map
 
 
+def specimens(data):
+    """(mesh, landmark file) of every mesh of DATA (MESH.off beside MESH.vts), in file-name order."""
+    return [(m, m[:-4] + ".vts") for m in sorted(glob.glob(os.path.join(data, "*.off")))
+            if os.path.exists(m[:-4] + ".vts")]
+
+
+def population_arguments(meshes):
+    """`surfacemap map`'s arguments for `meshes` (pairs of mesh and landmark file), population preset."""
+    return [m for m, _ in meshes] + ["--landmarks"] + [l for _, l in meshes] + ["--preset", "population"]
+
+
 def run_population(meshes, surfacemap, out, extra):
     """Maps `meshes` (pairs of mesh and landmark file); returns what corpus_report.run_map returns."""
-    return run_map(surfacemap, [m for m, _ in meshes] + ["--landmarks"] + [l for _, l in meshes] +
-                   ["--preset", "population"] + extra, out)
+    return run_map(surfacemap, population_arguments(meshes) + extra, out)
 
 
 def defects(report):
@@ -71,11 +81,7 @@ def main(argv):
     args = parser.parse_args(argv)
 
     surfacemap = os.path.join(args.build, "bin", "surfacemap")
-    meshes = []
-    for path in sorted(glob.glob(os.path.join(args.data, "*.off"))):
-        landmarks = path[:-4] + ".vts"
-        if os.path.exists(landmarks):
-            meshes.append((path, landmarks))
+    meshes = specimens(args.data)
     if len(meshes) < 2:
         print(f"population_benchmark: fewer than two meshes with landmarks in {args.data}", file=sys.stderr)
         return 1
