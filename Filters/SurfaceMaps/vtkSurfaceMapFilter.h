@@ -163,13 +163,15 @@ public:
   vtkTypeMacro(vtkSurfaceMapFilter, vtkSurfaceArrayTransferAlgorithm);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
-  /** Which input pairs the map-distortion term measures. */
+  /** Whose distortion the map-distortion term measures: input pairs, or each
+   * input against the inputs' mean shape. */
   enum PairModes
   {
     PAIRS_STAR = 0,     ///< (0, i) for every i > 0
     PAIRS_SEQUENCE = 1, ///< (i, i + 1)
     PAIRS_CYCLE = 2,    ///< (i, i + 1) and (N - 1, 0)
-    PAIRS_ALL = 3       ///< every pair
+    PAIRS_ALL = 3,      ///< every pair
+    PAIRS_MEAN = 4      ///< each input against the inputs' mean shape
   };
 
   /** What the outputs carry. */
@@ -210,14 +212,16 @@ public:
   // clang-format off
 
   ///@{
-  /** Pairs whose map distortion is minimised with three or more inputs: (0, i), (i, i+1), (i,
-   * i+1) and (N-1, 0), or every pair. Default star. */
-  vtkSetClampMacro(PairMode, int, 0, 3);
+  /** Whose map distortion is minimised with three or more inputs: the pairs (0, i), (i, i+1),
+   * (i, i+1) and (N-1, 0), or every pair; or mean: each input against the inputs' mean shape,
+   * triangle by triangle (no input privileged; time linear in N). Default star. */
+  vtkSetClampMacro(PairMode, int, 0, 4);
   vtkGetMacro(PairMode, int);
   void SetPairModeToStar() { this->SetPairMode(0); }
   void SetPairModeToSequence() { this->SetPairMode(1); }
   void SetPairModeToCycle() { this->SetPairMode(2); }
   void SetPairModeToAll() { this->SetPairMode(3); }
+  void SetPairModeToMean() { this->SetPairMode(4); }
   ///@}
 
   ///@{

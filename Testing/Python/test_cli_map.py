@@ -238,7 +238,7 @@ def test_usage(tmp_path):
     r = run("map", data("ellipsoid.obj"), data("blob.off"))
     assert r.returncode == 2 and "no output directory" in r.stderr
     r = run("map", data("ellipsoid.obj"), data("blob.off"), "--pairs", "ring", "--output-dir", tmp_path)
-    assert r.returncode == 2 and "--pairs is star, sequence, cycle or all" in r.stderr
+    assert r.returncode == 2 and "--pairs is star, sequence, cycle, all or mean" in r.stderr
     r = run("map", data("ellipsoid.obj"), data("blob.off"), "--landmarks", data("ellipsoid.pinned"),
             "--output-dir", tmp_path)
     assert r.returncode == 2 and "one file per mesh" in r.stderr

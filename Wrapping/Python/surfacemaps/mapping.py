@@ -125,8 +125,9 @@ def map_surfaces(meshes, landmarks=None, target_error=None, pairs=None, keep_lan
       Meshes may also carry a "Landmarks" point array already.
     - `target_error`: approximation error of the fine phase in unit-area units
       (each mesh centred and scaled to unit area); smaller gives a finer T.
-    - `pairs`: "star" (0-i), "sequence", "cycle" or "all": the pairs whose
-      distortion is minimised with three or more meshes.
+    - `pairs`: "star" (0-i), "sequence", "cycle", "all" or "mean" (each mesh
+      against the meshes' mean shape): whose distortion is minimised with
+      three or more meshes.
     - `keep_landmarks`: lock landmarks exactly after the landmark phase (True)
       or release them.
     - `categorical`, `continuous`: names of point arrays carried onto the

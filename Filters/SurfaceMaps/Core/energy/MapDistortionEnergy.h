@@ -81,4 +81,50 @@ struct MapDistortionEnergy
   }
 };
 
+/// Element functor (see ElementTerm): the distortion from the inputs' mean
+/// shape to input i (PairScheme::Mean), one element per triangle of T on the
+/// embedding starting at `offset`: symmetricDirichlet from the triangle's
+/// reference Gram entries (the mean over the inputs of its lifted triangles',
+/// held constant within a Newton step like the target lengths) to its lifted
+/// triangle on input i.
+struct MeanShapeDistortionEnergy
+{
+  const std::vector<std::array<int, 3>>* triangles = nullptr;
+  const std::vector<const Lift*>* lifts = nullptr;
+  const std::vector<std::array<double, 3>>* references = nullptr;
+  int offset = 0;
+
+  int numberOfElements() const { return static_cast<int>(this->triangles->size()); }
+  std::array<int, 3> points(int e) const
+  {
+    const auto& t = (*this->triangles)[e];
+    return { t[0] + this->offset, t[1] + this->offset, t[2] + this->offset };
+  }
+  template<typename T>
+  T operator()(int e, const std::array<Eigen::Matrix<T, 3, 1>, 3>& p) const
+  {
+    const std::array<int, 3> idx = this->points(e);
+    const auto& L = *this->lifts;
+    const auto lifted = liftTriangle<T>({ L[idx[0]], L[idx[1]], L[idx[2]] }, p, 0);
+    return symmetricDirichlet((*this->references)[e], gramEntries(lifted[0], lifted[1], lifted[2]));
+  }
+};
+
+/// The mean of the Gram entries of one triangle's lifted copies: a mean of
+/// positive definite matrices, so a valid triangle shape whenever every copy
+/// is one (MeanShapeDistortionEnergy's reference).
+template<typename Grams>
+std::array<double, 3> meanGram(const Grams& grams)
+{
+  std::array<double, 3> mean{ 0.0, 0.0, 0.0 };
+  for (const auto& g : grams)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      mean[k] += g[k] / static_cast<double>(grams.size());
+    }
+  }
+  return mean;
+}
+
 } // namespace surfacemaps

@@ -167,11 +167,14 @@ public:
     /// Per input and triangle: the barrier weight's multiplier (empty when
     /// weights.barrierRaise is off).
     std::vector<std::vector<double>> barrierScales;
+    /// Per triangle: the inputs' mean shape (meanGram of its lifted copies;
+    /// filled when weights.mapToMean), held within a step.
+    std::vector<std::array<double, 3>> meanGrams;
   };
   /// Garbage-collects the mesh and fills a snapshot and the sphere points
   /// (g of input i at i * vertices + v); landmark vertices are locked when
-  /// `lockLandmarks`. The coverage densities and barrier scales are filled
-  /// where `weights` use them.
+  /// `lockLandmarks`. The coverage densities, barrier scales and mean shape
+  /// are filled where `weights` use them.
   void snapshot(Snapshot& snapshot,
     SpherePoints& points,
     bool lockLandmarks,

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 
+#include "energy/MapDistortionEnergy.h"
 #include "geometry/Predicates.h"
 #include "geometry/SphericalTriangulation.h"
 
@@ -75,6 +76,22 @@ void CommonTriangulation::snapshot(Snapshot& s,
         s.barrierScales[i].push_back(
           std::pow(weights.barrierRaise, this->Mesh.property(this->BarrierRaises[i], f)));
       }
+    }
+  }
+  s.meanGrams.clear();
+  if (weights.mapToMean && weights.map > 0.0)
+  {
+    s.meanGrams.reserve(s.triangles.size());
+    PerInput<std::array<double, 3>> grams(n);
+    for (const auto& t : s.triangles)
+    {
+      for (int i = 0; i < n; ++i)
+      {
+        const auto lifted = [&](int corner)
+        { return this->Mesh.property(this->Lifted[i], OpenMesh::VertexHandle(t[corner])); };
+        grams[i] = gramEntries(lifted(0), lifted(1), lifted(2));
+      }
+      s.meanGrams.push_back(meanGram(grams));
     }
   }
   s.sampleTriangle.assign(n, {});

@@ -63,7 +63,20 @@ MapEnergy::TriangleTerms MapEnergy::triangleTerms(const MapVertex& a,
           this->T.coverageDensity(i, a.liftTriangle[i], b.liftTriangle[i], c.liftTriangle[i])));
     }
   }
-  if (w.map > 0.0)
+  if (w.map > 0.0 && w.mapToMean)
+  {
+    PerInput<std::array<double, 3>> grams;
+    for (int i = 0; i < this->T.numberOfInputs(); ++i)
+    {
+      grams.push_back(gramEntries(a.lifted[i], b.lifted[i], c.lifted[i]));
+    }
+    const std::array<double, 3> mean = meanGram(grams);
+    for (const auto& gram : grams)
+    {
+      terms.map.push_back(w.map * symmetricDirichlet(mean, gram));
+    }
+  }
+  else if (w.map > 0.0)
   {
     for (const auto& pair : this->T.pairs())
     {
@@ -311,7 +324,17 @@ void MapEnergy::buildObjective(const CommonTriangulation::Snapshot& s,
   {
     this->addInputTerms(s, i, landmarkTargets, objective);
   }
-  if (w.map > 0.0)
+  if (w.map > 0.0 && w.mapToMean)
+  {
+    for (int i = 0; i < this->T.numberOfInputs(); ++i)
+    {
+      MeanShapeDistortionEnergy map{ &s.triangles, &s.lifts, &s.meanGrams, i * nv };
+      objective.addTerm(std::make_shared<ElementTerm<3, MeanShapeDistortionEnergy>>("map", map),
+        w.map,
+        group(MapTerm::Distortion));
+    }
+  }
+  else if (w.map > 0.0)
   {
     for (const auto& pair : this->T.pairs())
     {

@@ -36,7 +36,7 @@ public:
     bool valid = true; ///< false: a barrier term is infinite
     PerInput<double> barrier, coverage;
     PerInput<std::array<double, 3>> lifted;
-    /// Per pair of the map distortion term.
+    /// Per pair of the map distortion term (per input with mapToMean).
     PerInput<double> map;
   };
   TriangleTerms triangleTerms(const MapVertex& a, const MapVertex& b, const MapVertex& c) const;

@@ -27,6 +27,11 @@ struct MapEnergyWeights
   double approximation = 0.0; // includes 1 / eps^2 for the soft term
   double landmark = 0.0;
   double map = 0.0;
+  /// The distortion term measures each input's lifted triangles against the
+  /// inputs' mean shape (PairScheme::Mean: per triangle the mean of the
+  /// lifted triangles' Gram matrices, held within a Newton step) instead of
+  /// the pairs; `map` is then divided by the number of inputs.
+  bool mapToMean = false;
   /// Coverage (CoverageEnergy), in the mesh-quality group.
   double coverage = 0.0;
   /// Hard approximation bound per input (unit-area units of that input);

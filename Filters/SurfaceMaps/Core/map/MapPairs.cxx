@@ -16,11 +16,12 @@ std::vector<std::array<int, 2>> mapPairs(PairScheme mode, int n)
       break;
     case PairScheme::Sequence:
     case PairScheme::Cycle:
+    case PairScheme::Mean:
       for (int i = 0; i + 1 < n; ++i)
       {
         pairs.push_back({ i, i + 1 });
       }
-      if (mode == PairScheme::Cycle && n > 2)
+      if (mode != PairScheme::Sequence && n > 2)
       {
         pairs.push_back({ n - 1, 0 });
       }

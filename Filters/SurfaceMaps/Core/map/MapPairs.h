@@ -14,6 +14,11 @@ enum class PairScheme
   Sequence, ///< (i, i + 1)
   Cycle,    ///< (i, i + 1) and (N - 1, 0)
   All,      ///< every pair i < j
+  /// Each input against the inputs' mean shape, triangle by triangle (the
+  /// mean of the lifted triangles' Gram matrices): one term per input, no
+  /// input privileged, time linear in N. Its pairs (those of Cycle) are the
+  /// maps the distortion refinement checks.
+  Mean,
 };
 
 /// The pairs (i, j) of a mode for n inputs.

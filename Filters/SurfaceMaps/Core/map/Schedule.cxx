@@ -28,7 +28,8 @@ MapPhase distortionPhase(PhaseKind kind,
   w.barrier = barrierWeight / n;
   w.mesh = options.meshWeight / n;
   w.coverage = options.coverageWeight / n;
-  w.map = context.pairs == 0 ? 0.0 : options.mapWeight / pairCount;
+  w.mapToMean = options.pairs == PairScheme::Mean;
+  w.map = context.pairs == 0 ? 0.0 : options.mapWeight / (w.mapToMean ? n : pairCount);
   w.bounds = bounds;
   w.approximation = options.approximationWeight / n / (bounds.empty() ? eps * eps : 1.0);
   return phase;

@@ -98,6 +98,40 @@ TEST(MapEnergies, AllTermsMatchFiniteDifferences)
   c.expectDerivativesMatch();
 }
 
+TEST(MapEnergies, MeanShapeDistortionMatchesFiniteDifferences)
+{
+  MapEnergyWeights w;
+  w.barrier = 0.01;
+  w.map = 1.0;
+  w.mapToMean = true;
+  EnergyCase c(w);
+  ASSERT_EQ(c.snapshot.meanGrams.size(), c.snapshot.triangles.size());
+  c.expectDerivativesMatch();
+}
+
+// The mean shape of congruent copies is the triangle itself, where the term
+// is at its minimum (the triangle's area per copy); it grows as the copies
+// differ, whichever copy differs.
+TEST(MapEnergies, MeanShapeTermIsMinimalForCongruentCopies)
+{
+  const Eigen::Vector3d a(0, 0, 0), b(1, 0, 0), c(0.5, std::sqrt(3.0) / 2, 0);
+  const std::array<double, 3> g = gramEntries(a, b, c);
+  const std::array<double, 3> stretched = gramEntries<double>(a, 1.5 * b, c);
+  const double area = std::sqrt(3.0) / 4;
+  const auto total = [](const std::vector<std::array<double, 3>>& grams)
+  {
+    double sum = 0.0;
+    for (const auto& gram : grams)
+    {
+      sum += symmetricDirichlet(meanGram(grams), gram);
+    }
+    return sum;
+  };
+  EXPECT_NEAR(total({ g, g, g }), 3.0 * area, 1e-12);
+  EXPECT_GT(total({ stretched, g, g }), 3.0 * area * (1.0 + 1e-3));
+  EXPECT_NEAR(total({ stretched, g, g }), total({ g, g, stretched }), 1e-12);
+}
+
 TEST(MapEnergies, CoverageMatchesFiniteDifferences)
 {
   MapEnergyWeights w;

@@ -151,7 +151,7 @@ TEST(Settings, TextThatIsNoValueIsRefused)
   EXPECT_EQ(target.valueError("--target-error", "x"),
     "--target-error needs a number from 1e-6 to 1, not 'x'");
   EXPECT_EQ(
-    pairs.valueError("--pairs", "ring"), "--pairs is star, sequence, cycle or all, not 'ring'");
+    pairs.valueError("--pairs", "ring"), "--pairs is star, sequence, cycle, all or mean, not 'ring'");
   EXPECT_EQ(iterations.valueError("--fine-iterations", nullptr), "--fine-iterations needs a value");
   EXPECT_EQ(target.clamp(std::nan("")), target.defaultValue);
 }

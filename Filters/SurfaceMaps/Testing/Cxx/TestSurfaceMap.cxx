@@ -47,6 +47,8 @@ TEST(SurfaceMap, PairModes)
   EXPECT_EQ(mapPairs(PairScheme::Sequence, 3), (P{ { 0, 1 }, { 1, 2 } }));
   EXPECT_EQ(mapPairs(PairScheme::Cycle, 3), (P{ { 0, 1 }, { 1, 2 }, { 2, 0 } }));
   EXPECT_EQ(mapPairs(PairScheme::All, 3), (P{ { 0, 1 }, { 0, 2 }, { 1, 2 } }));
+  // The mean's pairs are the maps the refinement checks: each input in two.
+  EXPECT_EQ(mapPairs(PairScheme::Mean, 3), mapPairs(PairScheme::Cycle, 3));
   EXPECT_TRUE(mapPairs(PairScheme::Star, 1).empty());
 }
 
@@ -158,6 +160,26 @@ TEST(SurfaceMap, ThreeInputsShareOneCertifiedTriangulation)
   {
     EXPECT_EQ(r.lifted[i].size(), r.lifted[0].size());
     EXPECT_EQ(mappedVertices(r, inputs, 0, i).size(), inputs[0].mesh.points.size());
+    const MapMetrics m = measureMap(r.lifted[0], r.lifted[i], r.triangles);
+    EXPECT_EQ(m.degenerateTriangles, 0);
+    EXPECT_LT(m.symmetricDirichlet, 2.0);
+  }
+}
+
+// Each input against the mean shape instead of pairs: certified, and the maps
+// between the inputs as little distorted as with pairs.
+TEST(SurfaceMap, MeanShapeDistortionCertifiesAndFitsEveryInput)
+{
+  std::vector<MapInput> inputs{ icosphereInput(2, 0.0, { 1.0, 1.0, 1.0 }, 0.3),
+    icosphereInput(3, 0.3, { 1.4, 1.0, 0.8 }),
+    icosphereInput(2, -0.2, { 0.8, 1.2, 1.0 }, 0.2) };
+  SurfaceMapOptions options = shortSchedule(3, 4);
+  options.pairs = PairScheme::Mean;
+  const SurfaceMapResult r = computeSurfaceMap(inputs, options);
+  ASSERT_EQ(r.certificates.size(), 3u);
+  expectCertified(r);
+  for (int i = 1; i < 3; ++i)
+  {
     const MapMetrics m = measureMap(r.lifted[0], r.lifted[i], r.triangles);
     EXPECT_EQ(m.degenerateTriangles, 0);
     EXPECT_LT(m.symmetricDirichlet, 2.0);

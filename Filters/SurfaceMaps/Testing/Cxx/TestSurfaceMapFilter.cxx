@@ -785,7 +785,7 @@ TEST(SurfaceMapFilter, NamedSettersUseTheTable)
   filter->SetPairModeToCycle();
   EXPECT_EQ(filter->GetPairMode(), vtkSurfaceMapFilter::PAIRS_CYCLE);
   filter->SetPairMode(17);
-  EXPECT_EQ(filter->GetPairMode(), vtkSurfaceMapFilter::PAIRS_ALL);
+  EXPECT_EQ(filter->GetPairMode(), vtkSurfaceMapFilter::PAIRS_MEAN);
   filter->KeepLandmarksOff();
   EXPECT_FALSE(filter->GetKeepLandmarks());
   EXPECT_EQ(filter->GetSetting(index("KeepLandmarks")), 0.0);

@@ -205,7 +205,7 @@ def test_settings_table_is_the_filters():
     f = surfacemaps.vtkSurfaceMapFilter()
     assert len(rows) == f.GetNumberOfSettings() >= 30
     by_name = {row["name"]: row for row in rows}
-    assert by_name["PairMode"]["choices"] == ["star", "sequence", "cycle", "all"]
+    assert by_name["PairMode"]["choices"] == ["star", "sequence", "cycle", "all", "mean"]
     assert by_name["KeepLandmarks"]["type"] == "switch"
     for row in rows:
         assert getattr(f, "Get" + row["name"])() == row["default"], row["name"]
