@@ -47,6 +47,15 @@ bool contains(const std::string& text, const std::string& part)
   return text.find(part) != std::string::npos;
 }
 
+// Updates `map`, which must fail with InvalidInputError; the reason.
+std::string invalidInputMessage(vtkSurfaceMapFilter* map)
+{
+  map->Update();
+  EXPECT_EQ(
+    map->GetErrorCode(), static_cast<unsigned long>(vtkSurfaceMapFilter::InvalidInputError));
+  return map->GetLastErrorMessage();
+}
+
 } // namespace
 
 TEST(PipelineErrors, MapFilterSeesAReaderThatFails)
@@ -117,10 +126,7 @@ TEST(PipelineErrors, AnErrorTheFilterReportedIsPrintedOnce)
   map->AddInputData(filtertest::read("ellipsoid_coarse.stl"));
   map->AddInputData(filtertest::read("bad/hemisphere.obj"));
   CapturedOutput output;
-  map->Update();
-  ASSERT_EQ(
-    map->GetErrorCode(), static_cast<unsigned long>(vtkSurfaceMapFilter::InvalidInputError));
-  const std::string message = map->GetLastErrorMessage();
+  const std::string message = invalidInputMessage(map);
   EXPECT_TRUE(contains(message, "is not closed: ")) << message;
   // An open mesh without repeated points: not what vtkOBJReader makes.
   EXPECT_FALSE(contains(message, "vtkOBJReader")) << message;
@@ -135,10 +141,7 @@ TEST(PipelineErrors, TextureSeamsFromVtkOBJReaderPointToTheModuleReader)
   vtkNew<vtkSurfaceMapFilter> map;
   map->SetInputConnection(reader->GetOutputPort());
   CapturedOutput output;
-  map->Update();
-  ASSERT_EQ(
-    map->GetErrorCode(), static_cast<unsigned long>(vtkSurfaceMapFilter::InvalidInputError));
-  const std::string message = map->GetLastErrorMessage();
+  const std::string message = invalidInputMessage(map);
   EXPECT_TRUE(contains(message, "is not closed: ")) << message;
   EXPECT_TRUE(contains(message, "vtkOBJReader")) << message;
   EXPECT_TRUE(contains(message, "read it with vtkSurfaceMeshReader")) << message;
