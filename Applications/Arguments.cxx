@@ -11,6 +11,11 @@ bool isOption(const std::string& argument)
   return !argument.empty() && argument[0] == '-';
 }
 
+bool isOutputDirOption(const std::string& argument)
+{
+  return argument == "-o" || argument == "--output-dir";
+}
+
 const std::string& optionValue(const std::vector<std::string>& args,
   std::size_t& i,
   const char* what)

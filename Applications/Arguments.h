@@ -12,6 +12,10 @@ namespace surfacemap
 /// True for an argument that starts with '-': an option, never a file.
 bool isOption(const std::string& argument);
 
+/// True for the option naming the directory a command writes into: "-o" or
+/// "--output-dir" (one declaration for every command that writes one).
+bool isOutputDirOption(const std::string& argument);
+
 /// The value after the option args[i], advancing i to it; throws UsageError
 /// "<option> needs <what>" when the arguments end first.
 const std::string& optionValue(const std::vector<std::string>& args,

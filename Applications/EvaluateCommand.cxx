@@ -33,7 +33,8 @@ const char* const EvaluateHelp =
   "                    original's bounding-box diagonal) and a two-sided\n"
   "                    distance (points sampled in the triangles of both\n"
   "                    surfaces, the same unit)\n"
-  "  --output-dir DIR  also write DIR/summary.json, DIR/triangles.csv (per\n"
+  "  -o, --output-dir DIR\n"
+  "                    also write DIR/summary.json, DIR/triangles.csv (per\n"
   "                    triangle s1, s2, distortion, unit areas) and\n"
   "                    DIR/distortion_curve.csv (area fraction below each\n"
   "                    distortion, the cumulative curve) and DIR/evaluated.vtp\n"
@@ -119,7 +120,7 @@ EvaluateArguments parseArguments(const std::vector<std::string>& args)
     {
       inInputs = true;
     }
-    else if (a == "--output-dir")
+    else if (isOutputDirOption(a))
     {
       parsed.outputDir = optionValue(args, i, "a directory");
     }

@@ -16,6 +16,8 @@
 #include "vtkSurfaceMapFilter.h"
 #include "vtkSurfaceMapsSettings.h"
 
+#include "base/ThreadCount.h"
+
 #include "vtkAbstractArray.h"
 #include "vtkDataArray.h"
 #include "vtkDoubleArray.h"
@@ -65,7 +67,8 @@ const char* const MapHelpIntro =
   "                      'surfacemap transfer' reads to carry data between inputs\n"
   "  DIR/report.json     every setting of the run (and the sphere embedding's,\n"
   "                      which the map computes embeddings with), sizes,\n"
-  "                      energies, per-phase iterations and times, the\n"
+  "                      energies, per-phase iterations and times (and the\n"
+  "                      thread count they were measured with), the\n"
   "                      certificate, the landmark error and the metrics of\n"
   "                      the approximating map\n"
   "                      (common_0 -> common_i) and of the exact map (input 0 ->\n"
@@ -76,7 +79,7 @@ const char* const MapHelpIntro =
   "                      map's id and every file's size and MD5 checksum,\n"
   "                      which 'evaluate' and 'transfer' verify\n"
   "\n"
-  "  --output-dir DIR     where to write (created if missing). The map is\n"
+  "  -o, --output-dir DIR where to write (created if missing). The map is\n"
   "                       written into DIR.tmp.<pid> beside DIR (checked for\n"
   "                       writing before computing) and put in place as a\n"
   "                       whole when complete; other files in DIR stay. One\n"
@@ -213,9 +216,9 @@ MapArguments parseArguments(const std::vector<std::string>& args, vtkSurfaceMapF
     {
       list = &parsed.sizing;
     }
-    else if (a == "--output-dir")
+    else if (isOutputDirOption(a))
     {
-      parsed.outputDir = optionValue(args, i);
+      parsed.outputDir = optionValue(args, i, "a directory");
     }
     else if (a == "--overwrite")
     {
@@ -242,7 +245,7 @@ MapArguments parseArguments(const std::vector<std::string>& args, vtkSurfaceMapF
   }
   if (parsed.outputDir.empty())
   {
-    throw UsageError{ "no output directory given (--output-dir DIR)" };
+    throw UsageError{ "no output directory given (-o DIR or --output-dir DIR)" };
   }
   if (!parsed.landmarks.empty() && parsed.landmarks.size() != parsed.meshes.size())
   {
@@ -412,6 +415,8 @@ Json::Value reportMap(vtkSurfaceMapFilter* map,
   }
   report["seconds"]["total"] = jsonNumber(seconds);
   report["seconds"]["map"] = jsonNumber(field(first, "MapSeconds"));
+  // The times depend on it (--threads, else OpenMP's default).
+  report["threads"] = surfacemaps::ScopedThreadCount::current();
   report["preset"] = arguments.preset.empty() ? Json::Value() : Json::Value(arguments.preset);
   report["settings"] = settingsJson(map);
   // The map computes the embeddings it is not given with the defaults.

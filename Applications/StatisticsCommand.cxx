@@ -51,7 +51,8 @@ const char* const StatisticsHelp =
   "areas summing to 1) with 1/N: sqrt(variance) is the RMS displacement over\n"
   "the surface of one standard deviation along a mode, in the meshes' units.\n"
   "\n"
-  "  --output-dir DIR   where to write (created if missing; checked for\n"
+  "  -o, --output-dir DIR\n"
+  "                     where to write (created if missing; checked for\n"
   "                     writing before computing)\n"
   "  --modes K          modes to compute (default 3; N specimens have at\n"
   "                     most N - 1)\n"
@@ -134,7 +135,7 @@ StatisticsArguments parseArguments(const std::vector<std::string>& args)
   for (std::size_t i = 0; i < args.size(); ++i)
   {
     const std::string& a = args[i];
-    if (a == "--output-dir")
+    if (isOutputDirOption(a))
     {
       parsed.outputDir = optionValue(args, i, "a directory");
     }

@@ -2,9 +2,11 @@
 #include "AtomicFiles.h"
 #include "Commands.h"
 
+#include "base/ThreadCount.h"
 
 #include "vtkLogger.h"
 #include "vtkOutputWindow.h"
+#include "vtkSMPTools.h"
 
 #include <cerrno>
 #include <cstdio>
@@ -62,6 +64,34 @@ const Command Commands[] = {
     &surfacemap::TransferHelp },
 };
 
+// The options every command takes, handled here before the command runs.
+const char* const CommonOptionsHelp =
+  "  -v           log progress and VTK's own messages on stderr (-vv: more)\n"
+  "  --threads N  compute on at most N threads (1 to 1024; OpenMP and VTK's\n"
+  "               SMP tools; default: OMP_NUM_THREADS, else every core).\n"
+  "               Results do not depend on it, only the time does\n";
+
+// The value of --threads; 0 (after printing why) when it is not 1 to 1024.
+int threadCount(const std::string& text)
+{
+  std::size_t end = 0;
+  long value = 0;
+  try
+  {
+    value = std::stol(text, &end);
+  }
+  catch (const std::exception&)
+  {
+    end = 0;
+  }
+  if (end == 0 || end != text.size() || value < 1 || value > 1024)
+  {
+    surfacemap::printError("--threads needs a whole number from 1 to 1024, not '" + text + "'");
+    return 0;
+  }
+  return static_cast<int>(value);
+}
+
 void printUsage(std::ostream& os)
 {
   os << "usage: surfacemap <command> [options]\n\n"
@@ -73,8 +103,8 @@ void printUsage(std::ostream& os)
   }
   os << "\noptions:\n"
         "  -h, --help   show this help, or a command's help after the command\n"
-        "  -v           log progress and VTK's own messages on stderr (-vv: more)\n"
-        "\nexit codes: 0 ok, 1 internal error, 2 bad usage or bad input, 3 no certified result\n";
+     << CommonOptionsHelp
+     << "\nexit codes: 0 ok, 1 internal error, 2 bad usage or bad input, 3 no certified result\n";
 }
 
 // Runs `command` with its arguments `rest` (or prints its help); the exit code.
@@ -84,7 +114,7 @@ int runCommand(const Command& command, const std::vector<std::string>& rest)
   {
     if (a == "-h" || a == "--help")
     {
-      std::cout << *command.Help;
+      std::cout << *command.Help << "\nOptions of every command:\n" << CommonOptionsHelp;
       return surfacemap::ExitOk;
     }
   }
@@ -126,12 +156,21 @@ int main(int argc, char* argv[])
 
   std::vector<std::string> args;
   int verbosity = 0;
+  int threads = 0;
   for (int i = 1; i < argc; ++i)
   {
     const std::string arg = argv[i];
     if (arg == "-v" || arg == "-vv" || arg == "-vvv")
     {
       verbosity += static_cast<int>(arg.size()) - 1;
+    }
+    else if (arg == "--threads")
+    {
+      threads = threadCount(i + 1 < argc ? argv[++i] : "");
+      if (threads == 0)
+      {
+        return surfacemap::ExitBadInput;
+      }
     }
     else
     {
@@ -151,6 +190,14 @@ int main(int argc, char* argv[])
     return args.empty() ? surfacemap::ExitBadInput : surfacemap::ExitOk;
   }
 
+  // One setting for every command and every parallel loop in it: OpenMP's
+  // for the engine (whose filters leave the count alone by default) and
+  // VTK's SMP tools for the evaluation's distance queries.
+  const surfacemaps::ScopedThreadCount scopedThreads(threads);
+  if (threads > 0)
+  {
+    vtkSMPTools::Initialize(threads);
+  }
   for (const Command& command : Commands)
   {
     if (args[0] == command.Name)

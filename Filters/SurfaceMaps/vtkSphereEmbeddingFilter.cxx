@@ -2,6 +2,7 @@
 
 #include "vtkSurfaceMapsConversion.h"
 #include "vtkSurfaceMapsErrorGuard.h"
+#include "vtkSurfaceMapsExecutive.h"
 #include "vtkSurfaceMapsSettingAccess.h"
 
 #include "base/Error.h"
@@ -247,7 +248,7 @@ int vtkSphereEmbeddingFilter::RequestData(vtkInformation*,
 
   return vtkSurfaceMapsErrorGuard::Run(
     this,
-    vtkSurfaceMapsErrorGuard::MessageOnly(name + ": "),
+    vtkSurfaceMapsErrorGuard::WithPrefix(name + ": "),
     [&]
     {
       this->SetProgressText("Validating the input");
@@ -257,8 +258,8 @@ int vtkSphereEmbeddingFilter::RequestData(vtkInformation*,
       const std::string defects = defectsOf(validated.validation, name);
       if (!defects.empty())
       {
-        vtkErrorMacro(<< defects);
-        return 0;
+        return vtkSurfaceMapsErrorGuard::Fail(
+          this, vtkSurfaceMapsErrorGuard::InvalidInputError, defects);
       }
       surfacemaps::SphereEmbeddingResult result = embed(this, mesh);
       const double alignmentError =
@@ -268,6 +269,16 @@ int vtkSphereEmbeddingFilter::RequestData(vtkInformation*,
       return 1;
     },
     [output] { output->Initialize(); });
+}
+
+const char* vtkSphereEmbeddingFilter::GetLastErrorMessage() const
+{
+  return vtkSurfaceMapsErrorGuard::LastErrorMessage(this);
+}
+
+vtkExecutive* vtkSphereEmbeddingFilter::CreateDefaultExecutive()
+{
+  return vtkSurfaceMapsExecutive::New();
 }
 
 void vtkSphereEmbeddingFilter::PrintSelf(ostream& os, vtkIndent indent)

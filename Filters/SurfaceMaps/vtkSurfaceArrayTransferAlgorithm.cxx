@@ -1,5 +1,8 @@
 #include "vtkSurfaceArrayTransferAlgorithm.h"
 
+#include "vtkSurfaceMapsErrorGuard.h"
+#include "vtkSurfaceMapsExecutive.h"
+
 #include "vtkAbstractArray.h"
 #include "vtkDataArray.h"
 
@@ -114,6 +117,16 @@ const char* vtkSurfaceArrayTransferAlgorithm::GetArrayTransferModeAsString(int m
     default:
       return nullptr;
   }
+}
+
+const char* vtkSurfaceArrayTransferAlgorithm::GetLastErrorMessage() const
+{
+  return vtkSurfaceMapsErrorGuard::LastErrorMessage(this);
+}
+
+vtkExecutive* vtkSurfaceArrayTransferAlgorithm::CreateDefaultExecutive()
+{
+  return vtkSurfaceMapsExecutive::New();
 }
 
 void vtkSurfaceArrayTransferAlgorithm::PrintSelf(ostream& os, vtkIndent indent)

@@ -101,9 +101,20 @@ public:
   /** "continuous", "categorical" or "by type" for a mode value; nullptr for others. */
   static const char* GetArrayTransferModeAsString(int mode);
 
+  /**
+   * Why the last update failed: the reason its error message gave, also when
+   * an input's producer failed upstream (then it names the input and what
+   * failed). Empty after a successful update. After a failure GetErrorCode()
+   * is vtkSurfaceMapFilter::InvalidInputError (an input cannot be used, or
+   * was not produced), NotCertifiedError, or vtkErrorCode::UnknownError (an
+   * internal error), and the outputs are empty.
+   */
+  const char* GetLastErrorMessage() const;
+
 protected:
   vtkSurfaceArrayTransferAlgorithm();
   ~vtkSurfaceArrayTransferAlgorithm() override;
+  vtkExecutive* CreateDefaultExecutive() override;
 
 private:
   vtkSurfaceArrayTransferAlgorithm(const vtkSurfaceArrayTransferAlgorithm&) = delete;

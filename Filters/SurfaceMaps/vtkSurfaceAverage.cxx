@@ -146,7 +146,7 @@ int vtkSurfaceAverage::RequestData(vtkInformation*,
     }
   };
 
-  vtkSurfaceMapsErrorGuard::Policy policy = vtkSurfaceMapsErrorGuard::MessageOnly();
+  vtkSurfaceMapsErrorGuard::Policy policy;
   policy.AbortedOutputs = outputVector;
   return vtkSurfaceMapsErrorGuard::Run(
     this,

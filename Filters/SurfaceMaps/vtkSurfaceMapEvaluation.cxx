@@ -2,6 +2,7 @@
 
 #include "vtkSurfaceMapsConversion.h"
 #include "vtkSurfaceMapsErrorGuard.h"
+#include "vtkSurfaceMapsExecutive.h"
 
 #include "base/Error.h"
 #include "geometry/MapMetrics.h"
@@ -424,7 +425,7 @@ int vtkSurfaceMapEvaluation::RequestData(vtkInformation*,
   output->Initialize();
   return vtkSurfaceMapsErrorGuard::Run(
     this,
-    vtkSurfaceMapsErrorGuard::MessageOnly(),
+    vtkSurfaceMapsErrorGuard::Policy(),
     [&]
     {
       vtkPolyData* const inputs[4] = { source, target, sourceOriginal, targetOriginal };
@@ -448,6 +449,16 @@ int vtkSurfaceMapEvaluation::RequestData(vtkInformation*,
       return 1;
     },
     [output] { output->Initialize(); });
+}
+
+const char* vtkSurfaceMapEvaluation::GetLastErrorMessage() const
+{
+  return vtkSurfaceMapsErrorGuard::LastErrorMessage(this);
+}
+
+vtkExecutive* vtkSurfaceMapEvaluation::CreateDefaultExecutive()
+{
+  return vtkSurfaceMapsExecutive::New();
 }
 
 void vtkSurfaceMapEvaluation::PrintSelf(ostream& os, vtkIndent indent)

@@ -68,9 +68,20 @@ public:
   /** The summary figures of the last update, by field-data name (NaN if absent). */
   double GetSummaryValue(const char* name);
 
+  /**
+   * Why the last update failed: the reason its error message gave, also when
+   * an input's producer failed upstream (then it names the input and what
+   * failed). Empty after a successful update. After a failure GetErrorCode()
+   * is vtkSurfaceMapFilter::InvalidInputError (an input cannot be used, or
+   * was not produced), NotCertifiedError, or vtkErrorCode::UnknownError (an
+   * internal error), and the outputs are empty.
+   */
+  const char* GetLastErrorMessage() const;
+
 protected:
   vtkSurfaceMapEvaluation();
   ~vtkSurfaceMapEvaluation() override = default;
+  vtkExecutive* CreateDefaultExecutive() override;
 
   int FillInputPortInformation(int port, vtkInformation* info) override;
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;

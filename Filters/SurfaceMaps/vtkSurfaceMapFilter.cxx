@@ -28,6 +28,11 @@
 
 vtkStandardNewMacro(vtkSurfaceMapFilter);
 
+static_assert(
+  vtkSurfaceMapFilter::InvalidInputError == vtkSurfaceMapsErrorGuard::InvalidInputError &&
+    vtkSurfaceMapFilter::NotCertifiedError == vtkSurfaceMapsErrorGuard::NotCertifiedError,
+  "the module's error codes");
+
 namespace
 {
 using surfacemaps::MapSetting;
@@ -410,22 +415,20 @@ int vtkSurfaceMapFilter::RequestData(vtkInformation*,
   const std::vector<vtkPolyData*> inputs = vtkSurfaceMapsConversion::PolyDataOf(inputVector[0]);
   const std::vector<vtkPolyData*> outputs = vtkSurfaceMapsConversion::PolyDataOf(outputVector);
   clear(outputs);
-  this->SetErrorCode(vtkErrorCode::NoError);
   this->Internals->Progress = 0.0;
   const int n = static_cast<int>(inputs.size());
   // A bad MappedInput is a setting error: the kept map stays.
   if (this->OutputMode == MAPPED_INPUT && this->MappedInput > 0 && this->MappedInput >= n)
   {
-    this->SetErrorCode(InvalidInputError);
-    vtkErrorMacro(<< "MappedInput is " << this->MappedInput << " but there "
-                  << (n == 1 ? "is 1 input" : "are " + std::to_string(n) + " inputs"));
-    return 0;
+    return vtkSurfaceMapsErrorGuard::Fail(this,
+      InvalidInputError,
+      "MappedInput is " + std::to_string(this->MappedInput) + " but there " +
+        (n == 1 ? "is 1 input" : "are " + std::to_string(n) + " inputs"));
   }
   const surfacemaps::ScopedThreadCount threads(this->NumberOfThreads);
   vtkSurfaceMapsErrorGuard::Policy policy;
-  policy.InputError.ErrorCode = InvalidInputError;
-  policy.NoResultError = { "no certified map: ", NotCertifiedError };
-  policy.OtherError = { "internal error: ", vtkErrorCode::UnknownError };
+  policy.NoResultError.Prefix = "no certified map: ";
+  policy.OtherError.Prefix = "internal error: ";
   policy.AbortedOutputs = outputVector;
   return vtkSurfaceMapsErrorGuard::Run(
     this,

@@ -115,8 +115,13 @@
  * where: "input 1 (a.obj) is not closed: 12 boundary edges"), landmark ids
  * that do not correspond, a "SpherePosition" array that is not a bijective
  * embedding, or a map that cannot be certified: vtkErrorMacro, every output
- * empty, and GetErrorCode() says which (InvalidInputError, NotCertifiedError,
- * vtkErrorCode::UnknownError for anything else). AbortExecute set during the
+ * empty, GetErrorCode() says which (InvalidInputError, NotCertifiedError,
+ * vtkErrorCode::UnknownError for anything else) and GetLastErrorMessage()
+ * why. An input whose producer failed (a reader whose file is missing) is an
+ * InvalidInputError too: the outputs are emptied although VTK does not run
+ * RequestData then, and the message names the input and the failed
+ * algorithm. Every algorithm of the module follows this rule; in a loop
+ * over files, check GetErrorCode() after Update(). AbortExecute set during the
  * update (e.g. from a ProgressEvent observer) stops within one iteration and
  * leaves every output empty without an error.
  *

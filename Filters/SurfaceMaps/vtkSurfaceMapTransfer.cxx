@@ -35,6 +35,10 @@
 
 vtkStandardNewMacro(vtkSurfaceMapTransfer);
 
+static_assert(
+  vtkSurfaceMapTransfer::InvalidInputError == vtkSurfaceMapsErrorGuard::InvalidInputError,
+  "the module's error codes");
+
 struct vtkSurfaceMapTransfer::vtkInternals
 {
   std::vector<std::string> ArrayNames;
@@ -369,13 +373,11 @@ int vtkSurfaceMapTransfer::RequestData(vtkInformation*,
   vtkPolyData* source = inputs[1];
   vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
   output->Initialize();
-  this->SetErrorCode(vtkErrorCode::NoError);
 
   // Point location fails only on embeddings that are not bijective, which
   // readPorts certified: anything but an InputError is an internal error.
   const vtkSurfaceMapsErrorGuard::Report internal{ "internal error: ", vtkErrorCode::UnknownError };
   vtkSurfaceMapsErrorGuard::Policy policy;
-  policy.InputError = { "", InvalidInputError };
   policy.NoResultError = internal;
   policy.OtherError = internal;
   return vtkSurfaceMapsErrorGuard::Run(

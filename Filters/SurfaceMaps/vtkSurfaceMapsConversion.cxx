@@ -339,6 +339,16 @@ vtkSurfaceMapsConversion::ValidatedInput vtkSurfaceMapsConversion::Validate(vtkP
     {
       result.landmarkIds.clear();
     }
+    // VTK 9.1's vtkOBJReader makes a point per distinct (v, vt, vn) corner,
+    // so a textured mesh read with it is open along its seams, with repeated
+    // points there: say what the two defects together usually mean.
+    const surfacemaps::MeshStatistics& stats = result.validation.statistics;
+    if (stats.boundaryEdges > 0 && stats.duplicateVertices > 0)
+    {
+      defects.push_back("has both boundary edges and repeated points: if it was read with "
+                        "vtkOBJReader (which splits vertices at texture seams), read it with "
+                        "vtkSurfaceMeshReader, or merge the points with vtkCleanPolyData");
+    }
   }
   return result;
 }

@@ -6,6 +6,8 @@
 #include "vtkAlgorithm.h"
 #include "vtkDemandDrivenPipeline.h"
 #include "vtkInformation.h"
+#include "vtkInformationIntegerKey.h"
+#include "vtkInformationStringKey.h"
 #include "vtkInformationVector.h"
 
 #include <exception>
@@ -25,28 +27,20 @@ struct ErrorCodeAccess : public vtkAlgorithm
 };
 
 int fail(vtkAlgorithm* self,
-  const vtkSurfaceMapsErrorGuard::Policy& policy,
   const vtkSurfaceMapsErrorGuard::Report& report,
   const std::exception& e,
   const std::function<void()>& clearOutputs)
 {
-  const std::string message = report.Prefix + e.what();
-  if (policy.KeepMessage)
-  {
-    policy.KeepMessage(message);
-  }
   clearOutputs();
-  if (report.ErrorCode != vtkSurfaceMapsErrorGuard::KeepErrorCode)
-  {
-    ErrorCodeAccess::Set(self, report.ErrorCode);
-  }
-  vtkErrorWithObjectMacro(self, << message);
-  return 0;
+  return vtkSurfaceMapsErrorGuard::Fail(self, report.ErrorCode, report.Prefix + e.what());
 }
 
 } // namespace
 
-vtkSurfaceMapsErrorGuard::Policy vtkSurfaceMapsErrorGuard::MessageOnly(const std::string& prefix)
+vtkInformationKeyMacro(vtkSurfaceMapsErrorGuard, LAST_ERROR_MESSAGE, String);
+vtkInformationKeyMacro(vtkSurfaceMapsErrorGuard, NUMBER_OF_REPORTS, Integer);
+
+vtkSurfaceMapsErrorGuard::Policy vtkSurfaceMapsErrorGuard::WithPrefix(const std::string& prefix)
 {
   Policy policy;
   policy.InputError.Prefix = prefix;
@@ -55,11 +49,40 @@ vtkSurfaceMapsErrorGuard::Policy vtkSurfaceMapsErrorGuard::MessageOnly(const std
   return policy;
 }
 
+int vtkSurfaceMapsErrorGuard::Fail(vtkAlgorithm* self,
+  unsigned long code,
+  const std::string& message)
+{
+  vtkInformation* info = self->GetInformation();
+  info->Set(LAST_ERROR_MESSAGE(), message.c_str());
+  info->Set(NUMBER_OF_REPORTS(), NumberOfReports(self) + 1);
+  ErrorCodeAccess::Set(self, code == vtkErrorCode::NoError ? vtkErrorCode::UnknownError : code);
+  vtkErrorWithObjectMacro(self, << message);
+  return 0;
+}
+
+const char* vtkSurfaceMapsErrorGuard::LastErrorMessage(const vtkAlgorithm* algorithm)
+{
+  // vtkAlgorithm::GetInformation is not const; reading does not change it.
+  vtkInformation* info =
+    algorithm ? const_cast<vtkAlgorithm*>(algorithm)->GetInformation() : nullptr;
+  const char* message = info ? info->Get(LAST_ERROR_MESSAGE()) : nullptr;
+  return message ? message : "";
+}
+
+int vtkSurfaceMapsErrorGuard::NumberOfReports(vtkAlgorithm* algorithm)
+{
+  vtkInformation* info = algorithm->GetInformation();
+  return info->Has(NUMBER_OF_REPORTS()) ? info->Get(NUMBER_OF_REPORTS()) : 0;
+}
+
 int vtkSurfaceMapsErrorGuard::Run(vtkAlgorithm* self,
   const Policy& policy,
   const std::function<int()>& body,
   const std::function<void()>& clearOutputs)
 {
+  ErrorCodeAccess::Set(self, vtkErrorCode::NoError);
+  self->GetInformation()->Remove(LAST_ERROR_MESSAGE());
   try
   {
     return body();
@@ -80,10 +103,10 @@ int vtkSurfaceMapsErrorGuard::Run(vtkAlgorithm* self,
   {
     const Report& report =
       e.kind() == surfacemaps::ErrorKind::Input ? policy.InputError : policy.NoResultError;
-    return fail(self, policy, report, e, clearOutputs);
+    return fail(self, report, e, clearOutputs);
   }
   catch (const std::exception& e)
   {
-    return fail(self, policy, policy.OtherError, e, clearOutputs);
+    return fail(self, policy.OtherError, e, clearOutputs);
   }
 }

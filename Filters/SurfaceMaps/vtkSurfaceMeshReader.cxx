@@ -2,6 +2,7 @@
 
 #include "vtkSurfaceMapsConversion.h"
 #include "vtkSurfaceMapsErrorGuard.h"
+#include "vtkSurfaceMapsExecutive.h"
 #include "vtkSurfaceMapsMarkups.h"
 
 #include "base/Error.h"
@@ -51,12 +52,6 @@
 #include <vector>
 
 vtkStandardNewMacro(vtkSurfaceMeshReader);
-
-class vtkSurfaceMeshReader::vtkInternals
-{
-public:
-  std::string LastError;
-};
 
 namespace
 {
@@ -445,7 +440,6 @@ void addFileName(vtkPolyData* mesh, const std::string& path)
 } // namespace
 
 vtkSurfaceMeshReader::vtkSurfaceMeshReader()
-  : Internals(new vtkInternals)
 {
   this->SetNumberOfInputPorts(0);
 }
@@ -470,7 +464,12 @@ bool vtkSurfaceMeshReader::CanReadFile(const char* fileName)
 
 const char* vtkSurfaceMeshReader::GetLastErrorMessage() const
 {
-  return this->Internals->LastError.c_str();
+  return vtkSurfaceMapsErrorGuard::LastErrorMessage(this);
+}
+
+vtkExecutive* vtkSurfaceMeshReader::CreateDefaultExecutive()
+{
+  return vtkSurfaceMapsExecutive::New();
 }
 
 int vtkSurfaceMeshReader::RequestData(vtkInformation*,
@@ -478,12 +477,9 @@ int vtkSurfaceMeshReader::RequestData(vtkInformation*,
   vtkInformationVector* outputVector)
 {
   vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
-  this->Internals->LastError.clear();
-  vtkSurfaceMapsErrorGuard::Policy policy = vtkSurfaceMapsErrorGuard::MessageOnly();
-  policy.KeepMessage = [this](const std::string& message) { this->Internals->LastError = message; };
   return vtkSurfaceMapsErrorGuard::Run(
     this,
-    policy,
+    vtkSurfaceMapsErrorGuard::Policy(),
     [&]
     {
       if (!this->FileName || !*this->FileName)

@@ -55,8 +55,6 @@
 #include "SurfaceMapsFiltersModule.h" // for export macro
 #include "vtkPolyDataAlgorithm.h"
 
-#include <memory> // for std::unique_ptr
-
 class SURFACEMAPSFILTERS_EXPORT vtkSurfaceMeshReader : public vtkPolyDataAlgorithm
 {
 public:
@@ -96,13 +94,19 @@ public:
   static bool CanReadFile(const char* fileName);
 
   /**
-   * The message of the last failed read, empty after a successful one.
+   * Why the last update failed: the reason its error message gave, also when
+   * an input's producer failed upstream (then it names the input and what
+   * failed). Empty after a successful update. After a failure GetErrorCode()
+   * is vtkSurfaceMapFilter::InvalidInputError (an input cannot be used, or
+   * was not produced), NotCertifiedError, or vtkErrorCode::UnknownError (an
+   * internal error), and the outputs are empty.
    */
   const char* GetLastErrorMessage() const;
 
 protected:
   vtkSurfaceMeshReader();
   ~vtkSurfaceMeshReader() override;
+  vtkExecutive* CreateDefaultExecutive() override;
 
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 
@@ -113,9 +117,6 @@ protected:
 private:
   vtkSurfaceMeshReader(const vtkSurfaceMeshReader&) = delete;
   void operator=(const vtkSurfaceMeshReader&) = delete;
-
-  class vtkInternals;
-  std::unique_ptr<vtkInternals> Internals;
 };
 
 #endif

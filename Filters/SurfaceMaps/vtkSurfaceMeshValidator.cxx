@@ -2,6 +2,7 @@
 
 #include "vtkSurfaceMapsConversion.h"
 #include "vtkSurfaceMapsErrorGuard.h"
+#include "vtkSurfaceMapsExecutive.h"
 
 #include "mesh/LandmarkValidation.h"
 #include "mesh/MeshValidation.h"
@@ -195,7 +196,7 @@ int vtkSurfaceMeshValidator::RequestData(vtkInformation*,
 
   return vtkSurfaceMapsErrorGuard::Run(
     this,
-    vtkSurfaceMapsErrorGuard::MessageOnly(),
+    vtkSurfaceMapsErrorGuard::Policy(),
     [&]
     {
       Columns columns(output, n);
@@ -214,6 +215,16 @@ int vtkSurfaceMeshValidator::RequestData(vtkInformation*,
       output->Initialize();
       this->AllValid = false;
     });
+}
+
+const char* vtkSurfaceMeshValidator::GetLastErrorMessage() const
+{
+  return vtkSurfaceMapsErrorGuard::LastErrorMessage(this);
+}
+
+vtkExecutive* vtkSurfaceMeshValidator::CreateDefaultExecutive()
+{
+  return vtkSurfaceMapsExecutive::New();
 }
 
 void vtkSurfaceMeshValidator::PrintSelf(ostream& os, vtkIndent indent)

@@ -261,7 +261,7 @@ int vtkSurfaceSequenceInterpolator::RequestData(vtkInformation*,
     ? outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP())
     : this->TimeValue;
 
-  vtkSurfaceMapsErrorGuard::Policy policy = vtkSurfaceMapsErrorGuard::MessageOnly();
+  vtkSurfaceMapsErrorGuard::Policy policy;
   policy.AbortedOutputs = outputVector;
   return vtkSurfaceMapsErrorGuard::Run(
     this,

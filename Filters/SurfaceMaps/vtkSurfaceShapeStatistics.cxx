@@ -3,6 +3,7 @@
 #include "vtkSurfaceMapsCombination.h"
 #include "vtkSurfaceMapsConversion.h"
 #include "vtkSurfaceMapsErrorGuard.h"
+#include "vtkSurfaceMapsExecutive.h"
 
 #include "base/Aborted.h"
 #include "statistics/Procrustes.h"
@@ -124,7 +125,7 @@ int vtkSurfaceShapeStatistics::RequestData(vtkInformation*,
     }
   };
 
-  vtkSurfaceMapsErrorGuard::Policy policy = vtkSurfaceMapsErrorGuard::MessageOnly();
+  vtkSurfaceMapsErrorGuard::Policy policy;
   policy.AbortedOutputs = outputVector;
   return vtkSurfaceMapsErrorGuard::Run(
     this,
@@ -185,6 +186,16 @@ int vtkSurfaceShapeStatistics::RequestData(vtkInformation*,
       return 1;
     },
     [output] { output->Initialize(); });
+}
+
+const char* vtkSurfaceShapeStatistics::GetLastErrorMessage() const
+{
+  return vtkSurfaceMapsErrorGuard::LastErrorMessage(this);
+}
+
+vtkExecutive* vtkSurfaceShapeStatistics::CreateDefaultExecutive()
+{
+  return vtkSurfaceMapsExecutive::New();
 }
 
 void vtkSurfaceShapeStatistics::PrintSelf(ostream& os, vtkIndent indent)

@@ -116,9 +116,20 @@ public:
   vtkGetMacro(Coefficient, double);
   ///@}
 
+  /**
+   * Why the last update failed: the reason its error message gave, also when
+   * an input's producer failed upstream (then it names the input and what
+   * failed). Empty after a successful update. After a failure GetErrorCode()
+   * is vtkSurfaceMapFilter::InvalidInputError (an input cannot be used, or
+   * was not produced), NotCertifiedError, or vtkErrorCode::UnknownError (an
+   * internal error), and the outputs are empty.
+   */
+  const char* GetLastErrorMessage() const;
+
 protected:
   vtkSurfaceShapeStatistics();
   ~vtkSurfaceShapeStatistics() override;
+  vtkExecutive* CreateDefaultExecutive() override;
 
   int FillInputPortInformation(int port, vtkInformation* info) override;
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;

@@ -1,6 +1,7 @@
 #include "vtkSurfaceTextureSeamSplitter.h"
 
 #include "vtkSurfaceMapsErrorGuard.h"
+#include "vtkSurfaceMapsExecutive.h"
 
 #include "vtkCellArray.h"
 #include "vtkCellArrayIterator.h"
@@ -169,7 +170,7 @@ int vtkSurfaceTextureSeamSplitter::RequestData(
   vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
   return vtkSurfaceMapsErrorGuard::Run(
     this,
-    vtkSurfaceMapsErrorGuard::MessageOnly(),
+    vtkSurfaceMapsErrorGuard::Policy(),
     [&]
     {
       vtkDataArray* corners = input->GetCellData()->GetArray("CornerTCoords");
@@ -198,6 +199,16 @@ int vtkSurfaceTextureSeamSplitter::RequestData(
       return 1;
     },
     [output] { output->Initialize(); });
+}
+
+const char* vtkSurfaceTextureSeamSplitter::GetLastErrorMessage() const
+{
+  return vtkSurfaceMapsErrorGuard::LastErrorMessage(this);
+}
+
+vtkExecutive* vtkSurfaceTextureSeamSplitter::CreateDefaultExecutive()
+{
+  return vtkSurfaceMapsExecutive::New();
 }
 
 void vtkSurfaceTextureSeamSplitter::PrintSelf(ostream& os, vtkIndent indent)

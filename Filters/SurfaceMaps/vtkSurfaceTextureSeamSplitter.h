@@ -40,9 +40,20 @@ public:
   vtkTypeMacro(vtkSurfaceTextureSeamSplitter, vtkPolyDataAlgorithm);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
+  /**
+   * Why the last update failed: the reason its error message gave, also when
+   * an input's producer failed upstream (then it names the input and what
+   * failed). Empty after a successful update. After a failure GetErrorCode()
+   * is vtkSurfaceMapFilter::InvalidInputError (an input cannot be used, or
+   * was not produced), NotCertifiedError, or vtkErrorCode::UnknownError (an
+   * internal error), and the outputs are empty.
+   */
+  const char* GetLastErrorMessage() const;
+
 protected:
   vtkSurfaceTextureSeamSplitter() = default;
   ~vtkSurfaceTextureSeamSplitter() override = default;
+  vtkExecutive* CreateDefaultExecutive() override;
 
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 

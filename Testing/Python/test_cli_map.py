@@ -428,3 +428,30 @@ def test_sizing_arrays_and_counts_are_checked(tmp_path):
     assert r.returncode == 2 and "--sizing needs one file or array name per mesh (2 meshes, 1 sizing" in r.stderr
     assert not out.exists()
     assert "--sizing SA SB" in run("map", "--help").stdout
+
+
+def test_short_output_dir_and_thread_count(tmp_path):
+    out = tmp_path / "out"
+    r = run("map", data("ellipsoid.obj"), *SHORT, "-o", out, "--threads", "1")
+    assert r.returncode == 0, r.stderr
+    report = json.loads((out / "report.json").read_text())
+    assert report["threads"] == 1
+    help_text = run("map", "--help").stdout
+    assert "-o, --output-dir DIR" in help_text and "--threads N" in help_text
+    for bad in ("0", "two", "1.5", "2000"):
+        r = run("map", data("ellipsoid.obj"), "-o", tmp_path / "bad", "--threads", bad)
+        assert r.returncode == 2 and f"--threads needs a whole number from 1 to 1024, not '{bad}'" in r.stderr
+    assert not (tmp_path / "bad").exists()
+
+
+@pytest.mark.parametrize("command", ["check", "embed", "evaluate", "map", "statistics", "transfer"])
+def test_every_command_takes_threads(command):
+    help_text = run(command, "--help").stdout
+    assert "--threads N" in help_text, command
+
+
+def test_threads_is_taken_before_or_after_the_command():
+    assert run("--threads", "1", "check", data("ellipsoid.obj")).returncode == 0
+    assert run("check", data("ellipsoid.obj"), "--threads", "2").returncode == 0
+    r = run("check", data("ellipsoid.obj"), "--threads")
+    assert r.returncode == 2 and "--threads needs a whole number" in r.stderr

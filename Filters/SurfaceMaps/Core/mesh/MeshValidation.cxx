@@ -222,6 +222,7 @@ void checkVertexUse(const PolygonMesh& mesh, MeshValidationResult& result)
       }
     }
   }
+  result.statistics.duplicateVertices = duplicates;
   if (duplicates > 0)
   {
     result.defects.push_back("has " + plural(duplicates, "duplicate vertex", "duplicate vertices") +

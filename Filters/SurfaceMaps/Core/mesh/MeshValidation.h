@@ -39,6 +39,8 @@ struct MeshStatistics
   long long boundaryEdges = -1;
   long long nonManifoldEdges = -1;
   long long nonManifoldVertices = -1;
+  /// Vertices at the same position as another one.
+  long long duplicateVertices = -1;
   long long components = -1;
   /// Only for a closed, manifold, connected, orientable surface.
   int genus = -1;
