@@ -121,8 +121,8 @@ vtkSmartPointer<vtkRenderer> captionRenderer(const std::string& caption, const d
   return renderer;
 }
 
-// How far the view turns away from facing the first surface's two largest
-// principal axes (degrees), so that the shape reads as 3-D.
+// How far the view turns away from facing the first surface's broadest side
+// (degrees), so that the shape reads as 3-D.
 const double ViewAzimuth = 0.0, ViewElevation = 20.0;
 // Room left around a fitted surface (1: it touches the viewport's edges).
 const double FitMargin = 1.12;
@@ -173,18 +173,26 @@ void principalAxes(vtkPolyData* mesh, double axes[3][3])
   }
 }
 
-// The view of the first panel: looking at its two largest principal axes
-// (the largest across, the second up), turned by ViewAzimuth and
-// ViewElevation; `forward` is the direction of projection.
+// The view of the first panel: facing its broadest side (looking along its
+// smallest principal axis), world y up as in VTK's default view (z when y
+// is nearly the viewing direction), raised by ViewElevation; `forward` is
+// the direction of projection.
 void firstView(const SurfacePanel& panel, double forward[3], double up[3])
 {
-  double axes[3][3], toViewer[3];
+  double axes[3][3];
   principalAxes(panelMesh(panel), axes);
-  vtkMath::Cross(axes[0], axes[1], toViewer);
+  const double* toViewer = axes[2];
+  double worldUp[3] = { 0.0, 1.0, 0.0 };
+  if (std::abs(toViewer[1]) > 0.9)
+  {
+    worldUp[1] = 0.0;
+    worldUp[2] = 1.0;
+  }
   vtkNew<vtkCamera> camera;
   camera->SetFocalPoint(0.0, 0.0, 0.0);
-  camera->SetPosition(toViewer);
-  camera->SetViewUp(axes[1]);
+  camera->SetPosition(toViewer[0], toViewer[1], toViewer[2]);
+  camera->SetViewUp(worldUp);
+  camera->OrthogonalizeViewUp();
   camera->Azimuth(ViewAzimuth);
   camera->Elevation(ViewElevation);
   camera->OrthogonalizeViewUp();

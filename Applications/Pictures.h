@@ -98,10 +98,11 @@ vtkSmartPointer<vtkTexture> checkerboardTexture(int squares = 16, int size = 512
 
 /// The panels side by side (800 x 600 for one, 1200 x 600 for two), with a
 /// colour legend of `legend` titled `legendTitle` at the right when `legend`
-/// is given; written atomically. The first surface is seen facing its two
-/// largest principal axes (the largest across, the second up, slightly
-/// turned), every other one from the same side after its `rotation`; each
-/// is centred and fitted whole into its panel (not cropped).
+/// is given; written atomically. The first surface is seen facing its
+/// broadest side (along its smallest principal axis), world y up (z when y
+/// is nearly the viewing direction), slightly from above; every other one
+/// from the same side after its `rotation`; each is centred and fitted whole
+/// into its panel (not cropped); captions in a strip above the surfaces.
 void writeSurfacePicture(const std::vector<SurfacePanel>& panels,
   vtkScalarsToColors* legend,
   const std::string& legendTitle,

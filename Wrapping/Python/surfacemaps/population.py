@@ -439,7 +439,7 @@ def surface_pictures(keyframes, names, pattern, source, times, statistics, direc
     so a square follows one material region through the stages); spread.png (the per-vertex
     standard deviation over all specimens on their mean) and mode_1.png (mode 1 at -2, 0, +2
     standard deviations); frames.png only for a series. The shapes of a picture share one camera
-    facing their principal axes (surfacemaps.render.render_panels)."""
+    facing their broadest side (surfacemaps.render.render_panels)."""
     from surfacemaps import render
     paths = []
     frame_times = np.linspace(times[0], times[-1], 6) if source is not None else []

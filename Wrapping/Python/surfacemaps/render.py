@@ -17,8 +17,9 @@ checkerboard, whose squares vary in hue with u and in brightness with v so that
 stretch, flips and seams show. ``render_panels`` draws several surfaces side
 by side, with captions, through one camera.
 
-Every picture faces its surfaces' two largest principal axes, the largest
-across, slightly turned, and fits every surface into its panel at one scale.
+Every picture faces its surfaces' broadest side (along their smallest principal
+axis), y up (z when looking along y), seen slightly from above, and fits every
+surface into its panel at one scale.
 
 Rendering needs an X display (Debian's VTK renders through X only). Without
 one, ``ensure_display()`` (which every function here calls) starts a virtual
@@ -59,8 +60,7 @@ from vtkmodules.vtkRenderingAnnotation import vtkScalarBarActor
 from vtkmodules.vtkRenderingCore import (vtkActor, vtkCamera, vtkPolyDataMapper, vtkRenderer, vtkRenderWindow,
                                          vtkTextActor, vtkWindowToImageFilter)
 
-# How far the shared view turns away from facing the surfaces' two largest principal axes
-# (degrees), so that the shape reads as 3-D; the room left around the fitted surfaces.
+# How far the shared view turns away from facing the surfaces' broadest side (degrees), so that the shape reads as 3-D; the room left around the fitted surfaces.
 VIEW_AZIMUTH, VIEW_ELEVATION = 0.0, 20.0
 FIT_MARGIN = 1.12
 # The width of a picture's colour legend and the height of the strip holding the captions (pixels).
@@ -164,14 +164,16 @@ def _points(mesh):
 
 def shared_view(meshes, aspect, azimuth=VIEW_AZIMUTH, elevation=VIEW_ELEVATION):
     """(offset, view up) of the camera all `meshes` share, each seen from its centre + offset:
-    facing the two largest principal axes of all their points (each mesh centred; the largest
-    across), turned by `azimuth` and `elevation` degrees, at the distance at which every mesh fits
-    a viewport of `aspect` (width / height): one scale for all, none cropped."""
+    facing their broadest side (along the smallest principal axis of all their points, each mesh
+    centred), world y up as in VTK's default view (z when y is nearly the viewing direction),
+    turned by `azimuth` and `elevation` degrees, at the distance at which every mesh fits a
+    viewport of `aspect` (width / height): one scale for all, none cropped."""
     axes = principal_axes(np.vstack([_points(m) - _points(m).mean(axis=0) for m in meshes]))
     camera = vtkCamera()
     camera.SetFocalPoint(0.0, 0.0, 0.0)
-    camera.SetPosition(*np.cross(axes[0], axes[1]))
-    camera.SetViewUp(*axes[1])
+    camera.SetPosition(*axes[2])
+    camera.SetViewUp(0.0, 0.0, 1.0) if abs(axes[2][1]) > 0.9 else camera.SetViewUp(0.0, 1.0, 0.0)
+    camera.OrthogonalizeViewUp()
     camera.Azimuth(azimuth)
     camera.Elevation(elevation)
     camera.OrthogonalizeViewUp()
