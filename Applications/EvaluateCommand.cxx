@@ -48,9 +48,10 @@ const char* const EvaluateHelp =
   "                    (a checkerboard of SOURCE's positions on both: on\n"
   "                    TARGET it shows how the map carries the squares) and\n"
   "                    DIR/distortion_curve.png (the cumulative curve).\n"
-  "                    Rendered with VTK through OpenGL: this needs a display\n"
-  "                    (on a machine without one run under 'xvfb-run -a');\n"
-  "                    without a display the command stops with exit code 2\n"
+  "                    Rendered with VTK through OpenGL on the display, or\n"
+  "                    without one on a virtual display (Xvfb, Debian package\n"
+  "                    xvfb) started for the command and stopped at its end;\n"
+  "                    with neither the command stops with exit code 2\n"
   "                    before computing\n"
   "\n"
   "The second form evaluates every map in MAPDIR, an output directory of\n"
@@ -83,8 +84,8 @@ const char* const EvaluateHelp =
   "  distortion_curves_<j>.png           both maps' cumulative curves\n"
   "\n"
   "Exit code 0 on success, 2 for bad usage or input (also a directory that is\n"
-  "not a map output, or no display for --pictures), 3 when a map directory's\n"
-  "certificate fails (its files are written all the same).\n";
+  "not a map output, or no display nor Xvfb for --pictures), 3 when a map\n"
+  "directory's certificate fails (its files are written all the same).\n";
 
 namespace
 {

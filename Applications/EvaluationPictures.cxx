@@ -3,12 +3,16 @@
 #include "EvaluationOutputs.h"
 #include "Pictures.h"
 
+#include "vtkAppendPolyData.h"
+#include "vtkCellArray.h"
 #include "vtkCellData.h"
 #include "vtkChart.h"
+#include "vtkClipPolyData.h"
 #include "vtkDataArray.h"
 #include "vtkDoubleArray.h"
 #include "vtkFieldData.h"
 #include "vtkLookupTable.h"
+#include "vtkNew.h"
 #include "vtkPointData.h"
 #include "vtkPolyData.h"
 #include "vtkPolyDataMapper.h"
@@ -26,12 +30,8 @@ namespace
 
 // The distortion shown darkest (as surfaces.render draws it).
 const double DistortionShownDarkest = 3.0;
-// Squares of the checkerboard along the longest side of the source's box: at
-// most 8, fewer on coarse meshes so that every square spans several vertices.
-int checkerSquares(vtkIdType vertices)
-{
-  return std::max(3, std::min(8, static_cast<int>(std::lround(std::sqrt(vertices) / 6.0))));
-}
+// Squares of the checkerboard along the longest side of the source's box.
+const int CheckerSquares = 8;
 
 // White at 1 (no distortion) to red at DistortionShownDarkest, dark red above.
 vtkSmartPointer<vtkLookupTable> distortionTable()
@@ -62,51 +62,101 @@ vtkSmartPointer<vtkLookupTable> checkerTable()
   return table;
 }
 
-// Per vertex, the parity (0 or 1) of the 3-D checkerboard cell its
-// normalised source position lies in; interpolated before mapping, the two
-// colours meet half way between vertices of different parity.
-vtkSmartPointer<vtkDoubleArray> checkerboard(vtkPolyData* source)
+// `mesh` with its triangles cut along the planes on which component `axis`
+// of its point array `name`, times CheckerSquares / 2, is an integer (the
+// array interpolated linearly across each triangle, as the map is): split
+// at each plane in turn, the part below kept, the part above cut further.
+vtkSmartPointer<vtkPolyData> cutAlong(vtkPolyData* mesh, const char* name, int axis)
 {
-  vtkSmartPointer<vtkDoubleArray> positions = sourcePositions(source);
-  const int squares = checkerSquares(source->GetNumberOfPoints());
-  auto checks = vtkSmartPointer<vtkDoubleArray>::New();
-  checks->SetName("Checkerboard");
-  checks->SetNumberOfTuples(positions->GetNumberOfTuples());
-  for (vtkIdType v = 0; v < positions->GetNumberOfTuples(); ++v)
+  auto rest = vtkSmartPointer<vtkPolyData>::New();
+  rest->ShallowCopy(mesh);
+  double range[2];
+  mesh->GetPointData()->GetArray(name)->GetRange(range, axis);
+  vtkNew<vtkAppendPolyData> pieces;
+  for (double k = std::floor(range[0] * CheckerSquares / 2.0) + 1.0;
+       k < range[1] * CheckerSquares / 2.0;
+       k += 1.0)
   {
-    long cells = 0;
-    for (int k = 0; k < 3; ++k)
+    vtkDataArray* positions = rest->GetPointData()->GetArray(name);
+    vtkNew<vtkDoubleArray> scaled;
+    scaled->SetName("Cut");
+    scaled->SetNumberOfTuples(positions->GetNumberOfTuples());
+    for (vtkIdType v = 0; v < positions->GetNumberOfTuples(); ++v)
     {
-      cells += static_cast<long>(std::floor((positions->GetComponent(v, k) + 2.0) * squares / 2.0));
+      scaled->SetValue(v, positions->GetComponent(v, axis) * CheckerSquares / 2.0);
     }
-    checks->SetValue(v, static_cast<double>(cells % 2));
+    rest->GetPointData()->SetScalars(scaled);
+    vtkNew<vtkClipPolyData> clip;
+    clip->SetInputData(rest);
+    clip->SetValue(k);
+    clip->GenerateClippedOutputOn();
+    clip->Update();
+    pieces->AddInputData(clip->GetClippedOutput());
+    rest = vtkSmartPointer<vtkPolyData>::New();
+    rest->ShallowCopy(clip->GetOutput());
   }
-  return checks;
+  pieces->AddInputData(rest);
+  pieces->Update();
+  auto result = vtkSmartPointer<vtkPolyData>::New();
+  result->ShallowCopy(pieces->GetOutput());
+  result->GetPointData()->RemoveArray("Cut");
+  return result;
 }
 
-// `mesh` (geometry only) with the arrays given.
-vtkSmartPointer<vtkPolyData> withArrays(vtkPolyData* mesh,
-  vtkDataArray* cellArray,
-  vtkDataArray* pointArray)
+// `mesh` (geometry only) with `positions` cut along the checker's planes in
+// every axis (cutAlong) and the cell array "Checkerboard": per piece the
+// parity (0 or 1) of the cube of side 2 / CheckerSquares its positions'
+// centroid lies in. The squares' edges are straight in `positions`: on the
+// source they are planar cuts, on the target exactly the map's image of them.
+vtkSmartPointer<vtkPolyData> checkered(vtkPolyData* mesh, vtkDataArray* positions)
+{
+  auto current = vtkSmartPointer<vtkPolyData>::New();
+  current->CopyStructure(mesh);
+  current->GetPointData()->AddArray(positions);
+  current->GetPointData()->SetNormals(smoothNormals(mesh)); // interpolated along the cuts: no seams
+  for (int axis = 0; axis < 3; ++axis)
+  {
+    current = cutAlong(current, positions->GetName(), axis);
+  }
+  vtkDataArray* cut = current->GetPointData()->GetArray(positions->GetName());
+  vtkNew<vtkDoubleArray> checks;
+  checks->SetName("Checkerboard");
+  vtkCellArray* polygons = current->GetPolys();
+  vtkIdType n = 0;
+  const vtkIdType* ids = nullptr;
+  for (polygons->InitTraversal(); polygons->GetNextCell(n, ids);)
+  {
+    long cube = 0;
+    for (int k = 0; k < 3; ++k)
+    {
+      double centroid = 0.0;
+      for (vtkIdType i = 0; i < n; ++i)
+      {
+        centroid += cut->GetComponent(ids[i], k) / n;
+      }
+      cube += static_cast<long>(std::floor((centroid + 2.0) * CheckerSquares / 2.0));
+    }
+    checks->InsertNextValue(static_cast<double>(cube % 2));
+  }
+  current->GetCellData()->AddArray(checks);
+  return current;
+}
+
+// `mesh` (geometry only) with the cell array given.
+vtkSmartPointer<vtkPolyData> withArray(vtkPolyData* mesh, vtkDataArray* cellArray)
 {
   auto copy = vtkSmartPointer<vtkPolyData>::New();
   copy->CopyStructure(mesh);
   copy->GetCellData()->AddArray(cellArray);
-  copy->GetPointData()->AddArray(pointArray);
   return copy;
 }
 
-// A mapper colouring `mesh` by its array `name` through `table`.
+// A mapper colouring `mesh` by its cell array `name` through `table`.
 vtkSmartPointer<vtkPolyDataMapper> colouredBy(vtkPolyData* mesh,
   const char* name,
-  bool cells,
   vtkLookupTable* table)
 {
-  vtkSmartPointer<vtkPolyDataMapper> mapper = arrayMapper(mesh, name, cells);
-  if (!cells)
-  {
-    mapper->InterpolateScalarsBeforeMappingOn();
-  }
+  vtkSmartPointer<vtkPolyDataMapper> mapper = arrayMapper(mesh, name, true);
   mapper->SetColorModeToMapScalars();
   mapper->SetLookupTable(table);
   mapper->UseLookupTableScalarRangeOn();
@@ -122,9 +172,11 @@ void writeMapPictures(const MapSides& sides, vtkPolyData* result, const std::str
   {
     throw std::runtime_error("no per-triangle distortion to draw in " + prefix + "distortion.png");
   }
-  vtkSmartPointer<vtkDoubleArray> checks = checkerboard(sides.source);
-  const vtkSmartPointer<vtkPolyData> meshes[2] = { withArrays(sides.source, distortion, checks),
-    withArrays(sides.target, distortion, checks) };
+  vtkSmartPointer<vtkDoubleArray> positions = sourcePositions(sides.source);
+  const vtkSmartPointer<vtkPolyData> meshes[2] = { withArray(sides.source, distortion),
+    withArray(sides.target, distortion) };
+  const vtkSmartPointer<vtkPolyData> checks[2] = { checkered(sides.source, positions),
+    checkered(sides.target, positions) };
   const std::string captions[2] = { sides.sourceCaption, sides.targetCaption };
 
   vtkSmartPointer<vtkLookupTable> heat = distortionTable();
@@ -132,9 +184,15 @@ void writeMapPictures(const MapSides& sides, vtkPolyData* result, const std::str
   std::vector<SurfacePanel> heatPanels, checkerPanels;
   for (int k = 0; k < 2; ++k)
   {
-    heatPanels.push_back({ colouredBy(meshes[k], "MaxStretch", true, heat), captions[k] });
-    checkerPanels.push_back({ colouredBy(meshes[k], "Checkerboard", false, squares), captions[k] });
+    heatPanels.push_back({ colouredBy(meshes[k], "MaxStretch", heat), captions[k] });
+    checkerPanels.push_back({ colouredBy(checks[k], "Checkerboard", squares), captions[k] });
   }
+  // The target seen from the source's side: rotated onto it through the map
+  // (its points correspond to the source's one by one).
+  alignRotation(sides.source->GetPoints(), sides.target->GetPoints(), heatPanels[1].rotation);
+  std::copy(&heatPanels[1].rotation[0][0],
+    &heatPanels[1].rotation[0][0] + 9,
+    &checkerPanels[1].rotation[0][0]);
   writeSurfacePicture(heatPanels, heat, "distortion", prefix + "distortion.png");
   writeSurfacePicture(checkerPanels, nullptr, "", prefix + "checkerboard.png");
 }
@@ -148,6 +206,7 @@ void writeDistortionCurvePicture(const std::vector<std::pair<std::string, vtkPol
   chart.yTitle = "area fraction below";
   chart.title = "Cumulative distortion";
   chart.fractionY = true;
+  chart.legendLowerRight = true;
   for (const auto& [label, result] : curves)
   {
     vtkDataArray* samples = result->GetFieldData()->GetArray("DistortionCurve");

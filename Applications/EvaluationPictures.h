@@ -1,5 +1,4 @@
-// surfacemap evaluate --pictures: a measured map drawn (see Pictures.h for
-// the display they need).
+// surfacemap evaluate --pictures: a measured map drawn (see Pictures.h).
 #pragma once
 
 #include <string>
@@ -26,10 +25,13 @@ struct MapSides
 ///                             as MaxStretch: 1 white to 3 dark red, above 3
 ///                             darkest
 ///   <prefix>checkerboard.png  a checkerboard of the source's positions
-///                             (sourcePositions; 3 to 8 squares along the
-///                             longest side, fewer on coarse meshes), the
-///                             same on both sides: on the target it shows
-///                             how the map carries it
+///                             (sourcePositions; 8 squares along the
+///                             longest side), the same on both sides: each
+///                             triangle cut along the squares' edges in
+///                             those positions, so on the source the edges
+///                             are straight and on the target they are the
+///                             map's image of them
+/// Both pictures show the two sides through one camera (writeSurfacePicture).
 /// Throws std::runtime_error naming a file that cannot be written.
 void writeMapPictures(const MapSides& sides, vtkPolyData* result, const std::string& prefix);
 

@@ -2,6 +2,7 @@
 
 #include "AtomicFiles.h"
 #include "Commands.h"
+#include "VirtualDisplay.h"
 
 #include "vtkSurfaceCheckerboardSource.h"
 
@@ -15,13 +16,18 @@
 #include "vtkCoordinate.h"
 #include "vtkDoubleArray.h"
 #include "vtkImageData.h"
+#include "vtkLandmarkTransform.h"
 #include "vtkLookupTable.h"
+#include "vtkMath.h"
+#include "vtkMatrix4x4.h"
 #include "vtkNew.h"
 #include "vtkPNGWriter.h"
 #include "vtkPlot.h"
 #include "vtkPointData.h"
+#include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkPolyDataMapper.h"
+#include "vtkPolyDataNormals.h"
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
 #include "vtkScalarBarActor.h"
@@ -33,6 +39,7 @@
 #include "vtkWindowToImageFilter.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <stdexcept>
@@ -46,8 +53,12 @@ namespace
 const int Height = 600;
 // Width of a picture of one panel or chart, and of each of several panels.
 const int SingleWidth = 800, PanelWidth = 600;
-// The share of a surface picture's width its colour legend takes.
+// The share of a surface picture's width its colour legend takes, and its
+// least width in pixels (room for a title of about 16 characters).
 const double LegendShare = 0.12;
+const int MinLegendWidth = 144;
+// Height of the strip above the surfaces that holds their captions (pixels).
+const int CaptionHeight = 40;
 
 vtkSmartPointer<vtkDoubleArray> column(const std::string& name, const std::vector<double>& values)
 {
@@ -60,13 +71,18 @@ vtkSmartPointer<vtkDoubleArray> column(const std::string& name, const std::vecto
   return array;
 }
 
-// One tick per value of `x` on `axis`, which then stays fixed around them.
+// Ticks of an axis of integers: more would overlap at 800 pixels.
+const std::size_t MaxIntegerTicks = 12;
+
+// A tick on every value of `x` (every second, third... when there are more
+// than MaxIntegerTicks) on `axis`, which then stays fixed around them.
 void integerTicks(vtkAxis* axis, const std::vector<double>& x)
 {
   vtkNew<vtkDoubleArray> ticks;
-  for (double value : x)
+  const std::size_t step = (x.size() + MaxIntegerTicks - 1) / MaxIntegerTicks;
+  for (std::size_t k = 0; k < x.size(); k += step)
   {
-    ticks->InsertNextValue(value);
+    ticks->InsertNextValue(x[k]);
   }
   axis->SetCustomTickPositions(ticks);
   axis->SetBehavior(vtkAxis::FIXED);
@@ -88,23 +104,177 @@ void addSeries(vtkChartXY* chart, int type, const ChartSeries& series, int index
   plot->SetWidth(2.0);
 }
 
-// A caption in the top left corner of `renderer`.
-void addCaption(vtkRenderer* renderer, const std::string& caption)
+// A renderer in `viewport` holding only `caption`, at its left.
+vtkSmartPointer<vtkRenderer> captionRenderer(const std::string& caption, const double viewport[4])
 {
   vtkNew<vtkTextActor> text;
   text->SetInput(caption.c_str());
   text->GetTextProperty()->SetColor(0.1, 0.1, 0.1);
   text->GetTextProperty()->SetFontSize(18);
-  text->GetTextProperty()->SetVerticalJustificationToTop();
+  text->GetTextProperty()->SetVerticalJustificationToCentered();
   text->GetPositionCoordinate()->SetCoordinateSystemToNormalizedViewport();
-  text->SetPosition(0.03, 0.96);
+  text->SetPosition(0.03, 0.5);
+  auto renderer = vtkSmartPointer<vtkRenderer>::New();
+  renderer->SetViewport(viewport[0], viewport[1], viewport[2], viewport[3]);
+  renderer->SetBackground(1.0, 1.0, 1.0);
   renderer->AddActor2D(text);
+  return renderer;
 }
 
-// A renderer showing `mapper`'s surface in the default view of every
-// picture, in `viewport` (xmin, ymin, xmax, ymax).
-vtkSmartPointer<vtkRenderer> surfaceRenderer(const SurfacePanel& panel, const double viewport[4])
+// How far the view turns away from facing the first surface's broadest side
+// (degrees), so that the shape reads as 3-D.
+const double ViewAzimuth = 0.0, ViewElevation = 20.0;
+// Room left around a fitted surface (1: it touches the viewport's edges).
+const double FitMargin = 1.12;
+
+// The surface a panel draws: its mapper's input.
+vtkPolyData* panelMesh(const SurfacePanel& panel)
 {
+  return vtkPolyData::SafeDownCast(panel.mapper->GetInput());
+}
+
+// The principal axes of `mesh`'s points (rows, the largest spread first),
+// each signed so that its largest component is positive: a mesh modelled
+// y-up or z-up keeps that direction up.
+void principalAxes(vtkPolyData* mesh, double axes[3][3])
+{
+  const vtkIdType n = mesh->GetNumberOfPoints();
+  double mean[3] = { 0.0, 0.0, 0.0 }, covariance[3][3] = {};
+  for (vtkIdType v = 0; v < n; ++v)
+  {
+    vtkMath::Add(mean, mesh->GetPoint(v), mean);
+  }
+  vtkMath::MultiplyScalar(mean, n > 0 ? 1.0 / n : 0.0);
+  for (vtkIdType v = 0; v < n; ++v)
+  {
+    double d[3];
+    vtkMath::Subtract(mesh->GetPoint(v), mean, d);
+    for (int i = 0; i < 3; ++i)
+    {
+      for (int j = 0; j < 3; ++j)
+      {
+        covariance[i][j] += d[i] * d[j];
+      }
+    }
+  }
+  double vectors[3][3], values[3];
+  double* a[3] = { covariance[0], covariance[1], covariance[2] };
+  double* v[3] = { vectors[0], vectors[1], vectors[2] };
+  vtkMath::Jacobi(a, values, v); // eigenvectors in columns, largest eigenvalue first
+  for (int k = 0; k < 3; ++k)
+  {
+    int largest = 0;
+    for (int i = 0; i < 3; ++i)
+    {
+      axes[k][i] = vectors[i][k];
+      largest = std::abs(axes[k][i]) > std::abs(axes[k][largest]) ? i : largest;
+    }
+    vtkMath::MultiplyScalar(axes[k], axes[k][largest] < 0.0 ? -1.0 : 1.0);
+  }
+}
+
+// The view of the first panel: facing its broadest side (looking along its
+// smallest principal axis), world y up as in VTK's default view (z when y
+// is nearly the viewing direction), raised by ViewElevation; `forward` is
+// the direction of projection.
+void firstView(const SurfacePanel& panel, double forward[3], double up[3])
+{
+  double axes[3][3];
+  principalAxes(panelMesh(panel), axes);
+  const double* toViewer = axes[2];
+  double worldUp[3] = { 0.0, 1.0, 0.0 };
+  if (std::abs(toViewer[1]) > 0.9)
+  {
+    worldUp[1] = 0.0;
+    worldUp[2] = 1.0;
+  }
+  vtkNew<vtkCamera> camera;
+  camera->SetFocalPoint(0.0, 0.0, 0.0);
+  camera->SetPosition(toViewer[0], toViewer[1], toViewer[2]);
+  camera->SetViewUp(worldUp);
+  camera->OrthogonalizeViewUp();
+  camera->Azimuth(ViewAzimuth);
+  camera->Elevation(ViewElevation);
+  camera->OrthogonalizeViewUp();
+  camera->GetDirectionOfProjection(forward);
+  camera->GetViewUp(up);
+}
+
+// Points `camera` (direction of projection `forward`, `up`) at the centre of
+// `mesh` from the distance at which all of it fits a viewport of `aspect`
+// (width / height).
+void fitCamera(vtkCamera* camera,
+  vtkPolyData* mesh,
+  const double forward[3],
+  const double up[3],
+  double aspect)
+{
+  double right[3];
+  vtkMath::Cross(forward, up, right);
+  const double slope =
+    std::tan(vtkMath::RadiansFromDegrees(0.5 * camera->GetViewAngle())) / FitMargin;
+  const double* centre = mesh->GetCenter();
+  double distance = 0.0;
+  for (vtkIdType v = 0; v < mesh->GetNumberOfPoints(); ++v)
+  {
+    double d[3];
+    vtkMath::Subtract(mesh->GetPoint(v), centre, d);
+    const double depth = -vtkMath::Dot(d, forward); // towards the viewer
+    distance = std::max({ distance,
+      depth + std::abs(vtkMath::Dot(d, up)) / slope,
+      depth + std::abs(vtkMath::Dot(d, right)) / (slope * aspect) });
+  }
+  camera->SetFocalPoint(centre[0], centre[1], centre[2]);
+  camera->SetPosition(centre[0] - forward[0] * distance,
+    centre[1] - forward[1] * distance,
+    centre[2] - forward[2] * distance);
+  camera->SetViewUp(up[0], up[1], up[2]);
+}
+
+} // namespace
+
+vtkSmartPointer<vtkDataArray> smoothNormals(vtkPolyData* mesh)
+{
+  vtkNew<vtkPolyData> geometry;
+  geometry->CopyStructure(mesh);
+  vtkNew<vtkPolyDataNormals> normals;
+  normals->SetInputData(geometry);
+  normals->SplittingOff();
+  normals->ComputeCellNormalsOff();
+  normals->Update();
+  return normals->GetOutput()->GetPointData()->GetNormals();
+}
+
+namespace
+{
+
+// `panel`'s mapper drawing its surface with smooth normals, unless it has
+// normals or a texture (split at its seams, where normals of one side only
+// would show the seams).
+void smoothShading(const SurfacePanel& panel)
+{
+  vtkPolyData* mesh = panelMesh(panel);
+  if (panel.texture || mesh->GetPointData()->GetNormals())
+  {
+    return;
+  }
+  vtkNew<vtkPolyData> shaded;
+  shaded->ShallowCopy(mesh);
+  shaded->GetPointData()->SetNormals(smoothNormals(mesh));
+  panel.mapper->SetInputData(shaded);
+}
+
+// A renderer showing `panel`'s surface in `viewport` (xmin, ymin, xmax,
+// ymax) of `aspect`, seen as the first panel is (`forward`, `up`) turned
+// back by the panel's rotation onto the first: corresponding sides face the
+// viewer alike.
+vtkSmartPointer<vtkRenderer> surfaceRenderer(const SurfacePanel& panel,
+  const double forward[3],
+  const double up[3],
+  const double viewport[4],
+  double aspect)
+{
+  smoothShading(panel);
   vtkNew<vtkActor> actor;
   actor->SetMapper(panel.mapper);
   if (panel.texture)
@@ -115,37 +285,44 @@ vtkSmartPointer<vtkRenderer> surfaceRenderer(const SurfacePanel& panel, const do
   renderer->SetViewport(viewport[0], viewport[1], viewport[2], viewport[3]);
   renderer->AddActor(actor);
   renderer->SetBackground(1.0, 1.0, 1.0);
-  renderer->ResetCamera();
-  renderer->GetActiveCamera()->Azimuth(30.0);
-  renderer->GetActiveCamera()->Elevation(20.0);
-  renderer->GetActiveCamera()->Zoom(1.3); // the shape, not its bounding sphere, fills the panel
+  double back[3][3], panelForward[3], panelUp[3];
+  vtkMath::Transpose3x3(panel.rotation, back);
+  vtkMath::Multiply3x3(back, forward, panelForward);
+  vtkMath::Multiply3x3(back, up, panelUp);
+  fitCamera(renderer->GetActiveCamera(), panelMesh(panel), panelForward, panelUp, aspect);
   renderer->ResetCameraClippingRange();
-  if (!panel.caption.empty())
-  {
-    addCaption(renderer, panel.caption);
-  }
   return renderer;
 }
 
 // A renderer in `viewport` holding only the colour legend of `colours`.
 vtkSmartPointer<vtkRenderer> legendRenderer(vtkScalarsToColors* colours,
   const std::string& title,
-  const double viewport[4])
+  const double viewport[4],
+  int widthPixels)
 {
   vtkNew<vtkScalarBarActor> bar;
   bar->SetLookupTable(colours);
   bar->SetTitle(title.c_str());
   bar->SetNumberOfLabels(5);
-  bar->SetPosition(0.05, 0.1);
+  bar->SetPosition(0.05, 0.08);
   bar->SetWidth(0.9);
   bar->SetHeight(0.8);
+  bar->SetVerticalTitleSeparation(12); // keeps the top label clear of the title
   if (colours->GetIndexedLookup())
   {
     // Categorical colours are labelled by annotations, which the bar draws
     // on its left: leave them room inside the legend's viewport.
-    bar->SetPosition(0.45, 0.1);
+    bar->SetPosition(0.45, 0.08);
     bar->SetWidth(0.5);
   }
+  // Fixed sizes, the title's made small enough to fit the legend's width
+  // (a character is about 0.6 of the font size wide).
+  bar->UnconstrainedFontSizeOn();
+  const int titleSize =
+    std::max(9, std::min(18, static_cast<int>(widthPixels / (0.6 * (title.size() + 1)))));
+  bar->GetTitleTextProperty()->SetFontSize(titleSize);
+  bar->GetLabelTextProperty()->SetFontSize(14);
+  bar->GetAnnotationTextProperty()->SetFontSize(14);
   for (vtkTextProperty* text : { bar->GetTitleTextProperty(),
          bar->GetLabelTextProperty(),
          bar->GetAnnotationTextProperty() }) // annotations: the labels of categorical colours
@@ -165,12 +342,12 @@ vtkSmartPointer<vtkRenderer> legendRenderer(vtkScalarsToColors* colours,
 
 bool checkDisplayForPictures()
 {
-  const std::string missing = missingDisplay();
+  const std::string missing = prepareDisplay();
   if (missing.empty())
   {
     return true;
   }
-  printError("--pictures: " + missing + "; run under 'xvfb-run -a' or leave --pictures out");
+  printError("--pictures: " + missing + "; install xvfb or leave --pictures out");
   return false;
 }
 
@@ -220,6 +397,11 @@ void writeChart(const ChartPicture& picture, const std::string& path)
     addSeries(chart, picture.type, picture.series[s], static_cast<int>(s));
   }
   chart->SetShowLegend(picture.series.size() > 1);
+  if (picture.legendLowerRight)
+  {
+    chart->GetLegend()->SetVerticalAlignment(vtkChartLegend::BOTTOM);
+    chart->GetLegend()->SetHorizontalAlignment(vtkChartLegend::RIGHT);
+  }
   chart->GetAxis(vtkAxis::BOTTOM)->SetTitle(picture.xTitle);
   chart->GetAxis(vtkAxis::LEFT)->SetTitle(picture.yTitle);
   if (picture.integerX && !picture.series.empty() && !picture.series[0].x.empty())
@@ -253,18 +435,49 @@ void writeSurfacePicture(const std::vector<SurfacePanel>& panels,
   vtkNew<vtkRenderWindow> window;
   window->SetOffScreenRendering(1);
   window->SetSize(n == 1 ? SingleWidth : PanelWidth * n, Height);
-  const double surfaces = legend ? 1.0 - LegendShare : 1.0;
+  const int width = window->GetSize()[0];
+  const int legendPixels =
+    legend ? std::max(MinLegendWidth, static_cast<int>(width * LegendShare)) : 0;
+  const double surfaces = 1.0 - static_cast<double>(legendPixels) / width;
+  // Captions in a strip above the surfaces, which never reach into it.
+  const bool captions = std::any_of(
+    panels.begin(), panels.end(), [](const SurfacePanel& p) { return !p.caption.empty(); });
+  const double top = captions ? 1.0 - static_cast<double>(CaptionHeight) / Height : 1.0;
+  const double aspect = width * surfaces / n / (Height * top);
+  double forward[3], up[3];
+  firstView(panels.front(), forward, up);
   for (int k = 0; k < n; ++k)
   {
-    const double viewport[4] = { surfaces * k / n, 0.0, surfaces * (k + 1) / n, 1.0 };
-    window->AddRenderer(surfaceRenderer(panels[k], viewport));
+    const double viewport[4] = { surfaces * k / n, 0.0, surfaces * (k + 1) / n, top };
+    window->AddRenderer(surfaceRenderer(panels[k], forward, up, viewport, aspect));
+    if (captions)
+    {
+      const double strip[4] = { viewport[0], top, viewport[2], 1.0 };
+      window->AddRenderer(captionRenderer(panels[k].caption, strip));
+    }
   }
   if (legend)
   {
     const double viewport[4] = { surfaces, 0.0, 1.0, 1.0 };
-    window->AddRenderer(legendRenderer(legend, legendTitle, viewport));
+    window->AddRenderer(legendRenderer(legend, legendTitle, viewport, legendPixels));
   }
   writeWindow(window, path);
+}
+
+void alignRotation(vtkPoints* fixed, vtkPoints* moving, double rotation[3][3])
+{
+  vtkNew<vtkLandmarkTransform> fit;
+  fit->SetModeToRigidBody();
+  fit->SetSourceLandmarks(moving);
+  fit->SetTargetLandmarks(fixed);
+  fit->Update();
+  for (int i = 0; i < 3; ++i)
+  {
+    for (int j = 0; j < 3; ++j)
+    {
+      rotation[i][j] = fit->GetMatrix()->GetElement(i, j);
+    }
+  }
 }
 
 vtkSmartPointer<vtkPolyDataMapper> arrayMapper(vtkPolyData* mesh,
@@ -302,31 +515,3 @@ vtkSmartPointer<vtkTexture> checkerboardTexture(int squares, int size)
 }
 
 } // namespace surfacemap
-
-// Xlib last: its macros (None, Status, Bool) clash with the VTK headers.
-#include <X11/Xlib.h>
-
-std::string surfacemap::missingDisplay()
-{
-  // VTK's X render window aborts the process when it cannot open the display,
-  // so the display is tried here first.
-  const char* name = std::getenv("DISPLAY");
-  if (!name || !*name)
-  {
-    return "no display to render on (DISPLAY is not set)";
-  }
-  // The connection stays open until the process ends: an X server (Xvfb
-  // under xvfb-run) resets when its last client leaves, and a picture's
-  // window opened during that reset fails (VTK aborts or crashes). Every
-  // picture window closes its own connection, so this one keeps the server up.
-  static ::Display* held = nullptr;
-  if (!held)
-  {
-    held = XOpenDisplay(nullptr);
-  }
-  if (!held)
-  {
-    return std::string("cannot open the display '") + name + "' to render on";
-  }
-  return "";
-}

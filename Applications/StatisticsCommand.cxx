@@ -61,8 +61,9 @@ const char* const StatisticsHelp =
   "  --frames F         frames of each mode's animation, from -2 to +2\n"
   "                     standard deviations (default 9, from 2 to 1000)\n"
   "  --pictures         also write the PNGs below, rendered with VTK through\n"
-  "                     OpenGL: this needs a display (on a machine without\n"
-  "                     one run under 'xvfb-run -a'); without a display the\n"
+  "                     OpenGL on the display, or without one on a virtual\n"
+  "                     display (Xvfb, Debian package xvfb) started for the\n"
+  "                     command and stopped at its end; with neither the\n"
   "                     command stops with exit code 2 before computing\n"
   "\n"
   "Writes, each file atomically, the frames and the files naming them put in\n"
@@ -86,8 +87,8 @@ const char* const StatisticsHelp =
   "  DIR/spread.png                the mean coloured by StandardDeviation\n"
   "\n"
   "Exit code 0 on success, 2 for bad usage or input (meshes of another\n"
-  "connectivity, a directory that is no map output, no display for\n"
-  "--pictures), 1 for an internal error.\n";
+  "connectivity, a directory that is no map output, no display nor Xvfb\n"
+  "for --pictures), 1 for an internal error.\n";
 
 namespace
 {

@@ -89,16 +89,17 @@ const char* const TransferHelpIntro =
   "                     unsigned char RGB(A) arrays as colours; with texture\n"
   "                     coordinates, FILE + _texture.png: both inputs with the\n"
   "                     package's checkerboard texture, J split at the seams.\n"
-  "                     Rendered with VTK through OpenGL: this needs a display\n"
-  "                     (on a machine without one run under 'xvfb-run -a');\n"
-  "                     without a display the command stops with exit code 2\n"
+  "                     Rendered with VTK through OpenGL on the display, or\n"
+  "                     without one on a virtual display (Xvfb, Debian package\n"
+  "                     xvfb) started for the command and stopped at its end;\n"
+  "                     with neither the command stops with exit code 2\n"
   "                     before computing\n";
 
 const char* const TransferExitCodes =
   "\n"
   "Exit code 0 on success, 2 for bad usage or input (missing map files, an\n"
-  "unknown array name, an output that cannot be written, no display for\n"
-  "--pictures), 1 for an internal error.\n";
+  "unknown array name, an output that cannot be written, no display nor\n"
+  "Xvfb for --pictures), 1 for an internal error.\n";
 
 const std::string TransferHelpText =
   std::string(TransferHelpIntro) + ArrayTransferFlagsHelp + TransferExitCodes;

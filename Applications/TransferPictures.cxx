@@ -7,11 +7,13 @@
 
 #include "vtkCellData.h"
 #include "vtkDataArray.h"
+#include "vtkIdList.h"
 #include "vtkLookupTable.h"
 #include "vtkMath.h"
 #include "vtkNew.h"
 #include "vtkPointData.h"
 #include "vtkPointDataToCellData.h"
+#include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkPolyDataMapper.h"
 #include "vtkSmartPointer.h"
@@ -37,13 +39,57 @@ namespace
 const std::size_t MaxLegendLabels = 12;
 
 // What one picture shows: the source side's and the target side's mesh (each
-// with the array) and their captions.
+// with the array), their captions, and the rotation taking the target onto
+// the source through the map (mapRotation).
 struct TransferSides
 {
   vtkPolyData* source;
   vtkPolyData* target;
   std::string sourceCaption, targetCaption;
+  double rotation[3][3] = { { 1.0, 0.0, 0.0 }, { 0.0, 1.0, 0.0 }, { 0.0, 0.0, 1.0 } };
 };
+
+// The rotation taking `target` (the transfer's output) onto `source`, fitted
+// between each target vertex and the source point it maps to ("SourceCellId"
+// and "SourceBarycentric"); the identity without those arrays.
+void mapRotation(vtkPolyData* source, vtkPolyData* target, double rotation[3][3])
+{
+  vtkDataArray* cells = target->GetPointData()->GetArray("SourceCellId");
+  vtkDataArray* weights = target->GetPointData()->GetArray("SourceBarycentric");
+  if (!cells || !weights || weights->GetNumberOfComponents() < 2)
+  {
+    return;
+  }
+  vtkNew<vtkPoints> mapped;
+  vtkNew<vtkIdList> corners;
+  for (vtkIdType v = 0; v < target->GetNumberOfPoints(); ++v)
+  {
+    source->GetCellPoints(static_cast<vtkIdType>(cells->GetComponent(v, 0)), corners);
+    const double w[3] = { weights->GetComponent(v, 0),
+      weights->GetComponent(v, 1),
+      weights->GetNumberOfComponents() > 2
+        ? weights->GetComponent(v, 2)
+        : 1.0 - weights->GetComponent(v, 0) - weights->GetComponent(v, 1) };
+    double p[3] = { 0.0, 0.0, 0.0 };
+    for (vtkIdType k = 0; k < std::min<vtkIdType>(3, corners->GetNumberOfIds()); ++k)
+    {
+      const double* corner = source->GetPoint(corners->GetId(k));
+      for (int i = 0; i < 3; ++i)
+      {
+        p[i] += w[k] * corner[i];
+      }
+    }
+    mapped->InsertNextPoint(p);
+  }
+  alignRotation(mapped, target->GetPoints(), rotation);
+}
+
+// `panels` (source, target) with the target seen from the source's side.
+std::vector<SurfacePanel> turned(std::vector<SurfacePanel> panels, const TransferSides& sides)
+{
+  std::copy(&sides.rotation[0][0], &sides.rotation[0][0] + 9, &panels[1].rotation[0][0]);
+  return panels;
+}
 
 // The two sides as (mesh, caption), source first.
 std::array<std::pair<vtkPolyData*, std::string>, 2> bothSides(const TransferSides& sides)
@@ -96,7 +142,8 @@ void writeContinuousPicture(const TransferSides& sides,
     mapper->InterpolateScalarsBeforeMappingOn();
     panels.push_back({ mapper, caption });
   }
-  writeSurfacePicture(panels, colours, magnitude ? name + " (magnitude)" : name, path);
+  writeSurfacePicture(
+    turned(panels, sides), colours, magnitude ? name + " (magnitude)" : name, path);
 }
 
 // `mesh` with one cell array `name`: per triangle the label most of its
@@ -159,7 +206,7 @@ void writeCategoricalPicture(const TransferSides& sides,
   }
   const bool legend =
     static_cast<std::size_t>(colours->GetNumberOfAnnotatedValues()) <= MaxLegendLabels;
-  writeSurfacePicture(panels, legend ? colours.GetPointer() : nullptr, name, path);
+  writeSurfacePicture(turned(panels, sides), legend ? colours.GetPointer() : nullptr, name, path);
 }
 
 void writeColourPicture(const TransferSides& sides,
@@ -173,7 +220,7 @@ void writeColourPicture(const TransferSides& sides,
     mapper->SetColorModeToDirectScalars();
     panels.push_back({ mapper, caption });
   }
-  writeSurfacePicture(panels, nullptr, "", path);
+  writeSurfacePicture(turned(panels, sides), nullptr, "", path);
 }
 
 // Both sides textured with the checkerboard through their per-corner
@@ -195,7 +242,7 @@ void writeTexturePicture(const TransferSides& sides, const std::string& path)
     mapper->ScalarVisibilityOff();
     panels.push_back({ mapper, caption, texture });
   }
-  writeSurfacePicture(panels, nullptr, "", path);
+  writeSurfacePicture(turned(panels, sides), nullptr, "", path);
 }
 
 } // namespace
@@ -222,10 +269,11 @@ std::vector<std::string> writeTransferPictures(vtkSurfaceMapTransfer* transfer,
 {
   auto* source = vtkPolyData::SafeDownCast(transfer->GetInputDataObject(1, 0));
   vtkPolyData* target = transfer->GetOutput();
-  const TransferSides sides{ source,
+  TransferSides sides{ source,
     target,
     "input " + std::to_string(from) + " (source)",
     "input " + std::to_string(to) + " (received)" };
+  mapRotation(source, target, sides.rotation);
   std::vector<std::string> written;
   vtkPointData* received = target->GetPointData();
   for (int a = 0; a < received->GetNumberOfArrays(); ++a)

@@ -156,18 +156,14 @@ map_case() {
       label="61 <-> 248"
     fi
     mkdir -p "$pictures"
-    xvfb=()
-    if [ -z "${DISPLAY:-}" ]; then
-      xvfb=(xvfb-run -a)
-    fi
     "$python" -m surfacemaps.plots "$dir/approximating_1_distortion_curve.csv" "$dir/exact_1_distortion_curve.csv" \
       --labels "approximating map T_A -> T_B" "exact map A -> A on B" \
       --title "Cumulative distortion, $label" -o "$pictures/map_curves.png"
-    "${xvfb[@]}" "$python" -m surfacemaps.render "$dir/approximating_1.vtp" --max 2 \
+    "$python" -m surfacemaps.render "$dir/approximating_1.vtp" --max 2 \
       -o "$pictures/map_distortion.png"
-    "${xvfb[@]}" "$python" -m surfacemaps.render "$dir/approximating_1.vtp" --checkerboard SourcePosition \
+    "$python" -m surfacemaps.render "$dir/approximating_1.vtp" --checkerboard SourcePosition \
       -o "$pictures/map_checkerboard.png"
-    "${xvfb[@]}" "$python" -m surfacemaps.render "$dir/approximating_1.vtp" --checkerboard SourcePosition \
+    "$python" -m surfacemaps.render "$dir/approximating_1.vtp" --checkerboard SourcePosition \
       --points-from "$dir/common_0.vtp" -o "$pictures/map_checkerboard_source.png"
     echo
     echo "Pictures in $pictures (map_curves, map_distortion, map_checkerboard, map_checkerboard_source) from the $label case."

@@ -13,6 +13,24 @@ def run(*args, timeout=300, cwd=None):
     return subprocess.run([CLI, *map(str, args)], capture_output=True, text=True, timeout=timeout, cwd=cwd)
 
 
+def run_headless(*args, xvfb=True, timeout=300):
+    """Runs `surfacemap ARGS...` as on a server without a display: DISPLAY unset and, unless
+    `xvfb`, no Xvfb to be found on PATH either."""
+    env = {k: v for k, v in os.environ.items() if k not in ("DISPLAY", "WAYLAND_DISPLAY")}
+    if not xvfb:
+        env["PATH"] = "/nonexistent"
+    return subprocess.run([CLI, *map(str, args)], capture_output=True, text=True, timeout=timeout, env=env)
+
+
+def assert_virtual_display_stopped(stderr):
+    """The command (run with -v) rendered on a virtual display of its own, named in `stderr`,
+    and that server is gone: Xvfb removes its lock file when it stops."""
+    import re
+    found = re.search(r"rendering on the virtual display :(\d+)", stderr)
+    assert found, stderr
+    assert not os.path.exists(f"/tmp/.X{found.group(1)}-lock"), "the virtual display still runs"
+
+
 def data(name):
     """Path of a file in Data/."""
     return os.path.join(DATA, name)

@@ -1,27 +1,25 @@
-"""`surfacemap evaluate --pictures` and `surfacemap transfer --pictures`: the PNGs, and the early
-stop without a display. CTest runs this file under xvfb-run; the pictures are skipped without a
-display, the stop is tested in either case."""
+"""`surfacemap evaluate --pictures` and `surfacemap transfer --pictures`: the PNGs, on a display
+and on a server without one (the command starts Xvfb itself), and the early stop when there is
+neither. CTest runs this file under xvfb-run; the pictures on a display are skipped without one,
+the headless ones without Xvfb, the stop is tested in any case."""
 
 import os
-import subprocess
+import shutil
 
 import numpy as np
 import pytest
 
-from cli import CLI, SHORT, data, run
+from cli import SHORT, assert_virtual_display_stopped, data, run, run_headless
 
 needs_display = pytest.mark.skipif(not os.environ.get("DISPLAY"),
                                    reason="needs a display (CTest runs this file under xvfb-run)")
+needs_xvfb = pytest.mark.skipif(not shutil.which("Xvfb"), reason="needs Xvfb (Debian package xvfb)")
 
 
-def run_without_display(*args):
-    env = {k: v for k, v in os.environ.items() if k != "DISPLAY"}
-    return subprocess.run([CLI, *map(str, args)], capture_output=True, text=True, env=env, timeout=300)
-
-
-def assert_stopped_for_the_display(result):
+def assert_stopped_without_display_and_xvfb(result):
     assert result.returncode == 2, result.stderr
-    assert "DISPLAY is not set" in result.stderr and "xvfb-run -a" in result.stderr
+    assert "DISPLAY is not set" in result.stderr and "Xvfb" in result.stderr, result.stderr
+    assert "Debian package xvfb" in result.stderr
 
 
 def picture(path, size):
@@ -60,6 +58,13 @@ def assert_two_surfaces(pixels, legend, coloured=True):
             channels = panel.astype(int)
             saturated = (channels.max(axis=2) - channels.min(axis=2) > 50).mean()
             assert saturated > 0.05, saturated
+
+
+def assert_fits(pixels, legend):
+    """No panel is cropped: the outermost rows and columns of each are background."""
+    for panel in panels(pixels, legend):
+        border = np.concatenate([panel[0], panel[-1], panel[:, 0], panel[:, -1]])
+        assert np.all(border >= 235), "a surface touches its panel's edge"
 
 
 def assert_reddish(pixels):
@@ -106,21 +111,38 @@ def test_evaluate_pair_pictures_need_an_output_dir():
     assert "SymmetricDirichlet" not in r.stdout
 
 
-def test_evaluate_stops_without_a_display(tmp_path):
+@needs_xvfb
+def test_evaluate_pair_pictures_without_a_display(tmp_path):
+    """On a server without a display the command renders on an Xvfb of its own, stopped at exit."""
     out = tmp_path / "new"
-    r = run_without_display("evaluate", data("ellipsoid.obj"), data("blob.off"), "--output-dir", out,
-                            "--pictures")
-    assert_stopped_for_the_display(r)
+    r = run_headless("evaluate", data("ellipsoid.obj"), data("blob.off"), "--output-dir", out, "--pictures",
+                     "-v")
+    assert r.returncode == 0, r.stderr
+    assert_virtual_display_stopped(r.stderr)
+    heat = picture(out / "distortion.png", (1200, 600))
+    assert_two_surfaces(heat, legend=True, coloured=False)
+    assert_reddish(heat)
+    checks = picture(out / "checkerboard.png", (1200, 600))
+    assert_two_surfaces(checks, legend=False)
+    assert_fits(checks, legend=False)
+    picture(out / "distortion_curve.png", (800, 600))
+
+
+def test_evaluate_stops_without_a_display_and_xvfb(tmp_path):
+    out = tmp_path / "new"
+    r = run_headless("evaluate", data("ellipsoid.obj"), data("blob.off"), "--output-dir", out, "--pictures",
+                     xvfb=False)
+    assert_stopped_without_display_and_xvfb(r)
     assert "SymmetricDirichlet" not in r.stdout and not out.exists()  # before computing
     help_text = run("evaluate", "--help").stdout
-    assert "--pictures" in help_text and "xvfb-run" in help_text and "checkerboard.png" in help_text
+    assert "--pictures" in help_text and "Xvfb" in help_text and "checkerboard.png" in help_text
 
 
 # Maps: evaluate MAPDIR and transfer.
 
 def labelled_blob(path):
-    """blob.off with the point arrays "Region" (int, 4 quadrants around the z
-    axis), "Height" (float, z) and "Position" (3 doubles), written to `path`."""
+    """blob.off with the point arrays "Region" (int, 4 bands along z, its longest axis, so that
+    a side view shows all), "Height" (float, z) and "Position" (3 doubles), written to `path`."""
     from vtkmodules.vtkCommonCore import vtkDoubleArray, vtkFloatArray, vtkIntArray
     from vtkmodules.vtkIOXML import vtkXMLPolyDataWriter
     import surfacemaps
@@ -130,9 +152,10 @@ def labelled_blob(path):
     for array, name in ((region, "Region"), (height, "Height"), (position, "Position")):
         array.SetName(name)
         mesh.GetPointData().AddArray(array)
+    low, high = mesh.GetBounds()[4:6]
     for v in range(mesh.GetNumberOfPoints()):
         x, y, z = mesh.GetPoint(v)
-        region.InsertNextValue(int(x > 0) + 2 * int(y > 0) + 7)
+        region.InsertNextValue(min(3, int(4 * (z - low) / (high - low))) + 7)
         height.InsertNextValue(z)
         position.InsertNextTuple((x, y, z))
     writer = vtkXMLPolyDataWriter()
@@ -167,10 +190,10 @@ def test_evaluate_map_directory_pictures(map_dir, tmp_path):
     assert not [p for p in os.listdir(out) if ".tmp" in p]
 
 
-def test_evaluate_map_directory_stops_without_a_display(map_dir, tmp_path):
+def test_evaluate_map_directory_stops_without_a_display_and_xvfb(map_dir, tmp_path):
     out = tmp_path / "evaluation"
-    r = run_without_display("evaluate", map_dir, "--output-dir", out, "--pictures")
-    assert_stopped_for_the_display(r)
+    r = run_headless("evaluate", map_dir, "--output-dir", out, "--pictures", xvfb=False)
+    assert_stopped_without_display_and_xvfb(r)
     assert not out.exists()
 
 
@@ -185,9 +208,11 @@ def test_transfer_pictures(map_dir, tmp_path):
         ["received.vtp"] + [f"received_{name}.png" for name in names])
     for name in names:
         assert str(tmp_path / f"received_{name}.png") in r.stdout
-    # Continuous arrays (and the categorical one: four labels) have a legend.
+    # Continuous arrays (and the categorical one: four labels) have a legend; no side is cropped.
     for name in names:
-        assert_two_surfaces(picture(tmp_path / f"received_{name}.png", (1200, 600)), legend=True)
+        pixels = picture(tmp_path / f"received_{name}.png", (1200, 600))
+        assert_two_surfaces(pixels, legend=True)
+        assert_fits(pixels, legend=True)
     # Labels in flat colours: four hues on the source side, the same on the received side.
     for panel in panels(picture(tmp_path / "received_Region.png", (1200, 600)), legend=True):
         assert hue_count(panel) == 4
@@ -247,10 +272,20 @@ def test_transfer_texture_picture(map_dir, tmp_path):
     assert_two_surfaces(picture(tmp_path / "out_texture.png", (1200, 600)), legend=False)
 
 
-def test_transfer_stops_without_a_display(map_dir, tmp_path):
+@needs_xvfb
+def test_transfer_pictures_without_a_display(map_dir, tmp_path):
     out = tmp_path / "received.vtp"
-    r = run_without_display("transfer", map_dir, "--from", "1", "--to", "0", "-o", out, "--pictures")
-    assert_stopped_for_the_display(r)
+    r = run_headless("transfer", map_dir, "--from", "1", "--to", "0", "--arrays", "Region", "-o", out,
+                     "--pictures", "-v")
+    assert r.returncode == 0, r.stderr
+    assert_virtual_display_stopped(r.stderr)
+    assert_two_surfaces(picture(tmp_path / "received_Region.png", (1200, 600)), legend=True)
+
+
+def test_transfer_stops_without_a_display_and_xvfb(map_dir, tmp_path):
+    out = tmp_path / "received.vtp"
+    r = run_headless("transfer", map_dir, "--from", "1", "--to", "0", "-o", out, "--pictures", xvfb=False)
+    assert_stopped_without_display_and_xvfb(r)
     assert not out.exists() and not list(tmp_path.iterdir())
     help_text = run("transfer", "--help").stdout
-    assert "--pictures" in help_text and "xvfb-run" in help_text and "_NAME.png" in help_text
+    assert "--pictures" in help_text and "Xvfb" in help_text and "_NAME.png" in help_text

@@ -2,7 +2,7 @@
 
 How blocks are chosen, by the language after the opening fence:
 - ```python: run with this interpreter;
-- ```sh: run with bash -eu -o pipefail (skipped when it calls xvfb-run and there is none);
+- ```sh: run with bash -eu -o pipefail (skipped when it draws --pictures and there is no Xvfb);
 - ```console: each `$ ` line (with `\\` continuations) is run with bash; the lines after it
   are its expected output (stdout, then stderr), where a line `...` stands for any number of
   lines and `...` inside a line for any text;
@@ -63,7 +63,7 @@ BLOCKS = blocks()
 def environment():
     env = dict(os.environ)
     env["PATH"] = os.path.dirname(CLI) + os.pathsep + env.get("PATH", "")
-    env.pop("DISPLAY", None)  # the README's pictures go through xvfb-run, as on a server
+    env.pop("DISPLAY", None)  # as on a server: the README's pictures go to the Xvfb they start
     return env
 
 
@@ -115,8 +115,8 @@ def check_block(language, code, cwd):
                            text=True, timeout=600)
         assert r.returncode == 0, r.stdout + r.stderr
     elif language == "sh":
-        if "xvfb-run" in code and not shutil.which("xvfb-run"):
-            pytest.skip("xvfb-run is not installed (Debian package xvfb)")
+        if "--pictures" in code and not shutil.which("Xvfb"):
+            pytest.skip("Xvfb is not installed (Debian package xvfb)")
         r = bash(code, cwd)
         assert r.returncode == 0, r.stdout + r.stderr
     elif language == "console":

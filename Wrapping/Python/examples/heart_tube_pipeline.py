@@ -20,7 +20,7 @@ specimens lifted onto it, the interpolated series, pictures and report.json.
 
 Under MPI the stages are spread over the ranks (mpi4py); every rank runs one
 OpenMP thread (OMP_NUM_THREADS=1 unless set). Pictures of surfaces need a
-display: run under ``xvfb-run -a`` on a headless machine, or pass
+display; on a headless machine a virtual one (Xvfb) is started, or pass
 --no-pictures. Exit codes: 0 ok, 2 bad usage or input, 3 no certified map,
 1 other errors.
 """

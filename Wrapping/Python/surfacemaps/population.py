@@ -38,7 +38,7 @@ series/surface.pvd (the interpolated series), statistics/ (mean.vtp with
 "StandardDeviation" and the modes, mode_<m>.pvd: mean + c sqrt(variance)
 mode for c from -2 to 2, scores.csv, variance.csv), pictures/ (the PNGs:
 explained_variance.png and scores.png always; stage_means.png, frames.png,
-spread.png and mode_1.png need a display, e.g. ``xvfb-run -a``),
+spread.png and mode_1.png need a display, or Xvfb to start a virtual one),
 report.json. Exit codes: 0 ok, 2 bad usage or input, 3 no certified map,
 1 other errors.
 """
@@ -398,29 +398,29 @@ def reported_time_steps(source):
 # ------------------------------------------------------------------ pictures
 
 def display_available():
-    return sys.platform in ("win32", "darwin") or bool(os.environ.get("DISPLAY") or os.environ.get("WAYLAND_DISPLAY"))
+    """True if surface pictures can be rendered: on the display, or on a virtual one started for
+    this process (surfacemaps.render.ensure_display: Xvfb); otherwise says why on stderr."""
+    from surfacemaps import render
+    try:
+        render.ensure_display()
+        return True
+    except RuntimeError as e:
+        print(f"surfacemaps.population: {e}: surface pictures skipped (install xvfb, or --no-pictures)",
+              file=sys.stderr)
+        return False
 
 
-def grid(meshes, arrays, elevation, columns=None):
-    """The meshes in rows of a grid (near-square unless `columns` is given) as one vtkPolyData
-    carrying the point arrays `arrays` (name -> per-vertex values, one set per mesh or one for all).
-
-    Rows run down the screen of a camera raised by `elevation` degrees
-    (surfacemaps.render's view); every mesh is centred in its cell.
-    """
-    from vtkmodules.vtkFiltersCore import vtkAppendPolyData
-    columns = columns or math.ceil(math.sqrt(len(meshes)))
-    cell = 1.1 * max(np.linalg.norm(np.ptp(portable(m)["points"], axis=0)) for m in meshes)
-    down = -np.array([0.0, math.cos(math.radians(elevation)), -math.sin(math.radians(elevation))])
-    append = vtkAppendPolyData()
-    for i, mesh in enumerate(meshes):
+def grid(meshes, pattern, captions):
+    """One panel per mesh (surfacemaps.render.Panel): a straight-edged checkerboard of `pattern`
+    (per-vertex sphere positions on the common triangulation) under its caption."""
+    from surfacemaps import render
+    panels = []
+    for mesh, caption in zip(meshes, captions):
         data = portable(mesh)
-        row, column = divmod(i, columns)
-        points = data["points"] - data["points"].mean(axis=0) + cell * (column * np.array([1.0, 0, 0]) + row * down)
-        values = {name: v[i] if isinstance(v, list) else v for name, v in arrays.items()}
-        append.AddInputData(polydata(points, data["triangles"], point_arrays=values))
-    append.Update()
-    return append.GetOutput(), (columns * 320, math.ceil(len(meshes) / columns) * 320)
+        patterned = polydata(data["points"], data["triangles"], point_arrays={"Pattern": pattern})
+        panels.append(render.Panel(render.checkered(patterned, "Pattern", squares=6), render.configure_checkerboard,
+                                   caption))
+    return panels
 
 
 def frames_of(source, times):
@@ -433,40 +433,41 @@ def frames_of(source, times):
     return frames
 
 
-def surface_pictures(keyframes, pattern, source, times, statistics, directory):
-    """stage_means.png, frames.png (a checkerboard of `pattern`, keyframe 0's sphere positions, so
-    a square follows one material region through the stages), spread.png (the per-vertex standard
-    deviation over all specimens on their mean) and mode_1.png (mode 1 at -2, 0, +2 standard
-    deviations); frames.png only for a series."""
+def surface_pictures(keyframes, names, pattern, source, times, statistics, directory):
+    """stage_means.png (each stage mean under its stage's name and time), frames.png (six frames of
+    the series under their time), both a checkerboard of `pattern` (keyframe 0's sphere positions,
+    so a square follows one material region through the stages); spread.png (the per-vertex
+    standard deviation over all specimens on their mean) and mode_1.png (mode 1 at -2, 0, +2
+    standard deviations); frames.png only for a series. The shapes of a picture share one camera
+    facing their broadest side (surfacemaps.render.render_panels)."""
     from surfacemaps import render
     paths = []
-    frames = frames_of(source, np.linspace(times[0], times[-1], 6)) if source is not None else []
-    for name, meshes in (("stage_means.png", keyframes), ("frames.png", frames)):
-        if not meshes:
-            continue
-        mesh, size = grid(meshes, {"Pattern": pattern}, elevation=60.0)
-        paths.append(os.path.join(directory, name))
-        render.render_checkerboard(mesh, paths[-1], "Pattern", squares=6, size=size, azimuth=0.0, elevation=60.0)
+    frame_times = np.linspace(times[0], times[-1], 6) if source is not None else []
+    series = (("stage_means.png", keyframes, [f"{name}, t = {t:.3g}" for name, t in zip(names, times)]),
+              ("frames.png", frames_of(source, frame_times) if source is not None else [],
+               [f"t = {t:.3g}" for t in frame_times]))
+    for name, meshes, captions in series:
+        if len(meshes):
+            paths.append(os.path.join(directory, name))
+            render.render_panels(grid(meshes, pattern, captions), paths[-1])
     spread = statistics.standard_deviation
     top = float(spread.max()) or 1.0
     paths.append(os.path.join(directory, "spread.png"))
     render.render_point_scalars(statistics.mean, paths[-1], "StandardDeviation", 0.0, top, size=(640, 480),
                                 title="standard deviation")
     shapes = [statistics.shape(1, c) for c in (-2.0, 0.0, 2.0)]
-    # One row seen from the side (the grid's rows run down the screen, so one row needs no raise).
-    mesh, size = grid(shapes, {"Pattern": pattern}, elevation=15.0, columns=len(shapes))
     paths.append(os.path.join(directory, "mode_1.png"))
-    # ResetCamera fits the row's bounding sphere into the window's height: zoom to fill its width.
-    render.render_checkerboard(mesh, paths[-1], "Pattern", squares=6, size=size, azimuth=0.0, elevation=15.0,
-                               zoom=2.5)
+    render.render_panels(grid(shapes, pattern, ["mode 1: -2 sd", "mean", "mode 1: +2 sd"]), paths[-1])
     return paths
 
 
 def plots(statistics, specimen_stages, stage_names, directory):
-    """explained_variance.png and scores.png (modes 1 and 2, one colour per stage), matplotlib."""
+    """explained_variance.png and scores.png (modes 1 and 2, one colour per stage), matplotlib;
+    legends outside the data, at most about 12 ticks of modes."""
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
+    from matplotlib.ticker import MaxNLocator
     paths = [os.path.join(directory, "explained_variance.png"), os.path.join(directory, "scores.png")]
     modes = np.arange(1, len(statistics.variances) + 1)
     figure, axes = plt.subplots(figsize=(5, 3.5))
@@ -474,10 +475,10 @@ def plots(statistics, specimen_stages, stage_names, directory):
     axes.plot(modes, 100.0 * np.cumsum(statistics.explained_fractions), "o-", color="tab:red", label="cumulative")
     axes.set_xlabel("mode")
     axes.set_ylabel("explained variance (%)")
-    axes.set_xticks(modes)
-    axes.legend()
-    figure.tight_layout()
-    figure.savefig(paths[0], dpi=120)
+    axes.set_ylim(0.0, 105.0)
+    axes.xaxis.set_major_locator(MaxNLocator(nbins=12, integer=True))
+    axes.legend(loc="lower center", bbox_to_anchor=(0.5, 1.0), ncol=2, frameon=False)
+    figure.savefig(paths[0], dpi=120, bbox_inches="tight")
     plt.close(figure)
     figure, axes = plt.subplots(figsize=(5, 4))
     scores = statistics.scores
@@ -490,9 +491,8 @@ def plots(statistics, specimen_stages, stage_names, directory):
     axes.set_xlabel(f"mode 1 ({100.0 * statistics.explained_fractions[0]:.0f} %)")
     axes.set_ylabel("mode 2" + (f" ({100.0 * statistics.explained_fractions[1]:.0f} %)"
                                 if scores.shape[1] > 1 else " (none)"))
-    axes.legend(fontsize="small", ncol=2)
-    figure.tight_layout()
-    figure.savefig(paths[1], dpi=120)
+    axes.legend(fontsize="small", loc="upper left", bbox_to_anchor=(1.02, 1.0), frameon=False)
+    figure.savefig(paths[1], dpi=120, bbox_inches="tight")
     plt.close(figure)
     return paths
 
@@ -596,10 +596,8 @@ def run(args, comm):
         os.makedirs(directory, exist_ok=True)
         pictures += plots(statistics, specimen_stages, [r["name"] for r in stages], directory)
         if display_available():
-            pictures += surface_pictures(keyframes, pattern, source, times, statistics, directory)
-        else:
-            print("surfacemaps.population: no display: surface pictures skipped (run under xvfb-run -a, "
-                  "or --no-pictures)", file=sys.stderr)
+            pictures += surface_pictures(keyframes, [r["name"] for r in stages], pattern, source, times,
+                                         statistics, directory)
     timings["pictures_s"] = time.perf_counter() - step
     timings["total_s"] = time.perf_counter() - clock
 
