@@ -5,6 +5,8 @@
 #include "vtkSurfaceMapsErrorGuard.h"
 
 #include "base/Aborted.h"
+#include "statistics/Procrustes.h"
+#include "statistics/RotationBlend.h"
 
 #include "vtkDataObject.h"
 #include "vtkDoubleArray.h"
@@ -12,12 +14,14 @@
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
 #include "vtkObjectFactory.h"
+#include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkSmartPointer.h"
 #include "vtkStreamingDemandDrivenPipeline.h"
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -29,6 +33,17 @@ vtkStandardNewMacro(vtkSurfaceSequenceInterpolator);
 struct vtkSurfaceSequenceInterpolator::vtkInternals
 {
   vtkSurfaceMapsCombination::IndexedValues Times; // explicitly set times; t_k = k elsewhere
+
+  // The keyframes' alignment and rotation blend depend on the keyframes and
+  // the two settings only, not on the time: an animation reuses them.
+  std::vector<std::pair<vtkPolyData*, vtkMTimeType>> PreparedFor;
+  int PreparedAlignment = -1;
+  int PreparedBlending = -1;
+  surfacemaps::ProcrustesResult Alignment;
+  std::unique_ptr<surfacemaps::RotationBlend> Blend; // null with BLEND_VERTICES
+
+  // Alignment and Blend for these keyframes and settings, unless held.
+  void Prepare(const std::vector<vtkPolyData*>& inputs, int alignment, int blending);
 };
 
 namespace
@@ -189,6 +204,54 @@ int nearestKeyframe(const std::vector<double>& t, double time)
   return nearest;
 }
 
+} // namespace
+
+// The alignment of the keyframes and, with BLEND_ROTATIONS, the blend of the
+// aligned keyframes.
+void vtkSurfaceSequenceInterpolator::vtkInternals::Prepare(const std::vector<vtkPolyData*>& inputs,
+  int alignment,
+  int blending)
+{
+  std::vector<std::pair<vtkPolyData*, vtkMTimeType>> key;
+  for (vtkPolyData* input : inputs)
+  {
+    key.emplace_back(input, input->GetMTime());
+  }
+  if (key == this->PreparedFor && alignment == this->PreparedAlignment &&
+    blending == this->PreparedBlending)
+  {
+    return;
+  }
+  this->PreparedFor.clear(); // nothing valid should this throw
+  std::vector<surfacemaps::ShapePoints> shapes;
+  for (vtkPolyData* input : inputs)
+  {
+    shapes.push_back(vtkSurfaceMapsCombination::Points(input));
+  }
+  const std::vector<std::array<int, 3>> triangles = vtkSurfaceMapsCombination::Triangles(inputs[0]);
+  surfacemaps::ProcrustesOptions options;
+  options.kind = vtkSurfaceMapsCombination::AlignmentOf(alignment);
+  this->Alignment = surfacemaps::alignProcrustes(
+    shapes, std::vector<double>(shapes.size(), 1.0), triangles, options);
+  this->Blend.reset();
+  if (blending == vtkSurfaceSequenceInterpolator::BLEND_ROTATIONS)
+  {
+    for (std::size_t k = 0; k < shapes.size(); ++k)
+    {
+      for (Eigen::Vector3d& p : shapes[k])
+      {
+        p = this->Alignment.transforms[k].apply(p);
+      }
+    }
+    this->Blend = std::make_unique<surfacemaps::RotationBlend>(shapes, triangles);
+  }
+  this->PreparedFor = std::move(key);
+  this->PreparedAlignment = alignment;
+  this->PreparedBlending = blending;
+}
+
+namespace
+{
 // The requested time clamped into the keyframe range (the first keyframe's
 // time when none is requested).
 double clampedTime(const std::vector<double>& t, double requested)
@@ -281,7 +344,23 @@ int vtkSurfaceSequenceInterpolator::RequestData(vtkInformation*,
       const double time = clampedTime(t, requested);
       const std::vector<double> c =
         coefficients(t, time, this->InterpolationMode == INTERPOLATE_SMOOTH);
-      vtkSurfaceMapsCombination::Combine(inputs, c, {}, nearestKeyframe(t, time), this, output);
+      this->Internals->Prepare(inputs, this->KeyframeAlignment, this->ShapeBlending);
+      const surfacemaps::ProcrustesResult& alignment = this->Internals->Alignment;
+      vtkSurfaceMapsCombination::Combine(
+        inputs, c, alignment.transforms, nearestKeyframe(t, time), this, output);
+      if (this->Internals->Blend)
+      {
+        const surfacemaps::ShapePoints x = this->Internals->Blend->blend(c);
+        for (vtkIdType v = 0; v < static_cast<vtkIdType>(x.size()); ++v)
+        {
+          output->GetPoints()->SetPoint(v, x[v].data());
+        }
+      }
+      if (this->KeyframeAlignment != ALIGN_NONE)
+      {
+        vtkSurfaceMapsCombination::AddAlignmentFields(
+          output, alignment, this->KeyframeAlignment == ALIGN_SIMILARITY);
+      }
       auto interpolated = vtkSmartPointer<vtkDoubleArray>::New();
       interpolated->SetName("InterpolationTime");
       interpolated->InsertNextValue(time);
@@ -297,6 +376,8 @@ void vtkSurfaceSequenceInterpolator::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "InterpolationMode: " << this->InterpolationMode << "\n";
+  os << indent << "KeyframeAlignment: " << this->KeyframeAlignment << "\n";
+  os << indent << "ShapeBlending: " << this->ShapeBlending << "\n";
   os << indent << "StepsPerInterval: " << this->StepsPerInterval << "\n";
   os << indent << "TimeValue: " << this->TimeValue << "\n";
   os << indent << "KeyframeTimes:";

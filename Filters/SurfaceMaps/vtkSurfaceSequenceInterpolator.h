@@ -2,7 +2,7 @@
  * @class   vtkSurfaceSequenceInterpolator
  * @brief   A surface that moves through K keyframe surfaces of identical connectivity over time.
  *
- * Interpolates vertex by vertex between K >= 1 keyframe meshes that share
+ * Interpolates between K >= 1 keyframe meshes that share
  * their cells, e.g. the outputs of vtkSurfaceMapFilter with
  * SetPairModeToSequence() (one common triangulation lifted onto the surfaces
  * of successive developmental stages), or stage averages (vtkSurfaceAverage)
@@ -13,19 +13,47 @@
  * UPDATE_TIME_STEP is produced (UpdateTimeStep(t), ParaView's animation, or
  * downstream temporal filters).
  *
- * InterpolationMode:
+ * InterpolationMode, the weights c_k(t) of the keyframes in time (written
+ * below for BLEND_VERTICES, which weighs the points; BLEND_ROTATIONS weighs
+ * each triangle's rotation vector and stretch the same way):
  * - INTERPOLATE_LINEAR: on [t_k, t_{k+1}], (1 - u) x_k + u x_{k+1} with
  *   u = (t - t_k) / (t_{k+1} - t_k). Continuous; the velocity jumps at the
  *   keyframes.
  * - INTERPOLATE_SMOOTH (default): piecewise-cubic Hermite interpolation, C1
  *   in time, with the tangent at keyframe k the derivative of the parabola
  *   through keyframes k - 1, k, k + 1 (through 0, 1, 2 at the first keyframe
- *   and K - 3, K - 2, K - 1 at the last), valid for non-uniform times. It
- *   reproduces every vertex path that is a polynomial of degree <= 2 in t
- *   exactly; with two keyframes it equals the linear interpolation. Like every
- *   interpolating cubic it may overshoot between keyframes that change
- *   direction abruptly.
- * Both modes reproduce the keyframes exactly at the keyframe times.
+ *   and K - 3, K - 2, K - 1 at the last), valid for non-uniform times. With
+ *   BLEND_VERTICES and ALIGN_NONE it reproduces every vertex path that is a
+ *   polynomial of degree <= 2 in t exactly; with two keyframes it equals the
+ *   linear interpolation. Like every interpolating cubic it may overshoot
+ *   between keyframes that change direction abruptly.
+ * Both modes reproduce the keyframes exactly at the keyframe times (after
+ * their alignment, below).
+ *
+ * What it assumes: the keyframes are one surface at successive times, vertex
+ * v of every keyframe the same material point (one common triangulation),
+ * and a change of pose between keyframes (an organ scanned turned, a mean
+ * placed where its stage's specimens lay) is not part of the motion. So:
+ * - KeyframeAlignment (default ALIGN_RIGID): the keyframes are first aligned
+ *   onto their order-free mean (generalized Procrustes with area weights, as
+ *   vtkSurfaceAverage: rotation and translation, plus a uniform scale with
+ *   ALIGN_SIMILARITY, which also removes growth between keyframes); the
+ *   output is in the mean's frame, which lies where the keyframes lie on
+ *   average, and at t_k it is keyframe k moved by its transform. ALIGN_NONE
+ *   takes the poses as given.
+ * - ShapeBlending (default BLEND_ROTATIONS): what remains, genuine bending
+ *   and turning of parts, is blended triangle by triangle in rotation (by
+ *   angle) and stretch and integrated back into a surface (least squares),
+ *   so a part that turns between keyframes keeps its length and thickness;
+ *   a vertex-wise blend (BLEND_VERTICES) moves points along chords, which
+ *   shortens and thins turning parts (a shape turned by 90 degrees keeps 71
+ *   % of its width half-way, a tube bent into a half loop collapses). Both
+ *   use the same coefficients in time. With BLEND_ROTATIONS a rigid turn
+ *   between keyframes is interpolated as a rigid turn (the shorter way
+ *   round); a part that turns by more than 180 degrees while the rest of the
+ *   surface turns less (a tube bending into a loop) keeps turning the same
+ *   way; keyframes that differ by stretch alone blend as with
+ *   BLEND_VERTICES.
  *
  * Inputs: port 0 is repeatable; keyframe k is the (k+1)-th connection. Every
  * keyframe must have keyframe 0's number of points and exactly its cells;
@@ -43,16 +71,25 @@
  * chooses per array (see vtkSurfaceArrayTransferAlgorithm). "Landmarks" is
  * keyframe 0's; "SourceCellId", "SourceBarycentric", "SpherePosition" and the
  * active normals are dropped.
+ * Continuous active vectors are rotated by each keyframe's alignment.
  * No cell data. Field data "InterpolationTime": the time actually
- * interpolated (the requested time clamped into [t_0, t_{K-1}]). The output's
+ * interpolated (the requested time clamped into [t_0, t_{K-1}]); unless
+ * ALIGN_NONE, vtkSurfaceAverage's "AlignmentRMS" and "AlignmentTransform"
+ * (one 12-component tuple per keyframe: [s_k R_k | t_k] row by row, onto the
+ * output's frame) and, with ALIGN_SIMILARITY, "AlignmentScale". The output's
  * vtkDataObject::DATA_TIME_STEP is the requested time.
  *
  * Errors: keyframe times that are not strictly increasing (the message names
  * the first keyframe k with t_k <= t_{k-1}) or connectivity that differs:
  * vtkErrorMacro and an empty output (TIME_STEPS is then not reported).
  *
- * @warning Linear in K times the number of points per update (only the two
- * or four keyframes around the time contribute values); single-threaded.
+ * @warning Single-threaded. The alignment (a few Procrustes rounds over all
+ * K keyframes) and, with BLEND_ROTATIONS, a polar decomposition per
+ * triangle and keyframe and one sparse factorisation run when the keyframes
+ * or these two settings change and are kept for later times; each update
+ * is then linear in the number of points (one sparse solve with
+ * BLEND_ROTATIONS; only the two or four keyframes around the time
+ * contribute).
  *
  * @sa vtkSurfaceMapFilter vtkSurfaceAverage vtkTemporalInterpolator
  * vtkSurfaceArrayTransferAlgorithm
@@ -88,6 +125,46 @@ public:
   vtkGetMacro(InterpolationMode, int);
   void SetInterpolationModeToLinear() { this->SetInterpolationMode(INTERPOLATE_LINEAR); }
   void SetInterpolationModeToSmooth() { this->SetInterpolationMode(INTERPOLATE_SMOOTH); }
+  ///@}
+
+  /** How the keyframes are aligned to each other before they are blended. */
+  enum KeyframeAlignments
+  {
+    ALIGN_NONE = 0,      ///< poses as given
+    ALIGN_RIGID = 1,     ///< rotation and translation
+    ALIGN_SIMILARITY = 2 ///< rotation, translation and uniform scale
+  };
+
+  ///@{
+  /**
+   * ALIGN_NONE, ALIGN_RIGID (default) or ALIGN_SIMILARITY: the least-squares
+   * (area-weighted) transformation of every keyframe onto the keyframes'
+   * common mean, applied before blending (see the class description).
+   */
+  vtkSetClampMacro(KeyframeAlignment, int, ALIGN_NONE, ALIGN_SIMILARITY);
+  vtkGetMacro(KeyframeAlignment, int);
+  void SetKeyframeAlignmentToNone() { this->SetKeyframeAlignment(ALIGN_NONE); }
+  void SetKeyframeAlignmentToRigid() { this->SetKeyframeAlignment(ALIGN_RIGID); }
+  void SetKeyframeAlignmentToSimilarity() { this->SetKeyframeAlignment(ALIGN_SIMILARITY); }
+  ///@}
+
+  /** How the points of the aligned keyframes are blended. */
+  enum ShapeBlendings
+  {
+    BLEND_VERTICES = 0, ///< vertex by vertex: sum_k c_k x_k
+    BLEND_ROTATIONS = 1 ///< triangle by triangle in rotation and stretch
+  };
+
+  ///@{
+  /**
+   * BLEND_VERTICES or BLEND_ROTATIONS (default): whether turning parts are
+   * blended along chords or by angle (see the class description). Point
+   * arrays are blended vertex by vertex either way.
+   */
+  vtkSetClampMacro(ShapeBlending, int, BLEND_VERTICES, BLEND_ROTATIONS);
+  vtkGetMacro(ShapeBlending, int);
+  void SetShapeBlendingToVertices() { this->SetShapeBlending(BLEND_VERTICES); }
+  void SetShapeBlendingToRotations() { this->SetShapeBlending(BLEND_ROTATIONS); }
   ///@}
 
   ///@{
@@ -137,6 +214,8 @@ protected:
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 
   int InterpolationMode = INTERPOLATE_SMOOTH;
+  int KeyframeAlignment = ALIGN_RIGID;
+  int ShapeBlending = BLEND_ROTATIONS;
   int StepsPerInterval = 1;
   double TimeValue = 0.0;
 

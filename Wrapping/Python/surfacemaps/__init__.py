@@ -40,6 +40,10 @@ Helpers:
     Weighted mean shape of meshes with identical connectivity (e.g. the
     outputs of map_surfaces) after generalized Procrustes alignment; it does
     not depend on the order of the meshes (vtkSurfaceAverage).
+``align_surfaces(meshes, align="rigid")``
+    Copies of meshes with identical connectivity moved onto the frame of
+    their order-free mean (the alignment of average_surfaces), e.g. stage
+    means before they become keyframes of an interpolated series.
 ``shape_statistics(meshes, modes=3, align="rigid")``
     Mean shape, principal modes of variation, variances, explained-variance
     fractions, scores and per-vertex spread of meshes with identical
@@ -79,7 +83,7 @@ from .errors import InputError, MapError, SurfaceMapsWarning  # noqa: F401
 from .mesh import point_arrays, read_mesh, validate  # noqa: F401
 from .mapping import MapResult, embed_on_sphere, evaluate_map, map_surfaces, presets, settings_table  # noqa: F401
 from .transfer import transfer  # noqa: F401  (the function: it replaces the module's name here)
-from .statistics import ShapeStatistics, average_surfaces, shape_statistics  # noqa: F401
+from .statistics import ShapeStatistics, align_surfaces, average_surfaces, shape_statistics  # noqa: F401
 from .files import map_file_stamp, write_collection, write_mesh, write_time_series  # noqa: F401
 
 __version__ = "0.1.0"

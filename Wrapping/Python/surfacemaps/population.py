@@ -20,7 +20,9 @@ suffix .pinned, .vts or .txt). Steps:
    the stage's lifted specimens), and shape statistics over all specimens:
    mean, modes, variances, scores per specimen and stage;
 4. the stage means interpolated over time (vtkSurfaceSequenceInterpolator,
-   keyframe times = stage times) as a series;
+   keyframe times = stage times) as a series, after aligning them to each
+   other (--keyframe-align), so that the series does not roll or shrink
+   between stages;
 5. report.json and pictures.
 
 The stage maps are independent jobs: under MPI (mpi4py, ``mpirun -n R``)
@@ -33,7 +35,8 @@ mpi4py, outside mpirun or with ``--no-mpi`` it runs serially.
 Outputs in OUT: stages/<stage>.vtp (the stage mean on the stage's common
 triangulation, with "StandardDeviation", "Landmarks" and the stage map's
 "SpherePosition" on sphere 0), keyframes/
-keyframe_KK.vtp (the stage means on the final common triangulation),
+keyframe_KK.vtp (the stage means on the final common triangulation, aligned
+to each other),
 series/surface.pvd (the interpolated series), statistics/ (mean.vtp with
 "StandardDeviation" and the modes, mode_<m>.pvd: mean + c sqrt(variance)
 mode for c from -2 to 2, scores.csv, variance.csv), pictures/ (the PNGs:
@@ -91,6 +94,9 @@ def parser():
     g.add_argument("--steps-per-interval", type=int, default=10, help="frames per stage interval (default 10)")
     g.add_argument("--interpolation", choices=("smooth", "linear"), default="smooth",
                    help="smooth (C1 through the keyframes) or piecewise linear in time (default smooth)")
+    g.add_argument("--keyframe-align", choices=("rigid", "similarity", "none"), default="rigid",
+                   help="alignment of the stage means to each other before they are interpolated (similarity "
+                        "also removes growth between the stages; default rigid)")
     g.add_argument("--no-pictures", action="store_true", help="write no pictures")
     g.add_argument("--no-mpi", action="store_true", help="run serially even under mpirun")
     return p
@@ -382,6 +388,7 @@ def interpolator(keyframes, times, args):
     else:
         f.SetInterpolationModeToLinear()
     f.SetStepsPerInterval(args.steps_per_interval)
+    f.SetKeyframeAlignmentToNone()  # aligned already (align_surfaces)
     return f
 
 
@@ -560,6 +567,8 @@ def run(args, comm):
     if len(means) > 1:
         keyframes = surfacemaps.map_surfaces(means, pairs="sequence", NumberOfThreads=final_threads,
                                              **map_settings(args))
+        # Aligned to each other, so the series neither rolls nor shrinks where the stages' poses differ.
+        keyframes = surfacemaps.align_surfaces(keyframes, align=args.keyframe_align)
         for k, keyframe in enumerate(keyframes):
             surfacemaps.write_mesh(keyframe, os.path.join(out, "keyframes", f"keyframe_{k:02d}.vtp"))
         pattern = vtk_to_numpy(keyframes[0].GetPointData().GetArray("SpherePosition"))
@@ -604,7 +613,7 @@ def run(args, comm):
     report = dict(
         stages_dir=os.path.abspath(args.stages_dir), ranks=comm.size, final_map_threads=final_threads or None,
         settings=settings_report(args),
-        align=args.align,
+        align=args.align, keyframe_align=args.keyframe_align,
         stages=[dict(stage=r["stage"], name=r["name"], time=float(t), rank=r["rank"], specimens=len(r["files"]),
                      files=r["files"], specimen_vertices=r["specimen_vertices"], mean_vertices=len(r["points"]),
                      spread_rms=r["spread_rms"], load_s=r["load_s"], map_s=r["map_s"], mean_s=r["mean_s"],

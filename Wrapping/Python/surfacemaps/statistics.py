@@ -61,6 +61,36 @@ def average_surfaces(meshes, weights=None, align="rigid", categorical=None, cont
     return result
 
 
+def align_surfaces(meshes, align="rigid"):
+    """Copies of meshes with identical connectivity, each moved onto the frame of their order-free
+    mean by average_surfaces' alignment ("rigid", "similarity" or "none": copies as given).
+
+    The keyframes vtkSurfaceSequenceInterpolator blends with the same alignment setting: stage
+    means aligned this way do not roll or change size between stages. Point arrays are copied
+    unchanged (vectors are not turned). Returns a list of vtkPolyData; raises as average_surfaces.
+    """
+    import numpy as np
+    from vtkmodules.util.numpy_support import numpy_to_vtk, vtk_to_numpy
+    from vtkmodules.vtkCommonCore import vtkPoints
+
+    meshes = list(meshes)
+    transforms = None
+    if align != "none":
+        mean = average_surfaces(meshes, align=align)
+        transforms = vtk_to_numpy(mean.GetFieldData().GetArray("AlignmentTransform")).reshape(-1, 3, 4)
+    result = []
+    for k, mesh in enumerate(meshes):
+        copy = mesh.NewInstance()
+        copy.DeepCopy(mesh)
+        if transforms is not None:
+            moved = vtk_to_numpy(mesh.GetPoints().GetData()) @ transforms[k][:, :3].T + transforms[k][:, 3]
+            points = vtkPoints()
+            points.SetData(numpy_to_vtk(np.ascontiguousarray(moved, dtype=np.float64), deep=True))
+            copy.SetPoints(points)
+        result.append(copy)
+    return result
+
+
 class ShapeStatistics:
     """The result of shape_statistics (numpy arrays; k modes, N meshes, V vertices).
 

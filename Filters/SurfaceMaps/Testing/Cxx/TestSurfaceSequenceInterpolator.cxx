@@ -17,6 +17,7 @@
 #include "vtkStreamingDemandDrivenPipeline.h"
 #include "vtkTrivialProducer.h"
 
+#include <Eigen/Geometry>
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -70,8 +71,12 @@ struct Sequence
   vtkNew<vtkSurfaceSequenceInterpolator> Interpolator;
   std::vector<vtkSmartPointer<vtkPolyData>> Keyframes;
 
+  // Poses as given and points blended vertex by vertex unless a test chooses
+  // otherwise: the figures below are those of the vertex-wise formulas.
   Sequence(const Path& path, const std::vector<double>& times)
   {
+    this->Interpolator->SetKeyframeAlignmentToNone();
+    this->Interpolator->SetShapeBlendingToVertices();
     for (std::size_t k = 0; k < times.size(); ++k)
     {
       this->Keyframes.push_back(keyframe(path, times[k]));
@@ -128,11 +133,15 @@ const std::vector<double> Times = { 0.0, 1.0, 2.5, 3.0, 5.0 };
 
 TEST(SurfaceSequenceInterpolator, KeyframesAreReproducedExactly)
 {
-  for (int mode : { vtkSurfaceSequenceInterpolator::INTERPOLATE_LINEAR,
-         vtkSurfaceSequenceInterpolator::INTERPOLATE_SMOOTH })
+  // mode % 2: linear, smooth; from 2 on with the rotations blended.
+  for (int mode : { 0, 1, 2, 3 })
   {
     Sequence s(wobble, Times);
-    s.Interpolator->SetInterpolationMode(mode);
+    s.Interpolator->SetInterpolationMode(mode % 2);
+    if (mode >= 2)
+    {
+      s.Interpolator->SetShapeBlendingToRotations();
+    }
     for (std::size_t k = 0; k < Times.size(); ++k)
     {
       EXPECT_EQ(largestDifference(s.At(Times[k]), Sequence::points(s.Keyframes[k])), 0.0)
@@ -181,8 +190,18 @@ TEST(SurfaceSequenceInterpolator, SmoothIsC1AtTheKeyframes)
   EXPECT_EQ(
     s.Interpolator->GetInterpolationMode(), vtkSurfaceSequenceInterpolator::INTERPOLATE_SMOOTH);
   const double e = 1e-6;
-  for (std::size_t k = 1; k + 1 < Times.size(); ++k)
+  // Vertex by vertex (k < K), then with the defaults (aligned, rotations
+  // blended) at the same keyframes.
+  const std::size_t n = Times.size();
+  for (std::size_t i = 1; i + 1 < 2 * n; ++i)
   {
+    const std::size_t k = i % n;
+    if (k == n - 1 || k == 0)
+    {
+      s.Interpolator->SetKeyframeAlignmentToRigid();
+      s.Interpolator->SetShapeBlendingToRotations();
+      continue;
+    }
     const auto before = s.At(Times[k] - e);
     const auto at = s.At(Times[k]);
     const auto after = s.At(Times[k] + e);
@@ -197,6 +216,8 @@ TEST(SurfaceSequenceInterpolator, SmoothIsC1AtTheKeyframes)
     EXPECT_LT(largest, 1e-4) << "keyframe " << k; // O(e) from the second derivative
   }
   // The linear interpolation has a kink there.
+  s.Interpolator->SetKeyframeAlignmentToNone();
+  s.Interpolator->SetShapeBlendingToVertices();
   s.Interpolator->SetInterpolationModeToLinear();
   const auto before = s.At(Times[1] - e), at = s.At(Times[1]), after = s.At(Times[1] + e);
   double largest = 0.0;
@@ -317,6 +338,7 @@ TEST(SurfaceSequenceInterpolator, PlainUpdateUsesTimeValue)
 {
   std::vector<vtkSmartPointer<vtkTrivialProducer>> producers;
   vtkNew<vtkSurfaceSequenceInterpolator> interpolator;
+  interpolator->SetKeyframeAlignmentToNone();
   std::vector<vtkSmartPointer<vtkPolyData>> keyframes;
   for (int k = 0; k < 3; ++k)
   {
@@ -401,11 +423,102 @@ TEST(SurfaceSequenceInterpolator, PrintSelfShowsEverySetting)
   interpolator->SetInterpolationMode(7);
   EXPECT_EQ(
     interpolator->GetInterpolationMode(), vtkSurfaceSequenceInterpolator::INTERPOLATE_SMOOTH);
+  EXPECT_EQ(interpolator->GetKeyframeAlignment(), vtkSurfaceSequenceInterpolator::ALIGN_RIGID);
+  EXPECT_EQ(interpolator->GetShapeBlending(), vtkSurfaceSequenceInterpolator::BLEND_ROTATIONS);
+  interpolator->SetKeyframeAlignment(9);
+  interpolator->SetShapeBlendingToVertices();
   std::ostringstream print;
   interpolator->Print(print);
-  for (const char* part :
-    { "InterpolationMode: 1", "StepsPerInterval: 3", "TimeValue: 0", "KeyframeTimes: 1: 0.5" })
+  for (const char* part : { "InterpolationMode: 1",
+         "KeyframeAlignment: 2",
+         "ShapeBlending: 0",
+         "StepsPerInterval: 3",
+         "TimeValue: 0",
+         "KeyframeTimes: 1: 0.5" })
   {
     EXPECT_NE(print.str().find(part), std::string::npos) << part << "\n" << print.str();
+  }
+}
+
+namespace
+{
+
+// An ellipsoid (icosphere level 2, semi-axes 1, 0.6, 0.3) centred on the
+// origin, scaled by `scale`, turned by `angle` about `axis` and moved by
+// `shift`.
+vtkSmartPointer<vtkPolyData> posedEllipsoid(double angle,
+  const Eigen::Vector3d& axis,
+  const Eigen::Vector3d& shift = Eigen::Vector3d::Zero(),
+  double scale = 1.0)
+{
+  surfacemaps::PolygonMesh mesh = surfacemaps::makeIcosphere(2);
+  const Eigen::Matrix3d R = Eigen::AngleAxisd(angle, axis.normalized()).toRotationMatrix();
+  for (Eigen::Vector3d& p : mesh.points)
+  {
+    p = scale * (R * Eigen::Vector3d(p.x(), 0.6 * p.y(), 0.3 * p.z())) + shift;
+  }
+  return vtkSurfaceMapsConversion::ToPolyData(mesh);
+}
+
+} // namespace
+
+// Keyframes that differ only by pose (and size, with ALIGN_SIMILARITY) are
+// one shape: aligned, the series does not move; as given, it rolls.
+TEST(SurfaceSequenceInterpolator, PoseChangesAreNotMotion)
+{
+  const double pi = std::acos(-1.0);
+  for (int alignment : { vtkSurfaceSequenceInterpolator::ALIGN_RIGID,
+         vtkSurfaceSequenceInterpolator::ALIGN_SIMILARITY })
+  {
+    const bool similarity = alignment == vtkSurfaceSequenceInterpolator::ALIGN_SIMILARITY;
+    vtkNew<vtkSurfaceSequenceInterpolator> interpolator;
+    interpolator->SetKeyframeAlignment(alignment);
+    interpolator->AddInputData(posedEllipsoid(0.0, Eigen::Vector3d::UnitX()));
+    interpolator->AddInputData(posedEllipsoid(
+      0.6 * pi, Eigen::Vector3d(1, 1, 0), Eigen::Vector3d(2, 0, 1), similarity ? 1.5 : 1.0));
+    interpolator->AddInputData(
+      posedEllipsoid(1.2 * pi, Eigen::Vector3d(0, 1, 1), Eigen::Vector3d(-1, 3, 0)));
+    interpolator->UpdateTimeStep(0.0);
+    const auto first = Sequence::points(interpolator->GetOutput());
+    for (double t : { 0.25, 0.5, 1.0, 1.5, 2.0 })
+    {
+      interpolator->UpdateTimeStep(t);
+      EXPECT_LT(largestDifference(Sequence::points(interpolator->GetOutput()), first), 1e-9)
+        << "alignment " << alignment << " at t = " << t;
+    }
+    vtkFieldData* fields = interpolator->GetOutput()->GetFieldData();
+    ASSERT_NE(fields->GetArray("AlignmentTransform"), nullptr);
+    EXPECT_EQ(fields->GetArray("AlignmentTransform")->GetNumberOfTuples(), 3);
+    EXPECT_EQ(fields->GetArray("AlignmentScale") != nullptr, similarity);
+    EXPECT_LT(fields->GetArray("AlignmentRMS")->GetRange()[1], 1e-9);
+
+    interpolator->SetKeyframeAlignmentToNone();
+    interpolator->UpdateTimeStep(0.5);
+    EXPECT_GT(largestDifference(Sequence::points(interpolator->GetOutput()), first), 0.5);
+    EXPECT_EQ(interpolator->GetOutput()->GetFieldData()->GetArray("AlignmentTransform"), nullptr);
+  }
+}
+
+// With BLEND_ROTATIONS a rigid turn between keyframes is interpolated as the
+// turn by the interpolated angle; vertex by vertex the shape thins.
+TEST(SurfaceSequenceInterpolator, RotationsBlendATurnByItsAngle)
+{
+  const double pi = std::acos(-1.0);
+  const Eigen::Vector3d axis(1, 2, 0.5);
+  const double angle = 0.85 * pi;
+  vtkNew<vtkSurfaceSequenceInterpolator> interpolator;
+  interpolator->SetKeyframeAlignmentToNone();
+  interpolator->SetInterpolationModeToLinear();
+  interpolator->AddInputData(posedEllipsoid(0.0, axis));
+  interpolator->AddInputData(posedEllipsoid(angle, axis));
+  for (double u : { 0.3, 0.5, 0.8 })
+  {
+    interpolator->SetShapeBlendingToRotations();
+    interpolator->UpdateTimeStep(u);
+    const auto expected = Sequence::points(posedEllipsoid(u * angle, axis));
+    EXPECT_LT(largestDifference(Sequence::points(interpolator->GetOutput()), expected), 1e-9) << u;
+    interpolator->SetShapeBlendingToVertices();
+    interpolator->UpdateTimeStep(u);
+    EXPECT_GT(largestDifference(Sequence::points(interpolator->GetOutput()), expected), 0.1) << u;
   }
 }

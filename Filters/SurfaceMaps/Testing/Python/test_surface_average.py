@@ -125,6 +125,21 @@ def test_average_of_copies_is_the_surface_up_to_the_approximation_error(copies):
     assert np.allclose(points(only_first_two), 0.5 * (in_frame[0] + in_frame[1]), atol=1e-12)
 
 
+def test_align_surfaces_moves_each_copy_into_the_means_frame(copies):
+    _, common = copies
+    aligned = surfacemaps.align_surfaces(common)
+    mean = surfacemaps.average_surfaces(common)
+    matrices = vtk_to_numpy(mean.GetFieldData().GetArray("AlignmentTransform")).reshape(-1, 3, 4)
+    for k, (given, moved_copy) in enumerate(zip(common, aligned)):
+        assert np.allclose(points(moved_copy), points(given) @ matrices[k][:, :3].T + matrices[k][:, 3],
+                           rtol=0, atol=1e-12 * mean.GetLength())
+        assert np.array_equal(triangles(moved_copy), triangles(given))
+        assert moved_copy.GetPointData().GetNumberOfArrays() == given.GetPointData().GetNumberOfArrays()
+    # Copy 2, moved far by (R2, T2), now lies on the others (up to the map's error).
+    assert np.abs(points(aligned[2]) - points(aligned[1])).max() < 0.1 * np.abs(points(common[2]) - points(common[1])).max()
+    assert all(np.array_equal(points(a), points(c)) for a, c in zip(surfacemaps.align_surfaces(common, "none"), common))
+
+
 def test_average_surfaces_errors(copies):
     meshes, common = copies
     with pytest.raises(surfacemaps.InputError, match=r"input 1 \(.*ellipsoid_coarse.stl\) does not have the "
@@ -172,7 +187,11 @@ def test_average_surfaces_array_modes(copies):
 
 
 def keyframe_sequence(common, times):
+    """The interpolator through `common`, poses as given and points blended vertex by vertex (the
+    checks below compare with the keyframes and their vertex-wise blend)."""
     interpolator = surfacemaps.vtkSurfaceSequenceInterpolator()
+    interpolator.SetKeyframeAlignmentToNone()
+    interpolator.SetShapeBlendingToVertices()
     for k, (mesh, t) in enumerate(zip(common, times)):
         interpolator.AddInputData(mesh)
         interpolator.SetKeyframeTime(k, t)
@@ -249,6 +268,7 @@ def test_settings_round_trip():
     assert a.GetInputWeight(2) == 0.5 and a.GetInputWeight(0) == 1.0
     s = surfacemaps.vtkSurfaceSequenceInterpolator()
     assert s.GetInterpolationMode() == s.INTERPOLATE_SMOOTH and s.GetStepsPerInterval() == 1
+    assert s.GetKeyframeAlignment() == s.ALIGN_RIGID and s.GetShapeBlending() == s.BLEND_ROTATIONS
     s.SetKeyframeTime(1, 2.5)
     assert s.GetKeyframeTime(1) == 2.5 and s.GetKeyframeTime(3) == 3.0
 
