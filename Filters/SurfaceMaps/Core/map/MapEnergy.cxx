@@ -65,8 +65,9 @@ MapEnergy::TriangleTerms MapEnergy::triangleTerms(const MapVertex& a,
   }
   if (w.map > 0.0 && w.mapToMean)
   {
-    PerInput<std::array<double, 3>> grams;
-    for (int i = 0; i < this->T.numberOfInputs(); ++i)
+    // The mesh-quality term's Gram entries are these: computed once.
+    PerInput<std::array<double, 3>> grams = terms.lifted;
+    for (int i = static_cast<int>(grams.size()); i < this->T.numberOfInputs(); ++i)
     {
       grams.push_back(gramEntries(a.lifted[i], b.lifted[i], c.lifted[i]));
     }
