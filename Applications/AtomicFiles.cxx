@@ -67,7 +67,8 @@ bool startsWith(const char* text, const char* prefix)
 // file; async-signal-safe (no allocation, no locale).
 bool isMapWrittenName(const char* name)
 {
-  if (std::strcmp(name, "report.json") == 0 || std::strstr(name, ".tmp.") != nullptr)
+  if (std::strcmp(name, "report.json") == 0 || std::strcmp(name, "fit.csv") == 0 ||
+    std::strcmp(name, "correspondences.npz") == 0 || std::strstr(name, ".tmp.") != nullptr)
   {
     return true;
   }

@@ -18,7 +18,8 @@ void installSignalHandlers();
 /// While it lives, SIGINT and SIGTERM remove what a command was writing into
 /// `directory` before the process ends:
 /// - MapFiles: the files a map writes (report.json, common_/mapped_/
-///   embedding_<i>.vtp, temporary *.tmp.* files); any other file stays, and
+///   embedding_<i>.vtp, fit.csv, correspondences.npz, temporary *.tmp.*
+///   files); any other file stays, and
 ///   so does the directory (a map written in place);
 /// - Everything: every file in it and in its subdirectories (one level
 ///   deep), then the directory itself (a command's private staging

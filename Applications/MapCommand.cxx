@@ -10,6 +10,7 @@
 #include "MapDirectory.h"
 #include "MeshFiles.h"
 #include "SettingFlags.h"
+#include "SpecimenFit.h"
 #include "Terminal.h"
 
 #include "vtkSurfaceMapEvaluation.h"
@@ -65,6 +66,15 @@ const char* const MapHelpIntro =
   "                      input i with its sphere embedding in the map's frame\n"
   "                      (SpherePosition): with common_<i>.vtp, what\n"
   "                      'surfacemap transfer' reads to carry data between inputs\n"
+  "  DIR/correspondences.npz\n"
+  "                      the same for numpy (numpy.load): points (N x V x 3, T's\n"
+  "                      vertices on every input), triangles (F x 3), names\n"
+  "                      (the inputs' file stems)\n"
+  "  DIR/fit.csv         per input: H of its vertices to T and the two-sided\n"
+  "                      distance (% of its bounding-box diagonal), the\n"
+  "                      approximating and exact SD and the exact map's max\n"
+  "                      distortion and area below 1.5 (maps 0 -> i), the\n"
+  "                      landmark error (% of the diagonal); also in report.json\n"
   "  DIR/report.json     every setting of the run (and the sphere embedding's,\n"
   "                      which the map computes embeddings with), sizes,\n"
   "                      energies, per-phase iterations and times (and the\n"
@@ -602,10 +612,21 @@ int runMap(const std::vector<std::string>& args)
     MapWriter files(destination->path());
     report["approximating_map"] =
       writeOutputs(map, errors, files, "common", "approximating map", inputs, true);
+    // From T on every input, before the output mode changes the outputs.
+    const std::vector<std::string> names = specimenNames(arguments.meshes);
+    std::vector<vtkPolyData*> common;
+    for (std::size_t i = 0; i < inputs.size(); ++i)
+    {
+      common.push_back(map->GetOutput(static_cast<int>(i)));
+    }
+    files.writeBytes(correspondencesArchive(names, common), "correspondences.npz");
+    const std::vector<double> landmarkDistances = landmarkErrors(inputs, common);
     map->SetOutputModeToMappedFirstInput();
     report["exact_map"] = writeOutputs(map, errors, files, "mapped", "exact map", inputs, false);
     map->SetOutputModeToInputEmbeddings();
     writeOutputs(map, errors, files, "embedding", nullptr, inputs, false);
+    report["specimens"] = specimenFit(report, names, landmarkDistances);
+    files.writeBytes(specimenFitCsv(report["specimens"]), "fit.csv");
     files.addToReport(report);
     writeFileAtomically(destination->path() + "/report.json", jsonText(report));
     destination->commit(files.names());
@@ -616,7 +637,7 @@ int runMap(const std::vector<std::string>& args)
     return ExitBadInput;
   }
   std::printf("  written to %s: common_<i>.vtp, mapped_<i>.vtp, embedding_<i>.vtp (i < %d), "
-              "report.json\n",
+              "correspondences.npz, fit.csv, report.json\n",
     arguments.outputDir.c_str(),
     static_cast<int>(inputs.size()));
   return certified ? ExitOk : ExitNoCertifiedResult;

@@ -133,8 +133,12 @@ void MapWriter::write(vtkPolyData* data, const std::string& name)
   addStamp(fields, MapFileName, name);
   stamped->SetFieldData(fields);
   const std::string path = this->Directory + "/" + name;
-  const std::string bytes = polyDataFileBytes(stamped, path);
-  writeFileAtomically(path, bytes);
+  this->writeBytes(polyDataFileBytes(stamped, path), name);
+}
+
+void MapWriter::writeBytes(const std::string& bytes, const std::string& name)
+{
+  writeFileAtomically(this->Directory + "/" + name, bytes);
   this->Names.push_back(name);
   Json::Value record(Json::objectValue);
   record["name"] = name;
@@ -156,7 +160,8 @@ std::string mapFileName(const char* stem, int i)
 
 bool isMapFileName(const std::string& name)
 {
-  static const std::regex pattern("(common|mapped|embedding)_[0-9]+\\.vtp");
+  static const std::regex pattern(
+    "(common|mapped|embedding)_[0-9]+\\.vtp|fit\\.csv|correspondences\\.npz");
   return std::regex_match(name, pattern);
 }
 
@@ -270,6 +275,13 @@ void verifyMapFiles(const std::string& directory, const std::vector<std::string>
     {
       continue;
     }
+    const std::string changed = path +
+      " was changed after the map was written (its size or checksum differs from " + directory +
+      "/report.json)";
+    if (std::filesystem::path(name).extension() != ".vtp")
+    {
+      throw std::runtime_error(changed); // no mesh: no stamp to say more
+    }
     bool readable = false;
     const std::string fileId = stampOf(path, MapIdName, &readable);
     const std::string fileName = stampOf(path, MapFileName);
@@ -290,10 +302,7 @@ void verifyMapFiles(const std::string& directory, const std::vector<std::string>
       throw std::runtime_error(
         path + " is " + fileName + " of this map, not " + name + ": swapped or renamed");
     }
-    throw std::runtime_error(path +
-      " was changed after the map was written (its size or "
-      "checksum differs from " +
-      directory + "/report.json)");
+    throw std::runtime_error(changed);
   }
 }
 

@@ -36,6 +36,11 @@ public:
   /// Throws std::runtime_error naming the file on failure.
   void write(vtkPolyData* data, const std::string& name);
 
+  /// Writes `bytes` as `directory/name` (checked, atomic) and records them as
+  /// `write` does: for the map's files that are no meshes (fit.csv,
+  /// correspondences.npz), which carry no stamp.
+  void writeBytes(const std::string& bytes, const std::string& name);
+
   /// Sets report.json's members "map_id" and "files" (per file written: name,
   /// bytes, md5) in `report`.
   void addToReport(Json::Value& report) const;
@@ -55,7 +60,7 @@ private:
 std::string mapFileName(const char* stem, int i);
 
 /// True for a name like a map file's: common_<i>.vtp, mapped_<i>.vtp,
-/// embedding_<i>.vtp.
+/// embedding_<i>.vtp, fit.csv, correspondences.npz.
 bool isMapFileName(const std::string& name);
 
 /// The input files a map directory's report.json (`report`) names, in

@@ -14,8 +14,8 @@ def test_map_writes_common_and_mapped_meshes_and_a_report(tmp_path):
             data("blob.vts"), *SHORT, "--output-dir", out)
     assert r.returncode == 0, r.stderr
     assert "map of 2 surfaces: certified bijective" in r.stdout
-    assert sorted(os.listdir(out)) == ["common_0.vtp", "common_1.vtp", "embedding_0.vtp", "embedding_1.vtp",
-                                       "mapped_0.vtp", "mapped_1.vtp", "report.json"]
+    assert sorted(os.listdir(out)) == ["common_0.vtp", "common_1.vtp", "correspondences.npz", "embedding_0.vtp",
+                                       "embedding_1.vtp", "fit.csv", "mapped_0.vtp", "mapped_1.vtp", "report.json"]
 
     report = json.loads((out / "report.json").read_text())
     assert report["certificate"]["bijective"] is True
@@ -49,6 +49,57 @@ def test_map_writes_common_and_mapped_meshes_and_a_report(tmp_path):
     assert common[1].GetCellData().GetArray("Distortion") is not None
     # A written output is itself a valid input.
     assert run("check", out / "common_1.vtp").returncode == 0
+    # Landmarks kept: T's landmark vertices lie on the inputs' landmark points.
+    assert [s["landmark_error"] for s in report["specimens"]] == pytest.approx([0.0, 0.0], abs=1e-6)
+
+
+def test_every_input_has_its_fit_and_correspondences(tmp_path):
+    import csv
+    import numpy as np
+    out = tmp_path / "three"
+    (tmp_path / "copy").mkdir()
+    other = tmp_path / "copy" / "blob.off"  # the same stem as input 1's
+    other.write_bytes(open(data("blob.off"), "rb").read())
+    r = run("map", data("ellipsoid.obj"), data("blob.off"), other, *SHORT, "-o", out)
+    assert r.returncode == 0, r.stderr
+    assert "correspondences.npz, fit.csv, report.json" in r.stdout
+    report = json.loads((out / "report.json").read_text())
+    rows = report["specimens"]
+    # Names are the file stems, told apart where two inputs share one.
+    assert [(s["input"], s["name"]) for s in rows] == [(0, "ellipsoid"), (1, "blob_1"), (2, "blob_2")]
+    assert [s["file"] for s in rows] == [i["file"] for i in report["inputs"]]
+    assert rows[0]["approximating_sd"] is None and rows[0]["exact_sd"] is None  # every pair's source
+    for s, approximating, exact in zip(rows[1:], report["approximating_map"], report["exact_map"]):
+        assert s["approximating_sd"] == approximating["SymmetricDirichlet"] >= 1.0
+        assert s["exact_sd"] == exact["SymmetricDirichlet"] >= 1.0
+        assert s["exact_max_distortion"] == exact["MaxDistortion"]
+        assert s["hausdorff"] == approximating["HausdorffTarget"]
+    assert rows[0]["hausdorff"] == report["approximating_map"][0]["HausdorffSource"]
+    for s in rows:
+        assert 0.0 < s["hausdorff"] <= s["two_sided_distance"] < 5.0
+        assert s["landmark_error"] is None  # no landmarks given
+    with open(out / "fit.csv", newline="") as f:
+        table = list(csv.DictReader(f))
+    assert [t["name"] for t in table] == ["ellipsoid", "blob_1", "blob_2"]
+    assert table[0]["exact_sd"] == "" and table[0]["landmark_error"] == ""
+    assert [float(t["exact_sd"]) for t in table[1:]] == pytest.approx([s["exact_sd"] for s in rows[1:]], rel=1e-8)
+    assert [float(t["hausdorff"]) for t in table] == pytest.approx([s["hausdorff"] for s in rows], rel=1e-8)
+
+    # np.load reads the archive without pickles: T's vertices on every input, and T's triangles.
+    from vtkmodules.util.numpy_support import vtk_to_numpy
+    with np.load(out / "correspondences.npz", allow_pickle=False) as archive:
+        assert sorted(archive.files) == ["names", "points", "triangles"]
+        assert archive["names"].tolist() == ["ellipsoid", "blob_1", "blob_2"]
+        points, triangles = archive["points"], archive["triangles"]
+    common = [read_vtp(out / f"common_{i}.vtp") for i in range(3)]
+    assert points.shape == (3, common[0].GetNumberOfPoints(), 3) and points.dtype == np.float64
+    for i, mesh in enumerate(common):
+        assert np.array_equal(points[i], vtk_to_numpy(mesh.GetPoints().GetData()))
+    cells = vtk_to_numpy(common[0].GetPolys().GetConnectivityArray()).reshape(-1, 3)
+    assert triangles.dtype == np.int64 and np.array_equal(triangles, cells)
+    # Recorded in report.json like every file of the map: the readers accept the directory.
+    assert {"fit.csv", "correspondences.npz"} <= {f["name"] for f in report["files"]}
+    assert run("evaluate", out, "-o", tmp_path / "evaluated").returncode == 0
 
 
 def test_max_error_bounds_every_input_vertex(tmp_path):

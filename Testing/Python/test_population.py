@@ -170,6 +170,44 @@ def test_statistics_cover_every_specimen_on_the_final_triangulation(serial):
     assert np.allclose(points(middle), points(mean), rtol=0.0, atol=1e-12)
 
 
+def test_every_specimen_is_written_on_the_final_triangulation_with_its_fit(serial, stages_dir):
+    output, result, report = serial
+    keyframe = read(output / "keyframes" / "keyframe_00.vtp")
+    # The stems repeat from stage to stage: the stage names tell them apart.
+    names = [f"stage_{k:02d}_specimen_{i:02d}" for k in range(STAGES) for i in range(SPECIMENS)]
+    with np.load(output / "correspondences.npz", allow_pickle=False) as archive:
+        assert archive["names"].tolist() == names
+        assert np.array_equal(archive["triangles"], triangles(keyframe))
+        lifted = archive["points"]
+    assert lifted.shape == (STAGES * SPECIMENS, keyframe.GetNumberOfPoints(), 3)
+    for name, expected in zip(names, lifted):
+        specimen = read(output / "specimens" / f"{name}.vtp")
+        assert np.array_equal(triangles(specimen), triangles(keyframe))
+        assert np.array_equal(points(specimen), expected)
+    # What the statistics were computed from: their mean is the mean of these.
+    assert np.allclose(points(surfacemaps.average_surfaces(
+        [synthetic.polydata(p, triangles(keyframe)) for p in lifted])),
+        points(read(output / "statistics" / "mean.vtp")), rtol=0.0, atol=1e-9)
+
+    rows = report["specimens"]
+    with open(output / "fit.csv") as f:
+        table = list(csv.DictReader(f))
+    assert [t["name"] for t in table] == [r["name"] for r in rows] == names
+    assert [t["file"] for t in table] == [str(stages_dir / f"stage_{k:02d}" / f"specimen_{i:02d}.vtp")
+                                          for k in range(STAGES) for i in range(SPECIMENS)]
+    for k, (row, line) in enumerate(zip(rows, table)):
+        assert 0.0 < row["hausdorff"] <= row["two_sided_distance"] < 10.0
+        assert float(line["hausdorff"]) == row["hausdorff"]
+        # Landmarks kept: T's landmark vertices on every specimen are its landmark points.
+        assert row["landmark_error"] < 1e-6
+        if k % SPECIMENS == 0:  # its stage map's source
+            assert row["exact_sd"] is None and line["exact_sd"] == ""
+        else:
+            assert row["exact_sd"] >= 1.0 and row["approximating_sd"] >= 1.0 and row["exact_max_distortion"] >= 1.0
+            assert float(line["exact_sd"]) == row["exact_sd"]
+    assert "fit (fit.csv): largest H" in result.stdout
+
+
 def test_series_passes_through_the_keyframes(serial):
     output, _, report = serial
     frames = pvd_frames(output / "series" / "surface.pvd")
@@ -238,8 +276,8 @@ def test_two_mpi_ranks_give_the_serial_results(serial, stages_dir, tmp_path):
         a, b = read(output / path), read(tmp_path / path)
         assert np.array_equal(triangles(a), triangles(b)), path
         assert np.array_equal(points(a), points(b)), path
-    for name in ("scores.csv", "variance.csv"):
-        assert (output / "statistics" / name).read_text() == (tmp_path / "statistics" / name).read_text()
+    for name in ("statistics/scores.csv", "statistics/variance.csv", "fit.csv"):
+        assert (output / name).read_text() == (tmp_path / name).read_text()
 
 
 def test_every_map_setting_but_the_pairs_is_a_flag_of_the_list():

@@ -70,7 +70,9 @@ Submodules: ``surfacemaps.plots`` (distortion curves), ``surfacemaps.render``
 (offscreen pictures), ``surfacemaps.population`` (``python3 -m
 surfacemaps.population STAGES_DIR --output-dir OUT``: stage maps and means,
 spread, one map across the stages, shape statistics over all specimens, the
-interpolated series; under MPI when run with mpirun).
+interpolated series; under MPI when run with mpirun), ``surfacemaps.specimens``
+(every specimen on T: its fit table and correspondences.npz, as ``surfacemap
+map`` writes them).
 """
 
 import vtkmodules.vtkCommonCore  # noqa: F401  (VTK's base classes must be loaded first)

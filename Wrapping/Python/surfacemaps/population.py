@@ -32,7 +32,10 @@ deterministic for any thread count). Each rank runs its stages on one thread;
 rank 0 then takes over the cores of the finished ranks on its host. Without
 mpi4py, outside mpirun or with ``--no-mpi`` it runs serially.
 
-Outputs in OUT: stages/<stage>.vtp (the stage mean on the stage's common
+Outputs in OUT: specimens/<name>.vtp (every specimen on the final common triangulation; name: the
+file's stem), correspondences.npz (the same as one N x V x 3 array with the triangles and names),
+fit.csv (per specimen: distances to the final triangulation and landmark error, the SDs and
+distortion of its stage's map from the stage's first specimen), stages/<stage>.vtp (the stage mean on the stage's common
 triangulation, with "StandardDeviation", "Landmarks" and the stage map's
 "SpherePosition" on sphere 0), keyframes/
 keyframe_KK.vtp (the stage means on the final common triangulation, aligned
@@ -60,6 +63,7 @@ import traceback
 import numpy as np
 
 import surfacemaps
+from surfacemaps import specimens as specimen_files
 from surfacemaps import synthetic
 
 MESH_SUFFIXES = (".vtp", ".vtk", ".obj", ".off", ".ply", ".stl")
@@ -307,8 +311,10 @@ def stage_result(directory, k, args, threads):
     clock = time.perf_counter()
     files, meshes = read_stage(directory)
     loaded = time.perf_counter()
-    lifted = surfacemaps.map_surfaces(meshes, pairs="star", NumberOfThreads=threads, **map_settings(args))
+    lifted, exact = surfacemaps.map_surfaces(meshes, pairs="star", mapped=True, NumberOfThreads=threads,
+                                             **map_settings(args))
     mapped = time.perf_counter()
+    result_fit = specimen_files.map_fit(meshes, lifted, exact)
     if len(lifted) > 1:
         # One alignment for both: the statistics' mean is average_surfaces' order-free mean.
         spread = surfacemaps.shape_statistics(lifted, modes=1, align=args.align)
@@ -320,6 +326,7 @@ def stage_result(directory, k, args, threads):
     if result["landmarks"] is None:  # same connectivity as the lifted meshes: take theirs
         result["landmarks"] = portable(lifted[0])["landmarks"]
     result["lifted"] = [portable(m)["points"] for m in lifted]
+    result["fit"], result["specimens"] = result_fit, [portable(m) for m in meshes]
     result["sphere"] = vtk_to_numpy(lifted[0].GetPointData().GetArray("SpherePosition")).copy()
     averaged = time.perf_counter()
     result.update(stage=k, time=developmental_time(meshes), name=os.path.basename(directory), files=files,
@@ -589,6 +596,13 @@ def run(args, comm):
                                                   align=args.align)
         write_statistics(statistics, specimens, os.path.join(out, "statistics"))
     timings["statistics_s"] = time.perf_counter() - step
+    step = time.perf_counter()
+    files = [os.path.join(os.path.abspath(args.stages_dir), r["name"], f) for r in stages for f in r["files"]]
+    fit = specimen_files.write_specimens(
+        out, files, specimen_files.specimen_names(files, [r["name"] for r in stages for _ in r["files"]]),
+        [s for r in stages for s in r["specimens"]], [f for r in stages for f in r["fit"]], lifted,
+        portable(keyframes[0]))
+    timings["specimens_s"] = time.perf_counter() - step
 
     step = time.perf_counter()
     source, frames = None, []
@@ -618,7 +632,7 @@ def run(args, comm):
                      files=r["files"], specimen_vertices=r["specimen_vertices"], mean_vertices=len(r["points"]),
                      spread_rms=r["spread_rms"], load_s=r["load_s"], map_s=r["map_s"], mean_s=r["mean_s"],
                      total_s=r["total_s"]) for r, t in zip(stages, times)],
-        common_vertices=keyframes[0].GetNumberOfPoints(), frames=len(frames),
+        common_vertices=keyframes[0].GetNumberOfPoints(), frames=len(frames), specimens=fit,
         statistics=None if statistics is None else dict(
             specimens=len(lifted), variances=statistics.variances.tolist(),
             explained_fractions=statistics.explained_fractions.tolist(),
@@ -639,10 +653,15 @@ def summary(report):
     if report["statistics"]:
         fractions = ", ".join(f"{100 * f:.1f} %" for f in report["statistics"]["explained_fractions"])
         print(f"shape statistics over {report['statistics']['specimens']} specimens; explained variance: {fractions}")
+    far = max(report["specimens"], key=lambda s: s["hausdorff"])
+    sds = [s for s in report["specimens"] if s["exact_sd"] is not None]
+    print(f"fit (fit.csv): largest H {far['hausdorff']:.3f} % ({far['name']})"
+          + (f", largest exact SD {max(s['exact_sd'] for s in sds):.3f}" if sds else ""))
     t = report["timings"]
     for key, label in (("stage_maps_s", "stage maps and means (all ranks, wall)"),
                        ("gather_s", "gather (wait for the other ranks)"), ("final_map_s", "final map"),
-                       ("statistics_s", "statistics"), ("interpolation_s", f"interpolation ({report['frames']} frames)"),
+                       ("statistics_s", "statistics"), ("specimens_s", "specimens on T and their fit"),
+                       ("interpolation_s", f"interpolation ({report['frames']} frames)"),
                        ("pictures_s", "pictures"), ("total_s", "total")):
         print(f"{label:<40} {t[key]:8.2f} s")
 
