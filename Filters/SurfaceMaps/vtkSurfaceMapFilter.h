@@ -219,7 +219,9 @@ public:
   ///@{
   /** Whose map distortion is minimised with three or more inputs: the pairs (0, i), (i, i+1),
    * (i, i+1) and (N-1, 0), or every pair; or mean: each input against the inputs' mean shape,
-   * triangle by triangle (no input privileged; time linear in N). Default star. */
+   * triangle by triangle (no input privileged; time linear in N). With all and mean the map
+   * does not depend on the order of the inputs (they are mapped most typical first). Default
+   * star. */
   vtkSetClampMacro(PairMode, int, 0, 4);
   vtkGetMacro(PairMode, int);
   void SetPairModeToStar() { this->SetPairMode(0); }

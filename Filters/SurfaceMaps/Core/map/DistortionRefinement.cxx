@@ -22,9 +22,40 @@ struct DistortedTriangles
   double factor = 1.0; // the smallest sizing factor applied
 };
 
+/// Input i's vertices mapped onto its own approximating mesh T_i (T lifted
+/// onto input i): located in T on sphere i, at the same barycentric place
+/// between T's lifted corners. Unit-area units.
+std::vector<Eigen::Vector3d> ontoOwnApproximation(CommonTriangulation& T,
+  const PreparedInput& surface,
+  int i,
+  const std::vector<std::array<int, 3>>& triangles,
+  const std::vector<Eigen::Vector3d>& g)
+{
+  const HalfedgeMesh& mesh = T.mesh();
+  std::vector<Eigen::Vector3d> lifted(mesh.n_vertices());
+  for (auto v : mesh.vertices())
+  {
+    lifted[v.idx()] = evaluateSurfacePoint(surface.points,
+      surface.triangles,
+      locateSurfacePoint(
+        *surface.locator, surface.sphere, surface.triangles, g[v.idx()], T.liftTriangle(v, i)));
+  }
+  // T on sphere i as the target "input": the places are (T triangle, barycentric).
+  const std::vector<SurfacePoint> places = transferPoints(surface.sphere, triangles, g, g, g, triangles);
+  std::vector<Eigen::Vector3d> mapped(places.size());
+  for (std::size_t v = 0; v < places.size(); ++v)
+  {
+    mapped[v] = evaluateSurfacePoint(lifted, triangles, places[v]);
+  }
+  return mapped;
+}
+
 /// Where T hides a distorted exact map: for every pair (i, j) of the map
 /// term, the triangles of input i whose exact-map distortion (input i ->
-/// input j through T) exceeds `threshold`. T's own map only sees T's
+/// input j through T) exceeds `threshold`; for a pair (i, i), those whose
+/// map onto input i's own approximating mesh T_i does (ontoOwnApproximation:
+/// every exact map i -> j is that map, T's own map T_i -> T_j, and the
+/// inverse of j's). T's own map only sees T's
 /// vertices; inside a T triangle the exact map follows the two sphere
 /// embeddings, which can squeeze a whole input triangle where they differ.
 /// Lowers `factor` at their corners on input i and at the corners of the
@@ -53,12 +84,20 @@ DistortedTriangles markExactMapDistortion(CommonTriangulation& T,
       gi[v.idx()] = T.g(v, i);
       gj[v.idx()] = T.g(v, j);
     }
-    const std::vector<SurfacePoint> images = transferPoints(
-      surfaces[i].sphere, triangles, gi, gj, surfaces[j].sphere, surfaces[j].triangles);
-    std::vector<Eigen::Vector3d> mapped(images.size());
-    for (std::size_t v = 0; v < images.size(); ++v)
+    std::vector<SurfacePoint> images;
+    std::vector<Eigen::Vector3d> mapped;
+    if (i == j)
     {
-      mapped[v] = evaluateSurfacePoint(surfaces[j].points, surfaces[j].triangles, images[v]);
+      mapped = ontoOwnApproximation(T, surfaces[i], i, triangles, gi);
+    }
+    else
+    {
+      images = transferPoints(
+        surfaces[i].sphere, triangles, gi, gj, surfaces[j].sphere, surfaces[j].triangles);
+      for (const SurfacePoint& image : images)
+      {
+        mapped.push_back(evaluateSurfacePoint(surfaces[j].points, surfaces[j].triangles, image));
+      }
     }
     const MapMetrics metrics = measureMap(surfaces[i].points, mapped, surfaces[i].triangles);
     double area = 0.0;
@@ -85,14 +124,32 @@ DistortedTriangles markExactMapDistortion(CommonTriangulation& T,
       for (const int v : surfaces[i].triangles[t])
       {
         factor[i][v] = std::min(factor[i][v], f);
-        for (const int w : surfaces[j].triangles[images[v].triangle])
+        for (std::size_t k = 0; i != j && k < 3; ++k)
         {
+          const int w = surfaces[j].triangles[images[v].triangle][k];
           factor[j][w] = std::min(factor[j][w], f);
         }
       }
     }
   }
   return found;
+}
+
+/// The maps the refinement measures: the map term's pairs; against the mean
+/// shape (no pairs), every input's map onto its own approximating mesh,
+/// the (i, i) of markExactMapDistortion.
+std::vector<std::array<int, 2>> measuredMaps(const SurfaceMapOptions& options, const CommonTriangulation& T)
+{
+  if (options.pairs != PairScheme::Mean)
+  {
+    return T.pairs();
+  }
+  std::vector<std::array<int, 2>> maps;
+  for (int i = 0; i < T.numberOfInputs(); ++i)
+  {
+    maps.push_back({ i, i });
+  }
+  return maps;
 }
 
 } // namespace
@@ -125,7 +182,7 @@ std::optional<MapPhase> DistortionRefinement::next(CommonTriangulation& T,
     // stayed (README, "Where the corpus gap comes from").
     const double threshold = round == 0 ? options.refinementDistortion : options.squeezeDistortion;
     const DistortedTriangles found = markExactMapDistortion(
-      T, surfaces, T.pairs(), threshold, round == 0 ? options.refinementGrowth : 0.0, factor);
+      T, surfaces, measuredMaps(options, T), threshold, round == 0 ? options.refinementGrowth : 0.0, factor);
     std::ostringstream message;
     message << "exact map: " << found.count << " input triangles with distortion above "
             << threshold;

@@ -12,9 +12,10 @@ namespace surfacemaps
 {
 
 /// After the fine phase: rounds that measure the exact map of every pair of
-/// the map term (input i -> input j through T) and shrink the sizing around
-/// the input triangles whose distortion max(s1, 1/s2) exceeds a threshold,
-/// each followed by a Refine phase. T's own map only sees T's vertices;
+/// the map term (input i -> input j through T; against the mean shape, each
+/// input's map onto its own approximating mesh T_i instead) and shrink the
+/// sizing around the input triangles whose distortion max(s1, 1/s2) exceeds
+/// a threshold, each followed by a Refine phase. T's own map only sees T's vertices;
 /// inside a T triangle the exact map follows the two sphere embeddings,
 /// which can squeeze a whole input triangle where they differ.
 ///

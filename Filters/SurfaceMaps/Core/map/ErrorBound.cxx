@@ -170,7 +170,7 @@ void certifyBaseDistances(const CommonTriangulation& T,
     }
     if (!bounds.empty() && !(d < bounds[i]))
     {
-      throw NoResultError("input " + std::to_string(i) +
+      throw NoResultError("input " + std::to_string(surfaces[i].label) +
         " is not within the error bound: " + std::to_string(d / bounds[i]) + " times the bound");
     }
     largest.push_back(d / surfaces[i].scale);

@@ -16,8 +16,9 @@ enum class PairScheme
   All,      ///< every pair i < j
   /// Each input against the inputs' mean shape, triangle by triangle (the
   /// mean of the lifted triangles' Gram matrices): one term per input, no
-  /// input privileged, time linear in N. Its pairs (those of Cycle) are the
-  /// maps the distortion refinement checks.
+  /// input privileged, time linear in N. Its pairs (those of Cycle) count
+  /// the map terms; the distortion refinement checks each input's map onto
+  /// its own approximating mesh instead.
   Mean,
 };
 

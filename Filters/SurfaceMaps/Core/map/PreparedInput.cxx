@@ -33,6 +33,7 @@ std::string inputName(int i)
 PreparedInput prepareSurface(const MapInput& input, int index)
 {
   PreparedInput s;
+  s.label = index;
   s.triangles = input.mesh.triangles();
   const std::size_t nv = input.mesh.points.size();
   if (input.spherePositions.size() != nv)
@@ -176,9 +177,8 @@ void alignEmbeddings(std::vector<PreparedInput>& surfaces,
     else
     {
       log(Logger::Warning,
-        inputName(static_cast<int>(i)) +
-          ": the embedding rotated onto input 0's landmarks does "
-          "not certify; using it unrotated");
+        inputName(surfaces[i].label) + ": the embedding rotated onto " +
+          inputName(surfaces[0].label) + "'s landmarks does not certify; using it unrotated");
     }
   }
 }
@@ -225,13 +225,14 @@ std::vector<std::map<int, int>> landmarkVertices(const std::vector<MapInput>& in
 std::vector<PreparedInput> prepareInputs(const std::vector<MapInput>& inputs,
   const std::vector<std::map<int, int>>& landmarks,
   int samples,
-  const Logger& log)
+  const Logger& log,
+  const std::vector<int>& labels)
 {
   std::vector<PreparedInput> surfaces;
   surfaces.reserve(inputs.size());
   for (std::size_t i = 0; i < inputs.size(); ++i)
   {
-    surfaces.push_back(prepareSurface(inputs[i], static_cast<int>(i)));
+    surfaces.push_back(prepareSurface(inputs[i], labels.empty() ? static_cast<int>(i) : labels[i]));
   }
   alignEmbeddings(surfaces, landmarks, log);
   for (PreparedInput& s : surfaces)

@@ -39,6 +39,9 @@ struct PreparedInput
   /// original = points / scale + centre.
   Eigen::Vector3d centre = Eigen::Vector3d::Zero();
   double scale = 1.0;
+  /// The caller's index of this input (the engine may map the inputs in
+  /// another order, MappingOrder.h): what messages call it.
+  int label = 0;
 
   /// Sizing at a point of triangle t with barycentric weights w.
   double sizingAt(int t, const std::array<double, 3>& w) const;
@@ -47,7 +50,8 @@ struct PreparedInput
 /// The inputs as the energy sees them: centred, unit area, the embeddings
 /// of inputs 1.. rotated onto input 0's through the landmarks, lifts and
 /// approximation samples (at most `samples` per input; 0: every vertex).
-/// `landmarks`: landmarkVertices(inputs).
+/// `landmarks`: landmarkVertices(inputs); `labels`: the caller's index of
+/// each input (PreparedInput::label; empty: their places).
 /// The surfaces refer to their own members: keep the returned vector as it
 /// is (no insertion) while a CommonTriangulation uses it. Throws
 /// std::invalid_argument when an input's arrays do not fit its mesh, it has
@@ -55,7 +59,8 @@ struct PreparedInput
 std::vector<PreparedInput> prepareInputs(const std::vector<MapInput>& inputs,
   const std::vector<std::map<int, int>>& landmarks,
   int samples,
-  const Logger& log = Logger());
+  const Logger& log = Logger(),
+  const std::vector<int>& labels = {});
 
 /// Landmark id -> vertex of each input; every id must be on every input
 /// (std::invalid_argument otherwise, naming the input and the id).

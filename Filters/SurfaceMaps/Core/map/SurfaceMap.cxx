@@ -6,6 +6,7 @@
 #include "map/ErrorBound.h"
 #include "map/MapEnergy.h"
 #include "map/MapTransfer.h"
+#include "map/MappingOrder.h"
 #include "map/PhaseRunner.h"
 #include "map/PreparedInput.h"
 #include "map/Schedule.h"
@@ -53,7 +54,7 @@ void liftCommonTriangulation(CommonTriangulation& T,
     if (!result.certificates.back().bijective)
     {
       throw NoResultError("the common triangulation's embedding on sphere " +
-        std::to_string(i) + " is not bijective: " + result.certificates.back().reason);
+        std::to_string(surfaces[i].label) + " is not bijective: " + result.certificates.back().reason);
     }
     for (auto v : mesh.vertices())
     {
@@ -174,20 +175,20 @@ void runStage(const MapStage& stage,
   }
 }
 
-} // namespace
-
-SurfaceMapResult computeSurfaceMap(const std::vector<MapInput>& inputs,
-  const SurfaceMapOptions& options)
+/// The map of `inputs` in the order given; `labels`: the caller's index of
+/// each (for messages).
+SurfaceMapResult computeInOrder(const std::vector<MapInput>& inputs,
+  const SurfaceMapOptions& options,
+  const std::vector<int>& labels)
 {
   const auto start = std::chrono::steady_clock::now();
-  if (inputs.empty())
-  {
-    throw InputError("a surface map needs at least one input");
-  }
   const std::vector<std::map<int, int>> landmarks = landmarkVertices(inputs);
   // Every input vertex is a sample under an error bound, which must hold for all.
-  std::vector<PreparedInput> surfaces = prepareInputs(
-    inputs, landmarks, options.maxError > 0.0 ? 0 : options.approximationSamples, options.log);
+  std::vector<PreparedInput> surfaces = prepareInputs(inputs,
+    landmarks,
+    options.maxError > 0.0 ? 0 : options.approximationSamples,
+    options.log,
+    labels);
   ScheduleContext context;
   context.inputs = static_cast<int>(inputs.size());
   context.landmarks = !landmarks[0].empty();
@@ -211,6 +212,56 @@ SurfaceMapResult computeSurfaceMap(const std::vector<MapInput>& inputs,
   }
   result.energy = energyByTerm(T, runner.weights());
   result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return result;
+}
+
+/// Entry k of `values` (the engine's order) moved to place order[k] (the caller's).
+template <typename Value>
+void restoreOrder(std::vector<Value>& values, const std::vector<int>& order)
+{
+  if (values.size() != order.size())
+  {
+    return; // not per input (empty: not computed)
+  }
+  std::vector<Value> restored(values.size());
+  for (std::size_t k = 0; k < order.size(); ++k)
+  {
+    restored[static_cast<std::size_t>(order[k])] = std::move(values[k]);
+  }
+  values = std::move(restored);
+}
+
+} // namespace
+
+SurfaceMapResult computeSurfaceMap(const std::vector<MapInput>& inputs,
+  const SurfaceMapOptions& options)
+{
+  if (inputs.empty())
+  {
+    throw InputError("a surface map needs at least one input");
+  }
+  // Landmark ids checked in the caller's order, so that a message names the
+  // caller's input.
+  landmarkVertices(inputs);
+  const std::vector<int> order = mappingOrder(inputs, options.pairs);
+  if (std::is_sorted(order.begin(), order.end()))
+  {
+    return computeInOrder(inputs, options, order);
+  }
+  std::vector<MapInput> ordered;
+  ordered.reserve(inputs.size());
+  for (const int i : order)
+  {
+    ordered.push_back(inputs[static_cast<std::size_t>(i)]);
+  }
+  SurfaceMapResult result = computeInOrder(ordered, options, order);
+  restoreOrder(result.spherePositions, order);
+  restoreOrder(result.lifted, order);
+  restoreOrder(result.sourcePoints, order);
+  restoreOrder(result.inputSpherePositions, order);
+  restoreOrder(result.certificates, order);
+  restoreOrder(result.baseDistance, order);
+  restoreOrder(result.errorBound, order);
   return result;
 }
 

@@ -3,6 +3,7 @@
 #include "base/Error.h"
 #include "geometry/MapMetrics.h"
 #include "geometry/SphereLocator.h"
+#include "map/MappingOrder.h"
 #include "map/SurfaceMap.h"
 
 #include <gtest/gtest.h>
@@ -47,7 +48,7 @@ TEST(SurfaceMap, PairModes)
   EXPECT_EQ(mapPairs(PairScheme::Sequence, 3), (P{ { 0, 1 }, { 1, 2 } }));
   EXPECT_EQ(mapPairs(PairScheme::Cycle, 3), (P{ { 0, 1 }, { 1, 2 }, { 2, 0 } }));
   EXPECT_EQ(mapPairs(PairScheme::All, 3), (P{ { 0, 1 }, { 0, 2 }, { 1, 2 } }));
-  // The mean's pairs are the maps the refinement checks: each input in two.
+  // The mean's pairs count its map terms: each input in two.
   EXPECT_EQ(mapPairs(PairScheme::Mean, 3), mapPairs(PairScheme::Cycle, 3));
   EXPECT_TRUE(mapPairs(PairScheme::Star, 1).empty());
 }
@@ -186,6 +187,44 @@ TEST(SurfaceMap, MeanShapeDistortionCertifiesAndFitsEveryInput)
   }
 }
 
+// With pairs that name no input (all, mean) the map does not depend on the
+// order of the inputs: the same T and the same lifts, bit for bit, in any
+// order; the most typical input is mapped first. Star keeps the order given.
+TEST(SurfaceMap, OrderFreePairingsGiveTheSameMapInAnyOrder)
+{
+  const std::vector<MapInput> inputs{ icosphereInput(2, 0.0, { 1.0, 1.0, 1.0 }, 0.3),
+    icosphereInput(2, 0.3, { 1.4, 1.0, 0.8 }),
+    icosphereInput(2, -0.2, { 0.8, 1.2, 1.0 }, 0.2) };
+  SurfaceMapOptions options = shortSchedule(2, 2);
+  options.pairs = PairScheme::Mean;
+  const SurfaceMapResult r = computeSurfaceMap(inputs, options);
+  expectCertified(r);
+  for (const std::vector<int>& order : { std::vector<int>{ 2, 0, 1 }, std::vector<int>{ 1, 2, 0 } })
+  {
+    std::vector<MapInput> permuted;
+    for (const int i : order)
+    {
+      permuted.push_back(inputs[i]);
+    }
+    const SurfaceMapResult p = computeSurfaceMap(permuted, options);
+    EXPECT_EQ(p.triangles, r.triangles);
+    for (std::size_t k = 0; k < order.size(); ++k)
+    {
+      EXPECT_EQ(p.lifted[k], r.lifted[order[k]]) << "input " << k;
+      EXPECT_EQ(p.spherePositions[k], r.spherePositions[order[k]]) << "input " << k;
+      EXPECT_EQ(mappedVertices(p, permuted, k, 0), mappedVertices(r, inputs, order[k], order[0]));
+    }
+  }
+  // Ellipsoids stretched 1, 1.5 and 2.25 times along x: the middle one first.
+  const std::vector<MapInput> stretched{ icosphereInput(2, 0.0, { 2.25, 1.0, 1.0 }),
+    icosphereInput(2, 0.0, { 1.0, 1.0, 1.0 }),
+    icosphereInput(2, 0.0, { 1.5, 1.0, 1.0 }) };
+  EXPECT_EQ(mappingOrder(stretched, PairScheme::Mean).front(), 2);
+  EXPECT_EQ(mappingOrder(stretched, PairScheme::All).front(), 2);
+  EXPECT_EQ(mappingOrder(stretched, PairScheme::Star), (std::vector<int>{ 0, 1, 2 }));
+  EXPECT_EQ(mappingOrder(stretched, PairScheme::Sequence), (std::vector<int>{ 0, 1, 2 }));
+}
+
 // Conjugate gradients preconditioned per embedding (BlockSolveInputs) solve
 // the same Newton systems as the coupled factorisation: on three inputs the
 // schedule must end certified at nearly the same energy.
@@ -254,6 +293,28 @@ TEST(SurfaceMap, RefinementRunsWhereTheExactMapIsDistorted)
   expectCertified(refined);
   ASSERT_EQ(refined.phases.back().kind, PhaseKind::Refine);
   EXPECT_GE(refined.phases.back().iterations, 1);
+  EXPECT_GT(refined.phases.back().vertices, plain.phases.back().vertices);
+}
+
+// Against the mean shape the refinement measures each input's map onto its
+// own approximating mesh: nothing distorted, nothing refined; everything
+// distorted, T grows on every input and stays certified.
+TEST(SurfaceMap, MeanShapeRefinementMeasuresEachInputsOwnMap)
+{
+  const std::vector<MapInput> inputs{ icosphereInput(2, 0.0, { 1.0, 1.0, 1.0 }, 0.3),
+    icosphereInput(2, 0.3, { 1.4, 1.0, 0.8 }),
+    icosphereInput(2, -0.2, { 0.8, 1.2, 1.0 }, 0.2) };
+  SurfaceMapOptions options = shortSchedule(2, 3);
+  options.pairs = PairScheme::Mean;
+  options.refinementRounds = 1;
+  options.refinementIterations = 2;
+  options.refinementDistortion = 1e9;
+  const SurfaceMapResult plain = computeSurfaceMap(inputs, options);
+  EXPECT_EQ(plain.phases.back().kind, PhaseKind::Fine);
+  options.refinementDistortion = 1.0 + 1e-9;
+  const SurfaceMapResult refined = computeSurfaceMap(inputs, options);
+  expectCertified(refined);
+  ASSERT_EQ(refined.phases.back().kind, PhaseKind::Refine);
   EXPECT_GT(refined.phases.back().vertices, plain.phases.back().vertices);
 }
 
