@@ -127,7 +127,8 @@ def map_surfaces(meshes, landmarks=None, target_error=None, pairs=None, keep_lan
       (each mesh centred and scaled to unit area); smaller gives a finer T.
     - `pairs`: "star" (0-i), "sequence", "cycle", "all" or "mean" (each mesh
       against the meshes' mean shape): whose distortion is minimised with
-      three or more meshes.
+      three or more meshes; with "all" and "mean" the map does not depend on
+      the order of the meshes.
     - `keep_landmarks`: lock landmarks exactly after the landmark phase (True)
       or release them.
     - `categorical`, `continuous`: names of point arrays carried onto the
