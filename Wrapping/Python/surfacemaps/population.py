@@ -8,7 +8,7 @@ stage's specimens (.vtp .vtk .obj .off .ply .stl; landmarks as a
 "Landmarks" point array or as a landmark file with the mesh's stem and the
 suffix .pinned, .vts or .txt). Steps:
 
-1. per stage: one map of the stage's specimens (star pairs 0-i), the
+1. per stage: one map of the stage's specimens (each against their mean shape), the
    order-free mean of the lifted specimens (generalized Procrustes,
    vtkSurfaceAverage) and their per-vertex spread (vtkSurfaceShapeStatistics'
    "StandardDeviation", on the mean);
@@ -117,7 +117,7 @@ def parse_args(argv=None):
 
 
 # The map settings as flags: every setting of the engine's list (vtkSurfaceMapsSettings) but the
-# pairs, which each map here chooses itself (star within a stage, a sequence across the stages).
+# pairs, which each map here chooses itself (the mean shape within a stage, a sequence across the stages).
 # Flags, help and values come from the list's codec, as for `surfacemap map`.
 _SETTINGS = surfacemaps.vtkSurfaceMapsSettings
 _TABLE = _SETTINGS.MAP_SETTINGS
@@ -306,12 +306,12 @@ def developmental_time(meshes):
 # ------------------------------------------------------------------ steps
 
 def stage_result(directory, k, args, threads):
-    """Map stage k's specimens (star pairs), their mean and spread; portable, with wall times."""
+    """Map stage k's specimens (against their mean shape), their mean and spread; portable, with wall times."""
     from vtkmodules.util.numpy_support import vtk_to_numpy
     clock = time.perf_counter()
     files, meshes = read_stage(directory)
     loaded = time.perf_counter()
-    lifted, exact = surfacemaps.map_surfaces(meshes, pairs="star", mapped=True, NumberOfThreads=threads,
+    lifted, exact = surfacemaps.map_surfaces(meshes, pairs="mean", mapped=True, NumberOfThreads=threads,
                                              **map_settings(args))
     mapped = time.perf_counter()
     result_fit = specimen_files.map_fit(meshes, lifted, exact)
