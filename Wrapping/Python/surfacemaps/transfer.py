@@ -20,7 +20,8 @@ def transfer(mapping, source, target, arrays=None, categorical=None, continuous=
     - a directory written by ``surfacemap map`` (its embedding_<i>.vtp and
       common_<i>.vtp of both inputs are read and checked against its
       report.json: from another map, swapped or changed files are refused, as
-      ``surfacemap transfer`` does);
+      ``surfacemap transfer`` does, and so is an embedding that does not agree
+      with its common file, e.g. rotated, even when report.json vouches for it);
     - what map_surfaces returned (a MapResult: its ``.filter``), or any
       vtkSurfaceMapFilter with its inputs connected. The filter is brought up
       to date (no computation when it already is) and its outputs are read in
