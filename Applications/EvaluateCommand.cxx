@@ -26,6 +26,8 @@ const char* const EvaluateHelp =
   "energy (1 for an isometry), area fractions with distortion max(s1, 1/s2)\n"
   "below 1.5 and 2, the largest distortion, minimum and mean minimum angles,\n"
   "and, when both carry SpherePosition, the exact bijectivity certificate.\n"
+  "A SOURCE or TARGET (or a map's input 0) with zero-area triangles is refused\n"
+  "(exit 2, naming the first): no distortion is defined on them.\n"
   "\n"
   "  --originals A B   the surfaces SOURCE and TARGET approximate: adds the\n"
   "                    Hausdorff figure H per side (largest distance of an\n"

@@ -8,7 +8,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iomanip>
 #include <limits>
+#include <sstream>
 #include <stdexcept>
 #include <string>
 
@@ -27,6 +29,13 @@ namespace
 std::string inputName(int i)
 {
   return "input " + std::to_string(i);
+}
+
+std::string lengthText(double length)
+{
+  std::ostringstream text;
+  text << std::setprecision(3) << length;
+  return text.str();
 }
 
 /// Centres an input, scales it to unit area and builds what the energy needs.
@@ -240,6 +249,29 @@ std::vector<PreparedInput> prepareInputs(const std::vector<MapInput>& inputs,
     buildLifts(s);
   }
   return surfaces;
+}
+
+void requireUsableSizing(const std::vector<PreparedInput>& surfaces, double minEdgeLength)
+{
+  for (std::size_t i = 0; i < surfaces.size(); ++i)
+  {
+    const PreparedInput& s = surfaces[i];
+    if (!s.userSizing || s.sizing.empty())
+    {
+      continue;
+    }
+    const auto smallest = std::min_element(s.sizing.begin(), s.sizing.end());
+    if (*smallest < minEdgeLength)
+    {
+      // In the input's own units, as the user gave them.
+      throw InputError(inputName(static_cast<int>(i)) + " has a Sizing of " +
+        lengthText(*smallest / s.scale) + " at point " +
+        std::to_string(smallest - s.sizing.begin()) +
+        ", below the smallest target edge length MinEdgeLength (" + lengthText(minEdgeLength) +
+        " of the input scaled to unit area, " + lengthText(minEdgeLength / s.scale) +
+        " in its units): so fine a common triangulation cannot be optimised");
+    }
+  }
 }
 
 void setCurvatureSizing(std::vector<PreparedInput>& surfaces,

@@ -188,6 +188,7 @@ SurfaceMapResult computeSurfaceMap(const std::vector<MapInput>& inputs,
   // Every input vertex is a sample under an error bound, which must hold for all.
   std::vector<PreparedInput> surfaces = prepareInputs(
     inputs, landmarks, options.maxError > 0.0 ? 0 : options.approximationSamples, options.log);
+  requireUsableSizing(surfaces, options.minEdgeLength);
   ScheduleContext context;
   context.inputs = static_cast<int>(inputs.size());
   context.landmarks = !landmarks[0].empty();
