@@ -417,9 +417,15 @@ surfacemaps::Logger vtkSurfaceMapsConversion::EngineLog()
   surfacemaps::Logger log;
   log.sink = [](surfacemaps::Logger::Level level, const std::string& message)
   {
+    // Info (a phase or refinement round done) is the progress `surfacemap -v`
+    // shows; Detail (every iteration) needs -vv.
     if (level == surfacemaps::Logger::Warning)
     {
       vtkLog(WARNING, << message);
+    }
+    else if (level == surfacemaps::Logger::Info)
+    {
+      vtkLog(INFO, << message);
     }
     else
     {

@@ -90,3 +90,16 @@ def test_population_and_render_say_their_bounds():
     r = python_entry("render", data("ellipsoid.obj"), "-o", "x.png", "--max", "1")
     assert r.returncode == 2 and "argument --max: needs a number above 1 up to 1e6, not '1'" in r.stderr
     assert "(default 3, above 1 up to 1e6)" in " ".join(python_entry("render", "--help").stdout.split())
+
+
+def test_error_bound_rounds_show_at_v_and_end_with_exit_3(tmp_path):
+    # A vertex budget far beyond what the rounds can reach: -v shows each round, and the rounds'
+    # bound (not the budget) ends the run.
+    r = run("-v", "map", data("ellipsoid_coarse.stl"), "--max-error", "1e-6", "--max-vertices", "1000000000",
+            "--bound-refinement-rounds", "1", "--bound-refinement-iterations", "1",
+            "--landmark-iterations", "0", "--coarse-iterations", "2", "--fine-iterations", "2",
+            "--output-dir", tmp_path / "map", timeout=120)
+    assert r.returncode == 3, (r.stdout, r.stderr)
+    assert "error bound 1e-06 of the bounding-box diagonal: " in r.stderr and "input vertices beyond" in r.stderr
+    assert "fine phase: 2 iterations" in r.stderr, r.stderr
+    assert "could not be met after 1 refinement rounds" in r.stderr
