@@ -101,7 +101,7 @@ public:
   static std::vector<vtkPolyData*> PolyDataOf(vtkInformationVector* vector);
 
   /// Engine messages into vtkLogger: warnings as WARNING, Info (a phase or
-  /// round done) as INFO, Detail (an iteration) as TRACE.
+  /// round done) at VERBOSITY_1, Detail (an iteration) as TRACE.
   static surfacemaps::Logger EngineLog();
 
   /// Name for messages: the "FileName" field-data string if present, else "input <index>".
