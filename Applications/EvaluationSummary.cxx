@@ -51,8 +51,8 @@ std::string zeroAreaTriangles(vtkPolyData* mesh, const std::string& what)
   {
     return {};
   }
-  return what + " has " + std::to_string(count) + " zero-area triangle" +
-    (count == 1 ? "" : "s") + " (the first is triangle " + std::to_string(first) +
+  return what + " has " + std::to_string(count) + " zero-area triangle" + (count == 1 ? "" : "s") +
+    " (the first is triangle " + std::to_string(first) +
     "): no map's distortion is defined on them; evaluate needs triangles of positive area";
 }
 

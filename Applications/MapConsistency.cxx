@@ -146,9 +146,8 @@ void checkEmbedding(const MapFile& common, const MapFile& embedding, int j)
     double q[3], p[3];
     sourceOnSphere(common, embedding, cellIds, barycentric, f, v, q);
     g->GetTuple(v, p);
-    const double distance =
-      std::sqrt((p[0] - q[0]) * (p[0] - q[0]) + (p[1] - q[1]) * (p[1] - q[1]) +
-        (p[2] - q[2]) * (p[2] - q[2]));
+    const double distance = std::sqrt((p[0] - q[0]) * (p[0] - q[0]) +
+      (p[1] - q[1]) * (p[1] - q[1]) + (p[2] - q[2]) * (p[2] - q[2]));
     if (!(distance <= MapSphereTolerance))
     {
       if (first < 0)
@@ -165,11 +164,11 @@ void checkEmbedding(const MapFile& common, const MapFile& embedding, int j)
   {
     char distance[32];
     std::snprintf(distance, sizeof(distance), "%.3g", firstDistance);
-    throw std::runtime_error(embedding.path + " and " + common.path +
-      " are not one map: at " + std::to_string(count) + " of T's " +
-      std::to_string(common.mesh->GetNumberOfPoints()) + " vertices the embedding of input " +
-      std::to_string(j) + " does not send the vertex's source point to its sphere position " +
-      "(vertex " + std::to_string(first) + ": " + pointText(firstG) + " in the common file, " +
+    throw std::runtime_error(embedding.path + " and " + common.path + " are not one map: at " +
+      std::to_string(count) + " of T's " + std::to_string(common.mesh->GetNumberOfPoints()) +
+      " vertices the embedding of input " + std::to_string(j) +
+      " does not send the vertex's source point to its sphere position " + "(vertex " +
+      std::to_string(first) + ": " + pointText(firstG) + " in the common file, " +
       pointText(firstF) + " by the embedding, " + distance +
       " apart): a file was edited, rotated or swapped after the map was written");
   }

@@ -58,8 +58,7 @@ public:
   {
     if (this->Fmt == Format::Ascii)
     {
-      return !this->Scanner->nextToken().empty() ||
-        !this->Scanner->firstTokenOfNextLine().empty();
+      return !this->Scanner->nextToken().empty() || !this->Scanner->firstTokenOfNextLine().empty();
     }
     return std::any_of(this->Bytes.begin() + static_cast<std::ptrdiff_t>(this->Position),
       this->Bytes.end(),
