@@ -19,9 +19,9 @@ struct Job
   int fineIterations; // settings differ too, so that no two maps are alike
 };
 
+// Two jobs: the machine the suite runs on has two cores.
 const Job Jobs[] = { { "ellipsoid_coarse.stl", "blob.off", 3 },
-  { "blob.off", "ellipsoid_coarse.stl", 4 },
-  { "ellipsoid_coarse.stl", "ellipsoid_coarse.stl", 2 } };
+  { "blob.off", "ellipsoid_coarse.stl", 2 } };
 
 // Every output's points and sphere positions, one value after another.
 std::vector<double> mapValues(const Job& job)
