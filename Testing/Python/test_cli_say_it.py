@@ -9,7 +9,7 @@ QUICK = ("--coarse-iterations", "0", "--fine-iterations", "0", "--refinement-rou
 
 def test_obj_line_and_point_elements_are_refused(tmp_path):
     mesh = tmp_path / "with_lines.obj"
-    mesh.write_text(open(data("ellipsoid.obj")).read() + "l 1 2\np 3\n")
+    mesh.write_text(open(data("ellipsoid.obj")).read().rstrip("\n") + "\nl 1 2\np 3\n")
     r = run("check", mesh)
     assert r.returncode == 2, (r.stdout, r.stderr)
     assert f"{mesh}: 2 line or point elements ('l', 'p'); only triangles ('f') are accepted" in r.stderr
@@ -52,13 +52,14 @@ def test_a_sizing_too_small_to_optimise_is_refused(tmp_path):
     assert r.returncode == 2, (r.stdout, r.stderr)
     assert "input 0 has a Sizing of 1e-300 at point 0, below the smallest target edge length " \
            "MinEdgeLength (0.001 of the input scaled to unit area" in r.stderr, r.stderr
-    assert not (tmp_path / "map").exists()
+    assert not (tmp_path / "map" / "report.json").exists()
 
 
 def test_evaluate_names_zero_area_triangles(tmp_path):
     lines = open(data("ellipsoid.obj")).read().splitlines()
     vertex_lines = [k for k, line in enumerate(lines) if line.startswith("v ")]
-    lines[vertex_lines[1]] = lines[vertex_lines[0]]  # vertex 1 onto vertex 0: their two triangles flat
+    a, b = (int(c) - 1 for c in next(line for line in lines if line.startswith("f ")).split()[1:3])
+    lines[vertex_lines[b]] = lines[vertex_lines[a]]  # an edge's ends at one point: its two triangles flat
     flat = tmp_path / "flat.obj"
     flat.write_text("\n".join(lines) + "\n")
     r = run("evaluate", data("ellipsoid.obj"), flat)
