@@ -14,7 +14,7 @@ from cli import SHORT, data, read_vtp, refresh_report, run, sphere_arrays
 @pytest.fixture(scope="module")
 def map_dir(tmp_path_factory):
     out = tmp_path_factory.mktemp("map")
-    r = run("map", data("ellipsoid.obj"), data("blob.off"), "--output-dir", out, "--overwrite", *SHORT)
+    r = run("map", data("ellipsoid_coarse.stl"), data("blob.off"), "--output-dir", out, "--overwrite", *SHORT)
     assert r.returncode == 0, r.stderr
     return out
 
