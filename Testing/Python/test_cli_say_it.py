@@ -51,7 +51,7 @@ def test_a_sizing_too_small_to_optimise_is_refused(tmp_path):
             "--output-dir", tmp_path / "map", *QUICK)
     assert r.returncode == 2, (r.stdout, r.stderr)
     assert "input 0 has a Sizing of 1e-300 at point 0, below the smallest target edge length " \
-           "MinEdgeLength (0.001 of the input scaled to unit area" in r.stderr, r.stderr
+           "MinEdgeLength (--min-edge-length, 0.001 of the input scaled to unit area" in r.stderr, r.stderr
     assert not (tmp_path / "map" / "report.json").exists()
 
 

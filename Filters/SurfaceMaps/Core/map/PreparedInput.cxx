@@ -4,6 +4,7 @@
 #include "geometry/Rotation.h"
 #include "geometry/Sizing.h"
 #include "geometry/SphericalTriangulation.h"
+#include "map/MapSettings.h"
 #include "mesh/LandmarkValidation.h"
 
 #include <algorithm>
@@ -263,11 +264,13 @@ void requireUsableSizing(const std::vector<PreparedInput>& surfaces, double minE
     const auto smallest = std::min_element(s.sizing.begin(), s.sizing.end());
     if (*smallest < minEdgeLength)
     {
-      // In the input's own units, as the user gave them.
+      // In the input's own units, as the user gave them; the setting's
+      // property name and flag come from the list.
+      const MapSetting& limit = *findSettingFlag(mapSettings(), "--min-edge-length");
       throw InputError(inputName(static_cast<int>(i)) + " has a Sizing of " +
         lengthText(*smallest / s.scale) + " at point " +
-        std::to_string(smallest - s.sizing.begin()) +
-        ", below the smallest target edge length MinEdgeLength (" + lengthText(minEdgeLength) +
+        std::to_string(smallest - s.sizing.begin()) + ", below the smallest target edge length " +
+        limit.name + " (--" + limit.flag + ", " + lengthText(minEdgeLength) +
         " of the input scaled to unit area, " + lengthText(minEdgeLength / s.scale) +
         " in its units): so fine a common triangulation cannot be optimised");
     }
