@@ -20,8 +20,8 @@ struct Job
 };
 
 // Two jobs: the machine the suite runs on has two cores.
-const Job Jobs[] = { { "ellipsoid_coarse.stl", "blob.off", 3 },
-  { "blob.off", "ellipsoid_coarse.stl", 2 } };
+const Job Jobs[] = { { "ellipsoid_coarse.stl", "blob.off", 2 },
+  { "ellipsoid_coarse.stl", "ellipsoid_coarse.stl", 3 } };
 
 // Every output's points and sphere positions, one value after another.
 std::vector<double> mapValues(const Job& job)
