@@ -13,6 +13,7 @@
 #include "vtkPolyData.h"
 #include "vtkSurfaceMapEvaluation.h"
 
+#include <algorithm>
 #include <limits>
 #include <stdexcept>
 
@@ -28,9 +29,11 @@ std::string zeroAreaTriangles(vtkPolyData* mesh, const std::string& what)
     vtkIdType n = 0;
     const vtkIdType* corners = nullptr;
     polys->GetCellAtId(t, n, corners);
-    if (n != 3)
+    const vtkIdType points = mesh->GetNumberOfPoints();
+    if (n != 3 ||
+      !std::all_of(corners, corners + 3, [points](vtkIdType p) { return p >= 0 && p < points; }))
     {
-      continue; // not a triangle: the evaluation names it
+      continue; // not a triangle, or indices out of range: the evaluation names them
     }
     double p[3][3];
     for (int k = 0; k < 3; ++k)

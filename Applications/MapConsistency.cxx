@@ -14,6 +14,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <sstream>
 #include <stdexcept>
 
 namespace surfacemap
@@ -88,6 +89,13 @@ std::string triangulationDifference(vtkPolyData* a, vtkPolyData* b)
   return {};
 }
 
+std::string numberText(double value)
+{
+  std::ostringstream text;
+  text << value;
+  return text.str();
+}
+
 std::string pointText(const double p[3])
 {
   char text[96];
@@ -110,14 +118,21 @@ void sourceOnSphere(const MapFile& common,
   if (!(cell >= 0.0 && cell < static_cast<double>(input->GetNumberOfCells())))
   {
     throw std::runtime_error(common.path + " places T's vertex " + std::to_string(v) +
-      " on triangle " + std::to_string(cell) + ", which " + embedding.path + " does not have (" +
+      " on triangle " + numberText(cell) + ", which " + embedding.path + " does not have (" +
       std::to_string(input->GetNumberOfCells()) + " cells): the files are not one map");
   }
   vtkIdType n = 0;
   const vtkIdType* corners = nullptr;
   input->GetCellPoints(static_cast<vtkIdType>(cell), n, corners);
+  const vtkIdType points = f->GetNumberOfTuples();
+  if (n != 3 ||
+    !std::all_of(corners, corners + 3, [points](vtkIdType p) { return p >= 0 && p < points; }))
+  {
+    throw std::runtime_error(embedding.path + ": cell " + numberText(cell) +
+      " is no triangle of its points: not a file 'surfacemap map' wrote");
+  }
   q[0] = q[1] = q[2] = 0.0;
-  for (vtkIdType k = 0; k < n && n == 3; ++k)
+  for (vtkIdType k = 0; k < 3; ++k)
   {
     const double b = barycentric->GetComponent(v, static_cast<int>(k));
     for (int c = 0; c < 3; ++c)

@@ -243,8 +243,9 @@ def _check_map_geometry(map_dir, inputs):
         barycentric = _point_array(common, common_path, "SourceBarycentric", 3)
         f = _point_array(embedding, embedding_path, "SpherePosition", 3)
         corners = _triangles(embedding)
-        if corners is None:
-            raise InputError(f"{embedding_path} holds cells other than triangles: not a file 'surfacemap map' wrote")
+        if corners is None or (len(corners) and not (0 <= corners.min() and corners.max() < len(f))):
+            raise InputError(f"{embedding_path} holds cells that are no triangles of its points: not a file "
+                             "'surfacemap map' wrote")
         outside = numpy.flatnonzero(~((cells >= 0) & (cells < len(corners))))
         if len(outside):
             v = outside[0]
