@@ -100,3 +100,21 @@ def test_common_files_of_another_triangulation_are_refused_by_every_reader(map_d
                 "triangulation") in r.stderr, r.stderr
     with pytest.raises(surfacemaps.InputError, match="common_1.vtp"):
         surfacemaps.transfer(other, 0, 1)
+
+
+def test_an_embedding_with_an_index_out_of_range_is_refused_not_read(map_dir, tmp_path):
+    import surfacemaps
+    from vtkmodules.util.numpy_support import vtk_to_numpy
+    broken = tmp_path / "broken"
+    shutil.copytree(map_dir, broken)
+    mesh = read_vtp(broken / "embedding_1.vtp")
+    vtk_to_numpy(mesh.GetPolys().GetConnectivityArray())[:] = 10 ** 6  # every corner past the points
+    mesh.GetPolys().Modified()
+    write_vtp(mesh, broken / "embedding_1.vtp")
+    refresh_report(broken, "embedding_1.vtp")
+    for r in (run("transfer", broken, "--from", "0", "--to", "1", "-o", tmp_path / "out.vtp"),
+              run("evaluate", broken, "--output-dir", tmp_path / "evaluation")):
+        assert r.returncode == 2, (r.args, r.returncode, r.stderr)
+        assert f"{broken / 'embedding_1.vtp'}" in r.stderr, r.stderr
+    with pytest.raises(surfacemaps.InputError, match="embedding_1.vtp"):
+        surfacemaps.transfer(broken, 0, 1)
