@@ -112,6 +112,12 @@ bool readMeshes(MapMeshes& maps)
       return false;
     }
   }
+  const std::string degenerate = zeroAreaTriangles(maps.inputs[0], maps.inputFiles[0]);
+  if (!degenerate.empty())
+  {
+    printError(degenerate); // the exact maps are measured on input 0's triangles
+    return false;
+  }
   for (int i = 0; i < maps.size(); ++i)
   {
     if (!maps.common[i]->GetPointData()->GetArray("SpherePosition"))

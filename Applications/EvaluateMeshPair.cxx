@@ -43,6 +43,12 @@ bool readMeshes(vtkSurfaceMapEvaluation* evaluation,
     {
       return false;
     }
+    const std::string degenerate = zeroAreaTriangles(mesh, meshes[k]);
+    if (!degenerate.empty())
+    {
+      printError(degenerate);
+      return false;
+    }
     evaluation->SetInputDataObject(k, mesh);
     if (!originals.empty())
     {

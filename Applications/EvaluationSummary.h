@@ -4,6 +4,7 @@
 
 #include "vtkSmartPointer.h"
 
+#include <string>
 #include <vector>
 
 class vtkPolyData;
@@ -23,6 +24,11 @@ vtkSmartPointer<vtkPolyData> measureMap(vtkPolyData* source,
   vtkPolyData* target,
   vtkPolyData* sourceOriginal,
   vtkPolyData* targetOriginal);
+
+/// "<what> has N zero-area triangles (the first is triangle t): ..." when
+/// `mesh` has triangles of zero area at double precision, on which no map's
+/// distortion is defined (its figures would be infinite); empty otherwise.
+std::string zeroAreaTriangles(vtkPolyData* mesh, const std::string& what);
 
 /// The names of measureMap's summary figures, in the order they are printed.
 const std::vector<const char*>& evaluationSummaryNames();

@@ -2,6 +2,7 @@
 
 #include "AlgorithmMessages.h"
 #include "AtomicFiles.h"
+#include "MapConsistency.h"
 #include "MeshFiles.h"
 
 #include "vtkFieldData.h"
@@ -12,6 +13,7 @@
 
 #include <vtksys/MD5.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <random>
@@ -249,7 +251,25 @@ void verifyMapFiles(const std::string& directory, const std::vector<std::string>
 {
   const Json::Value report = readReport(directory);
   const std::string id = report["map_id"].asString();
+  // Each common_<j> is checked with its embedding_<j>: an edited report.json
+  // can vouch for any bytes, the geometry between the two it cannot.
+  std::vector<std::string> checked = names;
+  std::vector<int> commons;
+  static const std::regex common("common_([0-9]+)\\.vtp");
   for (const std::string& name : names)
+  {
+    std::smatch match;
+    if (std::regex_match(name, match, common))
+    {
+      commons.push_back(std::stoi(match[1].str()));
+      const std::string embedding = mapFileName("embedding", commons.back());
+      if (std::find(checked.begin(), checked.end(), embedding) == checked.end())
+      {
+        checked.push_back(embedding);
+      }
+    }
+  }
+  for (const std::string& name : checked)
   {
     const std::string path = directory + "/" + name;
     const Json::Value* record = nullptr;
@@ -304,6 +324,7 @@ void verifyMapFiles(const std::string& directory, const std::vector<std::string>
     }
     throw std::runtime_error(changed);
   }
+  checkMapGeometry(directory, commons);
 }
 
 } // namespace surfacemap

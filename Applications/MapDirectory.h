@@ -101,8 +101,11 @@ void removeMap(const std::string& directory);
 /// Throws std::runtime_error naming the first file that is missing, belongs
 /// to another map, is another file of this map (swapped, renamed) or was
 /// changed, or the directory when it holds no report.json (an interrupted
-/// run: interruptedRunMessage). Every reader of a map directory (evaluate,
-/// transfer, statistics) goes through it.
+/// run: interruptedRunMessage). Each common_<j> among `names` is checked
+/// together with its embedding_<j> (listed, present, checksum) and then by
+/// checkMapGeometry (MapConsistency.h): one triangulation, and embeddings that
+/// agree with it. Every reader of a map directory (evaluate, transfer,
+/// statistics) and `map` itself before publishing go through it.
 void verifyMapFiles(const std::string& directory, const std::vector<std::string>& names);
 
 } // namespace surfacemap

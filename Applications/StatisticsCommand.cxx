@@ -23,7 +23,6 @@
 #include <cstdio>
 #include <filesystem>
 #include <iomanip>
-#include <limits>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -43,8 +42,9 @@ const char* const StatisticsHelp =
   "specimens), then the principal modes of variation. MAPDIR is an output\n"
   "directory of 'surfacemap map': its common_<i>.vtp, one per input its\n"
   "report.json lists (the common triangulation lifted onto each specimen),\n"
-  "each checked against report.json as 'evaluate' does (a missing, stale,\n"
-  "swapped or changed file is refused by name).\n"
+  "each checked against report.json and its embedding_<i>.vtp as 'evaluate'\n"
+  "does (a missing, stale, swapped, changed or rotated file is refused by\n"
+  "name).\n"
   "Otherwise give two or more meshes of one connectivity.\n"
   "\n"
   "Variances, scores and modes use the area-weighted inner product (vertex\n"
@@ -54,8 +54,8 @@ const char* const StatisticsHelp =
   "  -o, --output-dir DIR\n"
   "                     where to write (created if missing; checked for\n"
   "                     writing before computing)\n"
-  "  --modes K          modes to compute (default 3; N specimens have at\n"
-  "                     most N - 1)\n"
+  "  --modes K          modes to compute (default 3, from 1 to 100; N\n"
+  "                     specimens have at most N - 1)\n"
   "  --align MODE       rigid (default: size is part of the variation),\n"
   "                     similarity (also a uniform scale: shape alone) or none\n"
   "  --frames F         frames of each mode's animation, from -2 to +2\n"
@@ -106,6 +106,9 @@ struct StatisticsArguments
 // Animation frames per mode: enough for any smooth animation, and a bound
 // on what a mistyped number writes (1000 frames of a mode is 1000 files).
 constexpr int MaxFrames = 1000;
+// Modes: far more than a population's variation is read from, and with
+// MaxFrames a bound of 100 000 frame files.
+constexpr int MaxModes = 100;
 
 int integerValue(const std::string& option, const std::string& text, int lowest, int highest)
 {
@@ -121,11 +124,8 @@ int integerValue(const std::string& option, const std::string& text, int lowest,
   }
   if (used != text.size() || value < lowest || value > highest)
   {
-    throw UsageError{ option + " needs an integer " +
-      (highest == std::numeric_limits<int>::max()
-          ? ">= " + std::to_string(lowest)
-          : "from " + std::to_string(lowest) + " to " + std::to_string(highest)) +
-      ", not '" + text + "'" };
+    throw UsageError{ option + " needs an integer from " + std::to_string(lowest) + " to " +
+      std::to_string(highest) + ", not '" + text + "'" };
   }
   return static_cast<int>(value);
 }
@@ -142,8 +142,7 @@ StatisticsArguments parseArguments(const std::vector<std::string>& args)
     }
     else if (a == "--modes")
     {
-      parsed.modes =
-        integerValue(a, optionValue(args, i, "a number"), 1, std::numeric_limits<int>::max());
+      parsed.modes = integerValue(a, optionValue(args, i, "a number"), 1, MaxModes);
     }
     else if (a == "--frames")
     {

@@ -181,7 +181,7 @@ int main(int argc, char* argv[])
   {
     vtkOutputWindow::GetInstance()->SetDisplayModeToDefault();
     vtkLogger::SetStderrVerbosity(
-      verbosity >= 2 ? vtkLogger::VERBOSITY_TRACE : vtkLogger::VERBOSITY_INFO);
+      verbosity >= 2 ? vtkLogger::VERBOSITY_TRACE : vtkLogger::VERBOSITY_1);
   }
 
   if (args.empty() || args[0] == "-h" || args[0] == "--help" || args[0] == "help")

@@ -180,6 +180,11 @@ struct vtkSurfaceMapFilter::vtkInternals
       throw surfacemaps::Aborted();
     }
     internals.Map = surfacemaps::computeSurfaceMap(mapInputs, options);
+    const std::string far = surfacemaps::landmarkPhaseWarning(internals.Map);
+    if (!far.empty())
+    {
+      vtkWarningWithObjectMacro(this->Filter, << far);
+    }
     internals.MapInputs = std::move(mapInputs);
     internals.EmbeddingSeconds = std::move(embeddingSeconds);
   }

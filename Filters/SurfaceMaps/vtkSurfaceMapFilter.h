@@ -447,8 +447,8 @@ public:
   ///@}
 
   ///@{
-  /** Smallest edge length of the curvature sizing (unit-area units). Default 0.001, range 1e-9
-   * to 1e9. */
+  /** Smallest edge length of the curvature sizing, and the smallest a Sizing array may ask for
+   * (unit-area units; a smaller one is an input error). Default 0.001, range 1e-9 to 1e9. */
   vtkSetClampMacro(MinEdgeLength, double, 1e-9, 1e9);
   vtkGetMacro(MinEdgeLength, double);
   ///@}

@@ -417,9 +417,16 @@ surfacemaps::Logger vtkSurfaceMapsConversion::EngineLog()
   surfacemaps::Logger log;
   log.sink = [](surfacemaps::Logger::Level level, const std::string& message)
   {
+    // Info (a phase or refinement round done) is the progress `surfacemap -v`
+    // shows, at level 1: not on stderr at vtkLogger's default cutoff (INFO),
+    // so Python and C++ programs stay quiet; Detail (every iteration) needs -vv.
     if (level == surfacemaps::Logger::Warning)
     {
       vtkLog(WARNING, << message);
+    }
+    else if (level == surfacemaps::Logger::Info)
+    {
+      vtkVLog(vtkLogger::VERBOSITY_1, << message);
     }
     else
     {

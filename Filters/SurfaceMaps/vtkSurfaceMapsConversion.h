@@ -100,7 +100,8 @@ public:
   /// one holds no vtkPolyData): a repeatable port's inputs, or the outputs.
   static std::vector<vtkPolyData*> PolyDataOf(vtkInformationVector* vector);
 
-  /// Engine messages into vtkLogger: warnings as WARNING, the rest as TRACE.
+  /// Engine messages into vtkLogger: warnings as WARNING, Info (a phase or
+  /// round done) at VERBOSITY_1, Detail (an iteration) as TRACE.
   static surfacemaps::Logger EngineLog();
 
   /// Name for messages: the "FileName" field-data string if present, else "input <index>".

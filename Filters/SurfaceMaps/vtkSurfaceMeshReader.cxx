@@ -223,7 +223,16 @@ vtkSmartPointer<vtkPolyData> readMesh(const std::string& path)
   const std::string ext = extensionOf(path);
   if (ext == "obj")
   {
-    return vtkSurfaceMapsConversion::ToPolyData(surfacemaps::readObj(path));
+    const surfacemaps::PolygonMesh mesh = surfacemaps::readObj(path);
+    // Refused as a VTP or VTK file with lines or vertices is (the validation):
+    // dropping them would hand on another object than the file holds.
+    if (mesh.nonPolygonCells > 0)
+    {
+      throw surfacemaps::InputError(path + ": " + std::to_string(mesh.nonPolygonCells) +
+        " line or point element" + (mesh.nonPolygonCells == 1 ? "" : "s") +
+        " ('l', 'p'); only triangles ('f') are accepted: remove those lines");
+    }
+    return vtkSurfaceMapsConversion::ToPolyData(mesh);
   }
   if (ext == "off")
   {

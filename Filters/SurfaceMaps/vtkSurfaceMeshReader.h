@@ -12,7 +12,8 @@
  * 9-component cell array "CornerNormals" (x0 y0 z0 x1 y1 z1 x2 y2 z2, as the
  * file gives them, not normalised); a corner without one is NaN, and a file
  * whose faces use no texture coordinates (normals) has no such array. Both
- * need every face to be a triangle. OFF is read strictly (counts,
+ * need every face to be a triangle. An OBJ file with line or point elements
+ * (`l`, `p`) is refused, as any input with lines or vertices is. OFF is read strictly (counts,
  * indices, numbers), and so is PLY (ASCII and binary; a face "texcoord" list
  * becomes "CornerTCoords"). STL points are merged. VTP and legacy VTK files
  * go through VTK's own readers.

@@ -65,3 +65,27 @@ def refresh_report(map_dir, *names):
             record["md5"] = hashlib.md5(content).hexdigest()
     with open(path, "w") as f:
         json.dump(report, f, indent=2)
+
+
+def sphere_arrays(mesh):
+    """(SpherePosition, triangles) of a vtkPolyData as numpy arrays (n x 3 each)."""
+    from vtkmodules.util.numpy_support import vtk_to_numpy
+    sphere = vtk_to_numpy(mesh.GetPointData().GetArray("SpherePosition")).reshape(-1, 3)
+    triangles = vtk_to_numpy(mesh.GetPolys().GetConnectivityArray()).reshape(-1, 3)
+    return sphere, triangles
+
+
+def locate_on_sphere(mesh, q):
+    """(triangle, barycentric) of the unit vector q in the sphere embedding of `mesh`: the ray
+    0 -> q through the flat chord triangle (DESIGN.md section 1.1), as the map locates points."""
+    import numpy
+    sphere, triangles = sphere_arrays(mesh)
+    a, b, c = (sphere[triangles[:, k]] for k in range(3))
+    denominator = numpy.einsum("c,tc->t", q, numpy.cross(c - a, c - b))
+    alpha = numpy.einsum("c,tc->t", q, numpy.cross(c, c - b)) / denominator
+    beta = numpy.einsum("c,tc->t", q, numpy.cross(c - a, c)) / denominator
+    gamma = 1.0 - alpha - beta
+    facing = numpy.einsum("c,tc->t", q, a + b + c) > 0.0
+    inside = numpy.flatnonzero(facing & (alpha >= 0) & (beta >= 0) & (gamma >= 0))
+    t = int(inside[0])
+    return t, (alpha[t], beta[t], gamma[t])

@@ -6,7 +6,7 @@ import shutil
 
 import pytest
 
-from cli import SHORT, data, read_vtp, refresh_report, run
+from cli import SHORT, data, locate_on_sphere, read_vtp, refresh_report, run
 
 
 def test_evaluate_writes_summary_and_tables(tmp_path):
@@ -193,6 +193,10 @@ def test_a_failed_certificate_is_exit_3(map_dir, tmp_path):
     sphere = common_1.GetPointData().GetArray("SpherePosition")
     x, y, z = sphere.GetTuple3(0)
     sphere.SetTuple3(0, -x, -y, -z)  # one vertex to the antipode: its triangles turn over
+    # ... and its source point with it, so that common_1 still agrees with embedding_1.
+    cell, barycentric = locate_on_sphere(read_vtp(copy / "embedding_1.vtp"), (-x, -y, -z))
+    common_1.GetPointData().GetArray("SourceCellId").SetTuple1(0, cell)
+    common_1.GetPointData().GetArray("SourceBarycentric").SetTuple3(0, *barycentric)
     writer = vtkXMLPolyDataWriter()
     writer.SetInputData(common_1)
     writer.SetFileName(str(copy / "common_1.vtp"))

@@ -62,6 +62,16 @@ takes ``categorical=[names]`` and ``continuous=[names]`` to choose per array
 ``write_collection(meshes, times, directory, name)``
     Given meshes, one per time, as .vtp files plus a ParaView .pvd collection.
 
+Failures in pipelines: after every Update(), check the algorithm's
+GetErrorCode() (or its GetLastErrorMessage()) before reading its outputs. When
+an algorithm upstream fails, the module's algorithms downstream clear their
+outputs and report InvalidInputError naming it; an executive other than the
+module's (ParaView's) keeps VTK's behaviour, where a downstream algorithm does
+not run and keeps the figures of its previous update. The helpers above check
+for you and raise (InputError, MapError) instead of returning such outputs;
+transfer also raises for a MapResult whose inputs were changed in place after
+map_surfaces computed it.
+
 The helpers are defined by concept in the modules ``mesh``, ``mapping``,
 ``transfer``, ``statistics``, ``files`` and ``errors``; import
 them from the package itself, as above.

@@ -165,6 +165,10 @@ def _verify_map_files(map_dir, names):
         raise InputError(f"{report_path} has no map id and file checksums (\"map_id\", \"files\"): "
                          "written by an older surfacemap; run 'surfacemap map' again")
     records = {r.get("name"): r for r in report["files"] if isinstance(r, dict)}
+    # Each common_<j> with its embedding_<j>: an edited report.json can vouch for any bytes, the
+    # geometry between the two it cannot.
+    commons = [int(m.group(1)) for m in map(_COMMON_FILE.fullmatch, names) if m]
+    names = list(names) + [f"embedding_{j}.vtp" for j in commons if f"embedding_{j}.vtp" not in names]
     for name in names:
         path = os.path.join(map_dir, name)
         record = records.get(name)
@@ -182,3 +186,79 @@ def _verify_map_files(map_dir, names):
             raise InputError(f"{path} is {stamp['MapFile']} of this map, not {name}: swapped or renamed")
         raise InputError(f"{path} was changed after the map was written (its size or checksum differs "
                          f"from {report_path})")
+    _check_map_geometry(map_dir, commons)
+
+
+# As Applications/MapConsistency.h: the largest distance on the unit sphere between T's vertex on
+# sphere j (common_<j>'s SpherePosition) and input j's embedding at the vertex's source point.
+_MAP_SPHERE_TOLERANCE = 1e-6
+_COMMON_FILE = re.compile(r"common_([0-9]+)\.vtp")
+
+
+def _point_text(p):
+    return "(" + ", ".join(f"{x:.4g}" for x in p) + ")"
+
+
+def _triangles(mesh):
+    from vtkmodules.util.numpy_support import vtk_to_numpy
+    polys = mesh.GetPolys()
+    offsets = vtk_to_numpy(polys.GetOffsetsArray())
+    if len(offsets) > 1 and not (offsets[1:] - offsets[:-1] == 3).all():
+        return None
+    return vtk_to_numpy(polys.GetConnectivityArray()).reshape(-1, 3)
+
+
+def _point_array(mesh, path, name, components):
+    from vtkmodules.util.numpy_support import vtk_to_numpy
+    array = mesh.GetPointData().GetArray(name)
+    if (array is None or array.GetNumberOfComponents() != components
+            or array.GetNumberOfTuples() != mesh.GetNumberOfPoints()):
+        raise InputError(f"{path} has no {name} point array of {components} value"
+                         f"{'' if components == 1 else 's'} per point: not a file 'surfacemap map' wrote")
+    return vtk_to_numpy(array).reshape(-1, components).astype(float)
+
+
+def _check_map_geometry(map_dir, inputs):
+    """Raises InputError unless the files common_<j>.vtp of `inputs` hold one triangulation and
+    each agrees with its embedding_<j>.vtp: the embedding at T's vertex's source point
+    (SourceCellId, SourceBarycentric), normalised, is the vertex's SpherePosition, as the map
+    located it (the same check as `surfacemap evaluate`, `transfer` and `statistics`)."""
+    import numpy
+    first = None
+    for j in inputs:
+        common_path = os.path.join(map_dir, f"common_{j}.vtp")
+        embedding_path = os.path.join(map_dir, f"embedding_{j}.vtp")
+        common, embedding = read_mesh(common_path), read_mesh(embedding_path)
+        triangles = _triangles(common)
+        if first is None:
+            first = (common_path, common.GetNumberOfPoints(), triangles)
+        elif common.GetNumberOfPoints() != first[1]:
+            raise InputError(f"{common_path} and {first[0]} do not hold the same common triangulation "
+                             f"({common.GetNumberOfPoints()} vs {first[1]} points)")
+        elif triangles is None or first[2] is None or not numpy.array_equal(triangles, first[2]):
+            raise InputError(f"{common_path} and {first[0]} do not hold the same common triangulation "
+                             "(their triangles differ)")
+        g = _point_array(common, common_path, "SpherePosition", 3)
+        cells = _point_array(common, common_path, "SourceCellId", 1)[:, 0]
+        barycentric = _point_array(common, common_path, "SourceBarycentric", 3)
+        f = _point_array(embedding, embedding_path, "SpherePosition", 3)
+        corners = _triangles(embedding)
+        if corners is None or (len(corners) and not (0 <= corners.min() and corners.max() < len(f))):
+            raise InputError(f"{embedding_path} holds cells that are no triangles of its points: not a file "
+                             "'surfacemap map' wrote")
+        outside = numpy.flatnonzero(~((cells >= 0) & (cells < len(corners))))
+        if len(outside):
+            v = outside[0]
+            raise InputError(f"{common_path} places T's vertex {v} on triangle {cells[v]:g}, which "
+                             f"{embedding_path} does not have ({len(corners)} cells): the files are not one map")
+        q = numpy.einsum("vk,vkc->vc", barycentric, f[corners[cells.astype(int)]])
+        q /= numpy.maximum(numpy.linalg.norm(q, axis=1), 1e-300)[:, None]
+        distance = numpy.linalg.norm(q - g, axis=1)
+        wrong = numpy.flatnonzero(~(distance <= _MAP_SPHERE_TOLERANCE))
+        if len(wrong):
+            v = wrong[0]
+            raise InputError(f"{embedding_path} and {common_path} are not one map: at {len(wrong)} of T's "
+                             f"{len(g)} vertices the embedding of input {j} does not send the vertex's source "
+                             f"point to its sphere position (vertex {v}: {_point_text(g[v])} in the common "
+                             f"file, {_point_text(q[v])} by the embedding, {distance[v]:.3g} apart): a file "
+                             "was edited, rotated or swapped after the map was written")

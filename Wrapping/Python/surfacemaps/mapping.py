@@ -225,11 +225,26 @@ class MapResult(list):
     ``filter`` is the updated vtkSurfaceMapFilter, so that ``transfer(result,
     source, target, ...)`` carries data between the meshes in memory; it keeps
     the map (a few times the size of the outputs) alive while the list lives.
+    An input changed in place afterwards (its points or arrays modified) would
+    make the filter compute another map than this result holds: transfer then
+    raises InputError instead (``changed_inputs()`` names them).
     """
 
     def __init__(self, outputs, algorithm):
         super().__init__(outputs)
         self.filter = algorithm
+        self._input_times = self._input_mtimes()
+
+    def _input_mtimes(self):
+        f = self.filter
+        return [f.GetInputDataObject(0, k).GetMTime() for k in range(f.GetNumberOfInputConnections(0))]
+
+    def changed_inputs(self):
+        """The indices of the inputs modified since this result was computed (empty if none)."""
+        now = self._input_mtimes()
+        if len(now) != len(self._input_times):
+            return list(range(max(len(now), len(self._input_times))))
+        return [k for k, (then, t) in enumerate(zip(self._input_times, now)) if t != then]
 
 
 map_surfaces.__doc__ += "\n    Settings of the map (the engine's list):\n" + _settings_doc("map")

@@ -82,9 +82,9 @@ def parser():
                                 formatter_class=argparse.RawDescriptionHelpFormatter)
     p.add_argument("stages_dir", metavar="STAGES_DIR", help="one subdirectory of specimens per stage")
     p.add_argument("--output-dir", required=True, help="where the results go (created)")
-    p.add_argument("--stage-times", type=float, nargs="+", metavar="T",
-                   help="developmental time of each stage (default: the mean of the specimens' "
-                        "DevelopmentalTime field, else evenly spaced in [0, 1])")
+    p.add_argument("--stage-times", type=_bounded(float, -1e12, 1e12), nargs="+", metavar="T",
+                   help="developmental time of each stage, from -1e12 to 1e12 (default: the mean of the "
+                        "specimens' DevelopmentalTime field, else evenly spaced in [0, 1])")
     g = p.add_argument_group("maps (each stage's and the final one): the settings of `surfacemap map`")
     g.add_argument("--preset", choices=sorted(surfacemaps.presets()),
                    help="settings preset of every map (default: the filter's defaults); the setting flags "
@@ -93,9 +93,11 @@ def parser():
     g = p.add_argument_group("means and statistics")
     g.add_argument("--align", choices=("rigid", "similarity", "none"), default="rigid",
                    help="alignment before means and statistics (generalized Procrustes; default rigid)")
-    g.add_argument("--modes", type=int, default=3, help="modes of variation computed (default 3)")
+    g.add_argument("--modes", type=_bounded(int, 1, 100), default=3,
+                   help="modes of variation computed (default 3, from 1 to 100)")
     g = p.add_argument_group("interpolation and output")
-    g.add_argument("--steps-per-interval", type=int, default=10, help="frames per stage interval (default 10)")
+    g.add_argument("--steps-per-interval", type=_bounded(int, 1, 1000), default=10,
+                   help="frames per stage interval (default 10, from 1 to 1000)")
     g.add_argument("--interpolation", choices=("smooth", "linear"), default="smooth",
                    help="smooth (C1 through the keyframes) or piecewise linear in time (default smooth)")
     g.add_argument("--keyframe-align", choices=("rigid", "similarity", "none"), default="rigid",
@@ -107,13 +109,22 @@ def parser():
 
 
 def parse_args(argv=None):
-    p = parser()
-    args = p.parse_args(argv)
-    if args.steps_per_interval < 1:
-        p.error("--steps-per-interval is at least 1")
-    if args.modes < 1:
-        p.error("--modes is at least 1")
-    return args
+    return parser().parse_args(argv)
+
+
+def _bounded(kind, lowest, highest):
+    """argparse's `type` for a number of `kind` (int or float) from `lowest` to `highest`: every
+    numeric option is bounded, so that a mistyped number is refused before anything runs."""
+    def parse(text):
+        try:
+            value = kind(text)
+        except ValueError:
+            value = None
+        if value is None or not lowest <= value <= highest:  # also refuses nan
+            what = "a whole number" if kind is int else "a number"
+            raise argparse.ArgumentTypeError(f"needs {what} from {lowest:g} to {highest:g}, not '{text}'")
+        return value
+    return parse
 
 
 # The map settings as flags: every setting of the engine's list (vtkSurfaceMapsSettings) but the

@@ -509,6 +509,17 @@ def render_texture(mesh, path, image=None, squares=16, **view):
     _render(mesh, path, configure, texture=texture, **view)
 
 
+def _darkest(text):
+    """argparse's `type` for --max: a distortion above 1 (the lightest colour) up to 1e6."""
+    try:
+        value = float(text)
+    except ValueError:
+        value = None
+    if value is None or not 1.0 < value <= 1e6:
+        raise argparse.ArgumentTypeError(f"needs a number above 1 up to 1e6, not '{text}'")
+    return value
+
+
 def main(argv=None):
     from . import read_mesh
 
@@ -521,7 +532,8 @@ def main(argv=None):
     parser.add_argument("--texture", metavar="IMAGE", nargs="?", const="",
                         help="draw the mesh textured by its texture coordinates with IMAGE (PNG, JPEG, ...; "
                              "without IMAGE: the package's checkerboard)")
-    parser.add_argument("--max", type=float, default=3.0, help="distortion shown darkest (default 3)")
+    parser.add_argument("--max", type=_darkest, default=3.0,
+                        help="distortion shown darkest (default 3, above 1 up to 1e6)")
     parser.add_argument("--points-from", metavar="MESH",
                         help="draw at the points of MESH instead (same points in the same order), e.g. "
                              "common_0.vtp for the source side of a map's checkerboard")

@@ -20,7 +20,8 @@ def transfer(mapping, source, target, arrays=None, categorical=None, continuous=
     - a directory written by ``surfacemap map`` (its embedding_<i>.vtp and
       common_<i>.vtp of both inputs are read and checked against its
       report.json: from another map, swapped or changed files are refused, as
-      ``surfacemap transfer`` does);
+      ``surfacemap transfer`` does, and so is an embedding that does not agree
+      with its common file, e.g. rotated, even when report.json vouches for it);
     - what map_surfaces returned (a MapResult: its ``.filter``), or any
       vtkSurfaceMapFilter with its inputs connected. The filter is brought up
       to date (no computation when it already is) and its outputs are read in
@@ -58,7 +59,8 @@ def transfer(mapping, source, target, arrays=None, categorical=None, continuous=
     coordinates evaluated there); with ``as_numpy=True`` instead a dict
     {name: numpy array} of those point arrays (one row per target vertex).
 
-    Raises InputError for missing or unvouched map files, input indices the
+    Raises InputError for missing or unvouched map files, a MapResult whose
+    inputs were changed in place after it was computed, input indices the
     map does not have, unknown array names, inputs that do not fit together,
     `source_data` with the wrong number of rows (naming the array, its length
     and the vertex count), a non-numeric dtype or another connectivity
@@ -93,6 +95,11 @@ def _map_ports(mapping, source, target):
     onto target and source) of a map directory or an in-memory map, and the source's name for
     messages."""
     algorithm = getattr(mapping, "filter", mapping)
+    changed = mapping.changed_inputs() if hasattr(mapping, "changed_inputs") else []
+    if changed:
+        raise InputError(f"input{'s' if len(changed) > 1 else ''} {', '.join(map(str, changed))} of the map changed "
+                         "after map_surfaces returned this result: the filter would compute another map than the "
+                         "result holds; call map_surfaces again (or transfer through result.filter to accept that)")
     if isinstance(algorithm, vtkSurfaceMapFilter):
         return _filter_ports(algorithm, source, target), f"input {source}"
     if isinstance(mapping, (str, os.PathLike)):

@@ -52,6 +52,19 @@ public:
     return this->Fmt == Format::Ascii ? this->readAscii(value) : this->readBinary(type, value);
   }
 
+  /// True when data follows the values read: another token (ASCII) or a byte
+  /// other than a space or line end (binary).
+  bool moreData()
+  {
+    if (this->Fmt == Format::Ascii)
+    {
+      return !this->Scanner->nextToken().empty() || !this->Scanner->firstTokenOfNextLine().empty();
+    }
+    return std::any_of(this->Bytes.begin() + static_cast<std::ptrdiff_t>(this->Position),
+      this->Bytes.end(),
+      [](char c) { return c != '\n' && c != '\r' && c != ' '; });
+  }
+
 private:
   // The next token, across lines: ASCII bodies put elements on lines freely.
   bool readAscii(double& value)
@@ -298,6 +311,10 @@ public:
   }
 
   void readElement(const Element& e);
+  /// Throws when data follows the last element: the header declares fewer
+  /// instances than the file holds (read as they are, the faces left over
+  /// would show up as holes, far from their cause).
+  void requireEnd(const Header& header);
   PolygonMesh finish();
 
 private:
@@ -467,6 +484,21 @@ void MeshBuilder::addFace(long long i)
   this->Mesh.faceOffsets.push_back(static_cast<int>(this->Mesh.faceVertices.size()));
 }
 
+void MeshBuilder::requireEnd(const Header& header)
+{
+  if (!this->Body.moreData())
+  {
+    return;
+  }
+  std::string counts;
+  for (const Element& e : header.elements)
+  {
+    counts += (counts.empty() ? "" : ", ") + std::to_string(e.count) + " " + e.name;
+  }
+  throw InputError(this->Name + ": the data goes on after the elements the header declares (" +
+    counts + "): the header's counts do not match the file");
+}
+
 PolygonMesh MeshBuilder::finish()
 {
   if (this->AnyTex && this->TexCoords.size() == this->Mesh.faceVertices.size())
@@ -486,6 +518,7 @@ PolygonMesh parsePly(const std::string& bytes, const std::string& name)
   {
     builder.readElement(e);
   }
+  builder.requireEnd(header);
   return builder.finish();
 }
 

@@ -4,11 +4,14 @@
 #include "geometry/Rotation.h"
 #include "geometry/Sizing.h"
 #include "geometry/SphericalTriangulation.h"
+#include "map/MapSettings.h"
 #include "mesh/LandmarkValidation.h"
 
 #include <algorithm>
 #include <cmath>
+#include <iomanip>
 #include <limits>
+#include <sstream>
 #include <stdexcept>
 #include <string>
 
@@ -27,6 +30,13 @@ namespace
 std::string inputName(int i)
 {
   return "input " + std::to_string(i);
+}
+
+std::string lengthText(double length)
+{
+  std::ostringstream text;
+  text << std::setprecision(3) << length;
+  return text.str();
 }
 
 /// Centres an input, scales it to unit area and builds what the energy needs.
@@ -241,6 +251,30 @@ std::vector<PreparedInput> prepareInputs(const std::vector<MapInput>& inputs,
     buildLifts(s);
   }
   return surfaces;
+}
+
+void requireUsableSizing(const std::vector<PreparedInput>& surfaces, double minEdgeLength)
+{
+  for (const PreparedInput& s : surfaces)
+  {
+    if (!s.userSizing || s.sizing.empty())
+    {
+      continue;
+    }
+    const auto smallest = std::min_element(s.sizing.begin(), s.sizing.end());
+    if (*smallest < minEdgeLength)
+    {
+      // In the input's own units, as the user gave them; the setting's
+      // property name and flag come from the list.
+      const MapSetting& limit = *findSettingFlag(mapSettings(), "--min-edge-length");
+      throw InputError(inputName(s.label) + " has a Sizing of " +
+        lengthText(*smallest / s.scale) + " at point " +
+        std::to_string(smallest - s.sizing.begin()) + ", below the smallest target edge length " +
+        limit.name + " (--" + limit.flag + ", " + lengthText(minEdgeLength) +
+        " of the input scaled to unit area, " + lengthText(minEdgeLength / s.scale) +
+        " in its units): so fine a common triangulation cannot be optimised");
+    }
+  }
 }
 
 void setCurvatureSizing(std::vector<PreparedInput>& surfaces,

@@ -66,6 +66,13 @@ std::vector<PreparedInput> prepareInputs(const std::vector<MapInput>& inputs,
 /// (std::invalid_argument otherwise, naming the input and the id).
 std::vector<std::map<int, int>> landmarkVertices(const std::vector<MapInput>& inputs);
 
+/// Throws InputError naming the input, the vertex and both lengths when a
+/// user sizing asks for edges shorter than minEdgeLength (unit-area units):
+/// far below it the mesh-quality term overflows and nothing can be
+/// optimised, and just below it T outgrows any vertex budget; the curvature
+/// sizing is clamped to the same length.
+void requireUsableSizing(const std::vector<PreparedInput>& surfaces, double minEdgeLength);
+
 /// Recomputes the curvature sizing of every surface without a user sizing
 /// for the approximation error eps (DESIGN.md section 1.7), edge lengths
 /// clamped to [minEdgeLength, maxEdgeLength].

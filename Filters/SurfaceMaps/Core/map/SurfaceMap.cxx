@@ -15,6 +15,7 @@
 #include <chrono>
 #include <map>
 #include <optional>
+#include <sstream>
 #include <stdexcept>
 #include <string>
 
@@ -189,6 +190,7 @@ SurfaceMapResult computeInOrder(const std::vector<MapInput>& inputs,
     options.maxError > 0.0 ? 0 : options.approximationSamples,
     options.log,
     labels);
+  requireUsableSizing(surfaces, options.minEdgeLength);
   ScheduleContext context;
   context.inputs = static_cast<int>(inputs.size());
   context.landmarks = !landmarks[0].empty();
@@ -308,6 +310,23 @@ std::vector<Eigen::Vector3d> mappedVertices(const SurfaceMapResult& map,
     points.push_back(evaluateSurfacePoint(inputs[to].mesh.points, triangles, p));
   }
   return points;
+}
+
+std::string landmarkPhaseWarning(const SurfaceMapResult& map)
+{
+  for (const MapPhaseReport& phase : map.phases)
+  {
+    if (phase.kind == PhaseKind::Landmarks && !(phase.landmarkError <= FarLandmarkDistance))
+    {
+      std::ostringstream text;
+      text << "the landmark phase ended with a landmark " << phase.landmarkError
+           << " from its target on the unit sphere (far: beyond " << FarLandmarkDistance
+           << "): the landmark sets may not correspond (the same id on corresponding points; a "
+              "set in another order maps points onto the wrong ones); the map goes on with them";
+      return text.str();
+    }
+  }
+  return {};
 }
 
 } // namespace surfacemaps

@@ -12,6 +12,7 @@
 #include <Eigen/Core>
 
 #include <array>
+#include <string>
 #include <vector>
 
 namespace surfacemaps
@@ -65,6 +66,18 @@ struct SurfaceMapResult
 /// callback stops it; anything else is an internal failure.
 SurfaceMapResult computeSurfaceMap(const std::vector<MapInput>& inputs,
   const SurfaceMapOptions& options = SurfaceMapOptions());
+
+/// Distance on the unit sphere beyond which a landmark the landmark phase
+/// left behind is far from its target: a phase stopped by its cap is
+/// normally within about 1e-3, while landmark sets that do not correspond (a
+/// permuted order) leave their landmarks about a radius away.
+constexpr double FarLandmarkDistance = 0.05;
+
+/// A warning for the user when the landmark phase of `map` ended with a
+/// landmark farther than FarLandmarkDistance from its target (the landmarks
+/// cannot all be reached bijectively: the sets do not correspond, e.g. one
+/// is in another order); empty otherwise. The map itself goes on.
+std::string landmarkPhaseWarning(const SurfaceMapResult& map);
 
 /// The vertices of input `from` mapped onto input `to` by the exact map of
 /// `map` (computed from `inputs`): transferPoints (MapTransfer.h) with

@@ -141,3 +141,21 @@ TEST(PlyReader, Errors)
                  "end_header\n0 0\n",
     "lacks an x, y or z property");
 }
+
+TEST(PlyReader, ElementCountsTheFileDoesNotHold)
+{
+  const std::string header = "ply\nformat ascii 1.0\nelement vertex 3\nproperty double x\n"
+                             "property double y\nproperty double z\nelement face ";
+  const std::string tail = "\nproperty list uchar int vertex_indices\nend_header\n"
+                           "0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n";
+  // Fewer faces declared than the file holds: refused, not read with holes.
+  expectPlyError(header + "1" + tail + "3 0 2 1\n",
+    "mesh.ply: the data goes on after the elements the header declares (3 vertex, 1 face): "
+    "the header's counts do not match the file");
+  // More declared than it holds.
+  expectPlyError(header + "2" + tail, "the header declares 2 face elements, but the data ends");
+  EXPECT_EQ(parsePly(header + "1" + tail + "\n\n", "m").numberOfFaces(), 1u);
+  // Binary: a byte left over is refused, a final line end is not.
+  EXPECT_EQ(parsePly(binaryTetrahedron(false) + "\n", "m").numberOfFaces(), 4u);
+  expectPlyError(binaryTetrahedron(false) + std::string(1, '\3'), "the data goes on after");
+}

@@ -168,3 +168,35 @@ def test_distances_agree_with_vtk_implicit_distance():
     assert e.GetSummaryValue("HausdorffSource") == pytest.approx(h, rel=1e-9)
     assert e.GetSummaryValue("TwoSidedDistanceSource") == pytest.approx(two, rel=1e-9)
     assert e.GetSummaryValue("HausdorffTarget") == pytest.approx(h, rel=1e-9)
+
+
+def test_an_upstream_failure_leaves_no_stale_figures(tmp_path):
+    # The pattern the package documents: after Update(), check the error code before reading the
+    # figures. A reader failing upstream empties the evaluation and sets its error code; it never
+    # keeps the previous update's figures.
+    import shutil
+    from vtkmodules.vtkCommonCore import vtkOutputWindow
+    copy = tmp_path / "target.obj"
+    shutil.copy(data("ellipsoid.obj"), copy)
+    readers = []
+    e = surfacemaps.vtkSurfaceMapEvaluation()
+    for port, path in enumerate((data("ellipsoid.obj"), str(copy))):
+        reader = surfacemaps.vtkSurfaceMeshReader()
+        reader.SetFileName(path)
+        e.SetInputConnection(port, reader.GetOutputPort())
+        readers.append(reader)
+    e.Update()
+    assert e.GetErrorCode() == 0 and e.GetOutput().GetFieldData().GetArray("SymmetricDirichlet") is not None
+    copy.unlink()
+    readers[1].Modified()
+    window = vtkOutputWindow.GetInstance()
+    mode = window.GetDisplayMode()
+    window.SetDisplayModeToNever()  # the failure is expected: keep the test's output clean
+    try:
+        e.Update()
+    finally:
+        window.SetDisplayMode(mode)
+    assert e.GetErrorCode() == surfacemaps.vtkSurfaceMapFilter.InvalidInputError
+    assert "was not produced: vtkSurfaceMeshReader failed" in e.GetLastErrorMessage()
+    assert e.GetOutput().GetNumberOfPoints() == 0
+    assert e.GetOutput().GetFieldData().GetArray("SymmetricDirichlet") is None
