@@ -6,8 +6,8 @@
 #  1. every installed file belongs to a package (none in CMake's
 #     "Unspecified" component, which no package holds);
 #  2. apt would install them: `apt-get install --simulate` of the .deb files
-#     resolves every Depends from the configured Debian repositories and
-#     removes no package;
+#     resolves every Depends from Debian's archives, on a fresh machine (an
+#     empty dpkg status) and on this one without removing any package;
 #  3. the packages alone work: unpacked with `dpkg -x` into a throw-away
 #     prefix, the program (found through its RUNPATH, not the build tree)
 #     runs the README's quick-start main job (.ci/quickstart --installed) and
@@ -47,24 +47,24 @@ if [ -d "$work/unspecified" ] && [ -n "$(find "$work/unspecified" -type f -print
   exit 1
 fi
 
-# 2. apt resolves the Depends from Debian's repositories alone. Every package
-# apt would add comes from an archive whose origin is Debian (apt prints it
-# in brackets: "Inst name (version Debian:12.x/stable [arch])") or is one of
-# these .deb files.
+# 2. apt resolves the Depends from Debian's repositories alone, on a fresh
+# machine (simulated with an empty dpkg status: nothing installed) and on
+# this one (where it must remove nothing, e.g. python3-vtk9). Every package
+# apt would add is one of these .deb files or comes from an archive whose
+# origin is Debian (apt prints it: "Inst name (version Debian:12.x/... [arch])").
 local_debs=()
 for deb in "${debs[@]}"; do local_debs+=("$root/$deb"); done
-apt-get install --simulate --no-install-recommends "${local_debs[@]}" > "$work/simulate.log" 2>&1 || {
-  cat "$work/simulate.log" >&2
-  echo "package: apt cannot resolve the packages' dependencies" >&2
+: > "$work/empty-status"
+simulate() {
+  apt-get install --simulate -q --no-install-recommends "$@" "${local_debs[@]}" 2>&1
+}
+simulate -o Dir::State::status="$work/empty-status" > "$work/fresh.log" || {
+  cat "$work/fresh.log" >&2
+  echo "package: apt cannot resolve the packages' dependencies on a fresh machine" >&2
   exit 1
 }
-if grep -q '^Remv ' "$work/simulate.log"; then
-  echo "package: installing would remove packages:" >&2
-  grep '^Remv ' "$work/simulate.log" >&2
-  exit 1
-fi
 ours=$(for deb in "${debs[@]}"; do dpkg-deb -f "$deb" Package; done)
-foreign=$(grep '^Inst ' "$work/simulate.log" | while read -r _ name rest; do
+foreign=$(grep '^Inst ' "$work/fresh.log" | while read -r _ name rest; do
   if ! grep -qx "$name" <<< "$ours" && ! grep -q '(.* Debian[-A-Za-z]*:' <<< "$rest"; then
     echo "$name $rest"
   fi
@@ -74,7 +74,25 @@ if [ -n "$foreign" ]; then
   echo "$foreign" >&2
   exit 1
 fi
-echo "apt-get install --simulate: $(grep -c '^Inst ' "$work/simulate.log") packages to install, none removed"
+for package in $ours; do
+  grep -q "^Inst $package " "$work/fresh.log" || {
+    echo "package: apt would not install $package:" >&2
+    cat "$work/fresh.log" >&2
+    exit 1
+  }
+done
+simulate > "$work/here.log" || {
+  cat "$work/here.log" >&2
+  echo "package: apt cannot install the packages on this machine" >&2
+  exit 1
+}
+if grep -q '^Remv ' "$work/here.log"; then
+  echo "package: installing would remove packages:" >&2
+  grep '^Remv ' "$work/here.log" >&2
+  exit 1
+fi
+echo "apt-get install --simulate: $(grep -c '^Inst ' "$work/fresh.log") packages on a fresh" \
+  "Debian 12, all from Debian but these; $(grep -c '^Inst ' "$work/here.log") here, none removed"
 
 # 3. The packages alone, in a throw-away prefix.
 prefix=$work/prefix
@@ -85,7 +103,7 @@ if ldd "$program" | grep -q "$root/build"; then
   ldd "$program" | grep "$root/build" >&2
   exit 1
 fi
-ldd "$program" | grep -q "$prefix/usr/lib/libSurfaceMapsFilters" || {
+ldd "$program" | grep -q "=> $prefix/usr/[^ ]*libSurfaceMapsFilters" || {
   echo "package: the packaged program does not load the packaged module library:" >&2
   ldd "$program" >&2
   exit 1

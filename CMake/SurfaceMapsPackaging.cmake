@@ -49,6 +49,8 @@ set(CPACK_COMPONENT_RUNTIME_DESCRIPTION
  through an adaptive common triangulation, with landmarks, transfer of
  fields, labels and textures, and population averages and modes. This
  package holds the VTK module library and the surfacemap program.")
+# A shlibs file and the ldconfig trigger for the library in /usr/lib.
+set(CPACK_DEBIAN_RUNTIME_PACKAGE_GENERATE_SHLIBS ON)
 # `surfacemap --pictures` on a machine without a display starts Xvfb itself.
 set(CPACK_DEBIAN_RUNTIME_PACKAGE_RECOMMENDS "xvfb")
 

@@ -213,26 +213,32 @@ void checkPresetProperty(Pipeline& pipeline)
     "Preset's documentation names the settings it sets: " + doc);
 }
 
-// File > Open: the Surface Mesh Reader is the reader of OFF files, which
-// ParaView does not read itself, and is not offered for the formats that
-// ParaView's own readers read (two readers for an extension make every Open
-// ask which to use).
-void checkReaderRegistration(vtkSMSession* session, const std::string& data)
+// File > Open: the Surface Mesh Reader is the one reader offered for OFF
+// files, which ParaView does not read itself, and is not offered for the
+// formats that ParaView's own readers read (two readers for an extension
+// make every Open ask which to use).
+std::vector<std::string> readersFor(vtkSMSession* session, const std::string& file)
 {
   vtkSMReaderFactory* factory = vtkSMProxyManager::GetProxyManager()->GetReaderFactory();
-  check(factory->CanReadFile((data + "blob.off").c_str(), session) &&
-      std::string(factory->GetReaderName()) == "SurfaceMeshReader",
-    "File > Open reads .off with the Surface Mesh Reader");
+  vtkStringList* list = factory->GetReaders(file.c_str(), session);
+  std::vector<std::string> names; // (group, name, description) triples: the names
+  for (int i = 1; list && i < list->GetLength(); i += 3)
+  {
+    names.emplace_back(list->GetString(i));
+  }
+  return names;
+}
+
+void checkReaderRegistration(vtkSMSession* session, const std::string& data)
+{
+  check(readersFor(session, data + "blob.off") == std::vector<std::string>{ "SurfaceMeshReader" },
+    "File > Open offers the Surface Mesh Reader alone for .off");
   for (const char* file :
     { "spot.obj", "limbs.ply", "ellipsoid_coarse.stl", "blob.vtp", "limbs_coarse.vtk" })
   {
-    vtkStringList* readers = factory->GetReaders((data + file).c_str(), session);
-    bool ours = false;
-    for (int i = 1; readers && i < readers->GetLength(); i += 3)
-    {
-      ours = ours || std::string(readers->GetString(i)) == "SurfaceMeshReader";
-    }
-    check(readers && readers->GetLength() >= 3 && !ours,
+    const auto names = readersFor(session, data + file);
+    check(!names.empty() &&
+        std::find(names.begin(), names.end(), "SurfaceMeshReader") == names.end(),
       std::string("File > Open offers ParaView's own readers only for ") + file);
   }
 }
