@@ -45,10 +45,10 @@ set(CPACK_DEBIAN_ENABLE_COMPONENT_DEPENDS ON)
 set(CPACK_DEBIAN_RUNTIME_PACKAGE_NAME "surfacemaps")
 set(CPACK_COMPONENT_RUNTIME_DESCRIPTION
   "Bijective maps between genus-0 surfaces via adaptive common triangulations
- Computes continuous, bijective maps between closed genus-0 triangle meshes
- through an adaptive common triangulation, with landmarks, transfer of
- fields, labels and textures, and population averages and modes. This
- package holds the VTK module library and the surfacemap program.")
+Computes continuous, bijective maps between closed genus-0 triangle meshes
+through an adaptive common triangulation, with landmarks, transfer of
+fields, labels and textures, and population averages and modes. This
+package holds the VTK module library and the surfacemap program.")
 # A shlibs file and the ldconfig trigger for the library in /usr/lib.
 set(CPACK_DEBIAN_RUNTIME_PACKAGE_GENERATE_SHLIBS ON)
 # `surfacemap --pictures` on a machine without a display starts Xvfb itself.
@@ -59,13 +59,14 @@ set(CPACK_DEBIAN_PYTHON_PACKAGE_SECTION "python")
 set(CPACK_COMPONENT_PYTHON_DEPENDS runtime)
 set(CPACK_COMPONENT_PYTHON_DESCRIPTION
   "Python package of SurfaceMaps (import surfacemaps)
- The module's VTK classes for Debian's python3-vtk9, and helpers that read
- meshes with landmarks, map, evaluate, transfer data and compute population
- statistics.")
+The module's VTK classes for Debian's python3-vtk9, and helpers that read
+meshes with landmarks, map, evaluate, transfer data and compute population
+statistics.")
 # What the package imports besides the libraries dpkg-shlibdeps sees:
 # vtkmodules and numpy always; matplotlib for the population pictures,
 # mpi4py for population runs over MPI.
-set(CPACK_DEBIAN_PYTHON_PACKAGE_DEPENDS "python3-vtk9, python3-numpy")
+# The extension module is built for Debian 12's Python 3.11 (its ABI tag).
+set(CPACK_DEBIAN_PYTHON_PACKAGE_DEPENDS "python3 (>= 3.11), python3 (<< 3.12), python3-vtk9, python3-numpy")
 set(CPACK_DEBIAN_PYTHON_PACKAGE_RECOMMENDS "python3-matplotlib")
 set(CPACK_DEBIAN_PYTHON_PACKAGE_SUGGESTS "python3-mpi4py")
 
@@ -74,8 +75,8 @@ set(CPACK_DEBIAN_DEVELOPMENT_PACKAGE_SECTION "libdevel")
 set(CPACK_COMPONENT_DEVELOPMENT_DEPENDS runtime)
 set(CPACK_COMPONENT_DEVELOPMENT_DESCRIPTION
   "Development files of SurfaceMaps
- Headers of the VTK module and its CMake package: find_package(SurfaceMaps)
- and target_link_libraries(... SurfaceMaps::FiltersSurfaceMaps).")
+Headers of the VTK module and its CMake package: find_package(SurfaceMaps)
+and target_link_libraries(... SurfaceMaps::FiltersSurfaceMaps).")
 # The CMake package finds VTK's (SurfaceMapsConfig.cmake).
 set(CPACK_DEBIAN_DEVELOPMENT_PACKAGE_DEPENDS "libvtk9-dev")
 

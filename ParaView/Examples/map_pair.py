@@ -6,8 +6,9 @@ Reads the ellipsoid and the blob with their landmarks, maps them on a short
 schedule, writes the map's multiblock (block i: the common triangulation
 lifted onto input i) and extracts the blob's block by its selector. Blocks
 are named after their inputs' files; a selector is /Root/ and that name
-with every character but letters, digits, '_', '-' and '.' dropped. Exits
-with status 1 when the map is not certified. CI's ParaView.pvbatch runs it.
+with every character but letters, digits and '_' dropped ('_' in front if
+it then starts with a digit): /Root/bloboff for blob.off. Exits with status
+1 when the map is not certified. CI's ParaView.pvbatch runs it.
 """
 
 import os
@@ -28,11 +29,11 @@ surface_map = SurfaceMap(Input=[ellipsoid, blob], CoarseIterations=10, FineItera
                          RefinementRounds=0)
 SaveData(os.path.join(output, "map.vtm"), proxy=surface_map)
 
-on_blob = ExtractBlock(Input=surface_map, Selectors=["/Root/blob.off"])
+on_blob = ExtractBlock(Input=surface_map, Selectors=["/Root/bloboff"])
 blocks = servermanager.Fetch(on_blob)
 lifted = blocks.GetBlock(0) if blocks.GetNumberOfBlocks() == 1 else None
 if lifted is None or lifted.GetFieldData().GetArray("Bijective").GetValue(0) != 1:
-    print("the map is not certified, or /Root/blob.off selected no block", file=sys.stderr)
+    print("the map is not certified, or /Root/bloboff selected no block", file=sys.stderr)
     sys.exit(1)
-print(f"block /Root/blob.off: T has {lifted.GetNumberOfPoints()} vertices on the blob, "
+print(f"block /Root/bloboff: T has {lifted.GetNumberOfPoints()} vertices on the blob, "
       f"certified bijective")
