@@ -12,6 +12,8 @@ packages=(
   python3-numpy python3-matplotlib python3-pytest
   xvfb
   python3-mpi4py openmpi-bin
+  # .ci/package.sh: cpack's Debian generator runs dpkg-shlibdeps and file.
+  dpkg-dev file
 )
 
 missing=()

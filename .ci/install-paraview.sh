@@ -7,7 +7,9 @@
 # ParaView bundles its own VTK; its Python package (python3-paraview) ships
 # vtkmodules too and conflicts with python3-vtk9, which the module's Python
 # tests need. So: never python3-paraview, never recommends (they would pull
-# it), and the script fails loudly if python3-vtk9 is gone afterwards.
+# it), and the script fails loudly if python3-vtk9 is gone afterwards. For
+# pvbatch and pvpython, python3-paraview is unpacked into a private folder
+# instead, never installed (ParaView/pvsurfacemaps, which then runs them).
 set -euo pipefail
 
 # libx11-dev, libglew-dev: ParaView's rendering modules name X11::X11 and
@@ -49,3 +51,6 @@ fi
   echo "install-paraview: /usr/bin/python3 cannot import vtkmodules any more" >&2
   exit 1
 }
+
+# ParaView's Python for pvbatch/pvpython, unpacked privately (ParaView.pvbatch).
+bash "$(dirname "$0")/../ParaView/pvsurfacemaps" --unpack

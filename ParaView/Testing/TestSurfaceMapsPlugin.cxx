@@ -1,8 +1,8 @@
 // The SurfaceMaps plugin in ParaView's server manager, the way the GUI uses
 // it: ParaView's engine initialised in-process with a builtin session, the
 // plugin loaded by the plugin manager, proxies created from the plugin's XML,
-// properties set and pipelines updated. pvpython is not an option (its
-// package conflicts with Debian's python3-vtk9).
+// properties set and pipelines updated, with nothing but ParaView's SDK
+// (pvbatch needs ParaView's Python: ParaView.pvbatch, ParaView/pvsurfacemaps).
 //
 // Usage: TestSurfaceMapsPlugin PLUGIN_FILE DATA_DIR
 // Exit code 0 when every check passes; each failed check prints a line.
@@ -28,11 +28,13 @@
 #include "vtkSMPropertyGroup.h"
 #include "vtkSMPropertyHelper.h"
 #include "vtkSMProxyManager.h"
+#include "vtkSMReaderFactory.h"
 #include "vtkSMSession.h"
 #include "vtkSMSessionProxyManager.h"
 #include "vtkSMSourceProxy.h"
 #include "vtkSmartPointer.h"
 #include "vtkStringArray.h"
+#include "vtkStringList.h"
 #include "vtkSurfaceMapBlocksFilter.h"
 #include "vtkSurfaceMapFilter.h"
 #include "vtkTable.h"
@@ -211,6 +213,36 @@ void checkPresetProperty(Pipeline& pipeline)
     "Preset's documentation names the settings it sets: " + doc);
 }
 
+// File > Open: the Surface Mesh Reader is the one reader offered for OFF
+// files, which ParaView does not read itself, and is not offered for the
+// formats that ParaView's own readers read (two readers for an extension
+// make every Open ask which to use).
+std::vector<std::string> readersFor(vtkSMSession* session, const std::string& file)
+{
+  vtkSMReaderFactory* factory = vtkSMProxyManager::GetProxyManager()->GetReaderFactory();
+  vtkStringList* list = factory->GetReaders(file.c_str(), session);
+  std::vector<std::string> names; // (group, name, description) triples: the names
+  for (int i = 1; list && i < list->GetLength(); i += 3)
+  {
+    names.emplace_back(list->GetString(i));
+  }
+  return names;
+}
+
+void checkReaderRegistration(vtkSMSession* session, const std::string& data)
+{
+  check(readersFor(session, data + "blob.off") == std::vector<std::string>{ "SurfaceMeshReader" },
+    "File > Open offers the Surface Mesh Reader alone for .off");
+  for (const char* file :
+    { "spot.obj", "limbs.ply", "ellipsoid_coarse.stl", "blob.vtp", "limbs_coarse.vtk" })
+  {
+    const auto names = readersFor(session, data + file);
+    check(!names.empty() &&
+        std::find(names.begin(), names.end(), "SurfaceMeshReader") == names.end(),
+      std::string("File > Open offers ParaView's own readers only for ") + file);
+  }
+}
+
 int settingIndex(const char* name)
 {
   for (int i = 0; i < vtkSurfaceMapFilter::GetNumberOfSettings(); ++i)
@@ -297,6 +329,7 @@ int main(int argc, char* argv[])
 
     checkMapSettings(pipeline);
     checkPresetProperty(pipeline);
+    checkReaderRegistration(session, data);
 
     // The reader, every format.
     for (const char* file : { "ellipsoid_coarse.stl", "blob.vtp", "limbs.ply", "limbs_coarse.vtk",
