@@ -293,7 +293,8 @@ bool holdsWord(const std::string& text, const std::string& word)
 }
 
 /// The project's non-test source files (C++, Python, CMake, XML): every
-/// file under the source tree but build trees, hidden folders and Testing/.
+/// file under the source tree but build trees, hidden folders, Testing/ and
+/// examples (Examples/, examples/).
 std::vector<std::filesystem::path> nonTestSources()
 {
   namespace fs = std::filesystem;
@@ -302,7 +303,10 @@ std::vector<std::filesystem::path> nonTestSources()
   for (auto it = fs::recursive_directory_iterator(root); it != fs::recursive_directory_iterator(); ++it)
   {
     const std::string name = it->path().filename().string();
-    if (it->is_directory() && (name.rfind("build", 0) == 0 || name[0] == '.' || name == "Testing"))
+    // Tests and examples use the settings as a user does, by name.
+    if (it->is_directory() &&
+      (name.rfind("build", 0) == 0 || name[0] == '.' || name == "Testing" || name == "Examples" ||
+        name == "examples"))
     {
       it.disable_recursion_pending();
       continue;
