@@ -1,7 +1,7 @@
 """How well a population map maps every specimen: the shared four-legged
 animals (../shared/data/fourleg, 21 landmarks each) in one common
 triangulation with the population preset, and per specimen the figures of
-its pair with the star's centre beside those of the same pair mapped alone
+its pair with the first specimen beside those of the same pair mapped alone
 with the pair preset (what is achievable); then how far the population's
 mean moves when the specimens are given in other orders.
 
@@ -12,7 +12,8 @@ mean moves when the specimens are given in other orders.
 Runs (each `surfacemap map`, timed by /usr/bin/time: whole process, peak
 resident memory):
 - the population in file-name order: `map M_0 .. M_{N-1} --landmarks ...
-  --preset population MAP-ARGS`; input 0 is the centre of the star pairs;
+  --preset population MAP-ARGS`; input 0 is every measured pair's source
+  (the preset's mean-shape pairing privileges none);
 - each pair (0, i) alone at the defaults (the pair preset), kept in
   WORK/pairs and reused while the surfacemap binary and the arguments are
   the same (they do not depend on MAP-ARGS);
