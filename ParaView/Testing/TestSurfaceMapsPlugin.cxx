@@ -507,6 +507,7 @@ int main(int argc, char* argv[])
     vtkSMPropertyHelper(byHand, "TargetError").Set(1e-2);
     vtkSMPropertyHelper(byHand, "ApproximationWeight").Set(2.0);
     vtkSMPropertyHelper(byHand, "RefinementRounds").Set(0);
+    vtkSMPropertyHelper(byHand, "PairMode").Set(vtkSurfaceMapFilter::PAIRS_MEAN);
     pipeline.Apply(population, "population");
     pipeline.Apply(byHand, "by hand");
     auto* presetFilter = vtkSurfaceMapBlocksFilter::SafeDownCast(population->GetClientSideObject());
