@@ -276,6 +276,16 @@ public:
   ///@}
 
   ///@{
+  /** Without landmarks, turn each input's sphere embedding onto the first's by a search over
+   * rotations, keeping the one under which the initial map is most nearly a rigid motion (a
+   * warning names the input when two distinct rotations fit almost equally well); off: the
+   * embeddings as computed, in no particular rotation to each other. Default on. */
+  vtkSetClampMacro(LandmarkFreeAlignment, bool, false, true);
+  vtkGetMacro(LandmarkFreeAlignment, bool);
+  vtkBooleanMacro(LandmarkFreeAlignment, bool);
+  ///@}
+
+  ///@{
   /** Iteration cap of the coarse phase (0 skips it). A phase also ends when no edit lowers the
    * energy and the Newton decrement is below DecrementTolerance. Default 50, range 0 to 100000. */
   vtkSetClampMacro(CoarseIterations, int, 0, 100000);
@@ -646,6 +656,7 @@ protected:
   double LandmarkTolerance = 0.0001;
   bool RelaxLandmarkPhase = true;
   bool KeepLandmarks = true;
+  bool LandmarkFreeAlignment = true;
   int CoarseIterations = 50;
   double CoarseError = 0.01;
   double CoarseBarrierWeight = 0.001;

@@ -7,7 +7,11 @@ RIGHT landmarks, where the map sends them.
 
     /usr/bin/python3 Testing/Benchmarks/landmark_robustness.py [--build build]
         [--corpus ../shared/corpus.json] [--pairs hands,c393_394,...]
-        [--work DIR] [--map-args "..."] [--landmark-index K] [-o REPORT.md]
+        [--work DIR] [--map-args "..."] [--landmark-index K]
+        [--cases right,swap-near,...,none] [-o REPORT.md]
+
+A pair not in the corpus may be named A_B for the four-legs
+data/fourleg/A.off and B.off with their .vts landmarks (e.g. 385_387).
 
 The wrong sets change B's landmark K (default 0; A's stay right), chosen by
 geometry so that any landmarked shape gets them:
@@ -139,6 +143,15 @@ def right_landmark_errors(map_dir, a_points, b_points, right_a, right_b):
             for va, vb in zip(right_a, right_b)]
 
 
+def pair_files(corpus, name):
+    """The corpus pair `name`, or the four-legs pair A_B of data/fourleg."""
+    if name in corpus:
+        return corpus[name]
+    a, b = name.split("_")
+    return {"a": f"data/fourleg/{a}.off", "b": f"data/fourleg/{b}.off",
+            "landmarks_a": f"data/fourleg/{a}.vts", "landmarks_b": f"data/fourleg/{b}.vts"}
+
+
 def run_case(surfacemap, a, b, landmarks, out, extra):
     arguments = [a, b] + (["--landmarks"] + landmarks + ["--release-landmarks"] if landmarks else []) + extra
     return corpus_report.run_map(surfacemap, arguments, out)
@@ -152,6 +165,8 @@ def main(argv):
     parser.add_argument("--work", default="/tmp/surfacemaps-landmark-robustness")
     parser.add_argument("--map-args", default="", help="extra `surfacemap map` options for every case")
     parser.add_argument("--landmark-index", type=int, default=0, help="the landmark K the wrong sets change")
+    parser.add_argument("--cases", default="right,swap-near,on-near,swap-far,far-off,none",
+                        help="the landmark sets to run, in this order")
     parser.add_argument("-o", "--output")
     args = parser.parse_args(argv)
 
@@ -164,7 +179,7 @@ def main(argv):
              "| certified | time (s) |", "|---|---|---|---|---|---|"]
     found_count = cases = 0
     for name in args.pairs.split(","):
-        pair = corpus[name]
+        pair = pair_files(corpus, name)
         a, b = (os.path.join(shared, pair[key]) for key in ("a", "b"))
         right_a = landmark_vertices(os.path.join(shared, pair["landmarks_a"]))
         right_b = landmark_vertices(os.path.join(shared, pair["landmarks_b"]))
@@ -176,7 +191,8 @@ def main(argv):
         sets = {"right": right_b}
         sets.update(wrong_sets(b_points, right_b, args.landmark_index))
         sets["none"] = None
-        for label, b_landmarks in sets.items():
+        for label in args.cases.split(","):
+            b_landmarks = sets[label]
             landmarks = None
             if b_landmarks is not None:
                 b_file = os.path.join(work, f"b_{label}.pinned")

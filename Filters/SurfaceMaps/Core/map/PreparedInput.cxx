@@ -174,17 +174,7 @@ void alignEmbeddings(std::vector<PreparedInput>& surfaces,
       to.push_back(surfaces[0].sphere[v]);
       from.push_back(surfaces[i].sphere[ids[i].at(id)]);
     }
-    const Eigen::Matrix3d R = bestRotation(from, to);
-    std::vector<Eigen::Vector3d> rotated = surfaces[i].sphere;
-    for (Eigen::Vector3d& p : rotated)
-    {
-      p = (R * p).normalized();
-    }
-    if (certifyBijective(rotated, surfaces[i].triangles).bijective)
-    {
-      surfaces[i].sphere = std::move(rotated);
-    }
-    else
+    if (!rotateEmbedding(surfaces[i], bestRotation(from, to)))
     {
       log(Logger::Warning,
         inputName(surfaces[i].label) + ": the embedding rotated onto " +
@@ -194,6 +184,26 @@ void alignEmbeddings(std::vector<PreparedInput>& surfaces,
 }
 
 } // namespace
+
+bool rotateEmbedding(PreparedInput& s, const Eigen::Matrix3d& rotation)
+{
+  std::vector<Eigen::Vector3d> rotated = s.sphere;
+  for (Eigen::Vector3d& p : rotated)
+  {
+    p = (rotation * p).normalized();
+  }
+  if (!certifyBijective(rotated, s.triangles).bijective)
+  {
+    return false;
+  }
+  s.sphere = std::move(rotated);
+  for (std::size_t k = 0; k < s.samples.vertices.size(); ++k)
+  {
+    s.samples.spherePoints[k] = s.sphere[s.samples.vertices[k]];
+  }
+  buildLifts(s);
+  return true;
+}
 
 std::vector<std::map<int, int>> landmarkVertices(const std::vector<MapInput>& inputs)
 {
@@ -244,12 +254,12 @@ std::vector<PreparedInput> prepareInputs(const std::vector<MapInput>& inputs,
   {
     surfaces.push_back(prepareSurface(inputs[i], labels.empty() ? static_cast<int>(i) : labels[i]));
   }
-  alignEmbeddings(surfaces, landmarks, log);
   for (PreparedInput& s : surfaces)
   {
     buildSamples(s, samples > 0 ? samples : std::numeric_limits<int>::max());
     buildLifts(s);
   }
+  alignEmbeddings(surfaces, landmarks, log);
   return surfaces;
 }
 

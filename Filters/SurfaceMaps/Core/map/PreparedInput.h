@@ -62,6 +62,11 @@ std::vector<PreparedInput> prepareInputs(const std::vector<MapInput>& inputs,
   const Logger& log = Logger(),
   const std::vector<int>& labels = {});
 
+/// Turns the embedding of a prepared input by `rotation` (its sphere
+/// points, samples, lifts and locator) if the turned embedding certifies
+/// bijective; false (and the input unchanged) otherwise.
+bool rotateEmbedding(PreparedInput& s, const Eigen::Matrix3d& rotation);
+
 /// Landmark id -> vertex of each input; every id must be on every input
 /// (std::invalid_argument otherwise, naming the input and the id).
 std::vector<std::map<int, int>> landmarkVertices(const std::vector<MapInput>& inputs);

@@ -9,6 +9,7 @@
 #include "map/MappingOrder.h"
 #include "map/PhaseRunner.h"
 #include "map/PreparedInput.h"
+#include "map/RotationSearch.h"
 #include "map/Schedule.h"
 
 #include <algorithm>
@@ -191,6 +192,10 @@ SurfaceMapResult computeInOrder(const std::vector<MapInput>& inputs,
     options.log,
     labels);
   requireUsableSizing(surfaces, options.minEdgeLength);
+  if (landmarks[0].empty() && options.landmarkFreeAlignment)
+  {
+    alignWithoutLandmarks(surfaces, options.log);
+  }
   ScheduleContext context;
   context.inputs = static_cast<int>(inputs.size());
   context.landmarks = !landmarks[0].empty();
