@@ -286,6 +286,24 @@ public:
   ///@}
 
   ///@{
+  /** Treat the landmarks as a guess: before mapping, check them against the shapes (a short map
+   * without landmarks, then one with the landmarks it confirms) and set aside, with a warning,
+   * those whose partner lies farther than LandmarkGuideTolerance from where the shapes put it
+   * (swapped, on the wrong finger or leg, far off); the rest bind the map as usual. Costs about
+   * two coarse phases more. Off: every landmark binds the map. Default off. */
+  vtkSetClampMacro(LandmarksAsGuides, bool, false, true);
+  vtkGetMacro(LandmarksAsGuides, bool);
+  vtkBooleanMacro(LandmarksAsGuides, bool);
+  ///@}
+
+  ///@{
+  /** With landmarks as guides: how far (in % of the input's bounding-box diagonal) a landmark's
+   * partner may lie from where the checking map puts it. Default 5, range 0.01 to 100. */
+  vtkSetClampMacro(LandmarkGuideTolerance, double, 0.01, 100.0);
+  vtkGetMacro(LandmarkGuideTolerance, double);
+  ///@}
+
+  ///@{
   /** Iteration cap of the coarse phase (0 skips it). A phase also ends when no edit lowers the
    * energy and the Newton decrement is below DecrementTolerance. Default 50, range 0 to 100000. */
   vtkSetClampMacro(CoarseIterations, int, 0, 100000);
@@ -657,6 +675,8 @@ protected:
   bool RelaxLandmarkPhase = true;
   bool KeepLandmarks = true;
   bool LandmarkFreeAlignment = true;
+  bool LandmarksAsGuides = false;
+  double LandmarkGuideTolerance = 5.0;
   int CoarseIterations = 50;
   double CoarseError = 0.01;
   double CoarseBarrierWeight = 0.001;

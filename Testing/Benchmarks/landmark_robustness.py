@@ -8,7 +8,7 @@ RIGHT landmarks, where the map sends them.
     /usr/bin/python3 Testing/Benchmarks/landmark_robustness.py [--build build]
         [--corpus ../shared/corpus.json] [--pairs hands,c393_394,...]
         [--work DIR] [--map-args "..."] [--landmark-index K]
-        [--cases right,swap-near,...,none] [-o REPORT.md]
+        [--cases right,swap-near,...,none] [--guides] [-o REPORT.md]
 
 A pair not in the corpus may be named A_B for the four-legs
 data/fourleg/A.off and B.off with their .vts landmarks (e.g. 385_387).
@@ -23,7 +23,8 @@ geometry so that any landmarked shape gets them:
               exchanged)
   far-off     K moved to the vertex of B farthest from it (a slip of the hand)
 plus "right" (the right landmarks, released: the baseline) and "none" (no
-landmarks at all).
+landmarks at all). With --guides the landmarks are checked against the
+shapes and the confirmed ones locked (--landmarks-as-guides) instead.
 
 Where a right landmark goes: its vertex on A is located on common_0 (T on A)
 and carried to common_1 (T on B) with the same barycentric coordinates; the
@@ -152,8 +153,9 @@ def pair_files(corpus, name):
             "landmarks_a": f"data/fourleg/{a}.vts", "landmarks_b": f"data/fourleg/{b}.vts"}
 
 
-def run_case(surfacemap, a, b, landmarks, out, extra):
-    arguments = [a, b] + (["--landmarks"] + landmarks + ["--release-landmarks"] if landmarks else []) + extra
+def run_case(surfacemap, a, b, landmarks, out, extra, guides):
+    handling = ["--landmarks-as-guides"] if guides else ["--release-landmarks"]
+    arguments = [a, b] + (["--landmarks"] + landmarks + handling if landmarks else []) + extra
     return corpus_report.run_map(surfacemap, arguments, out)
 
 
@@ -167,6 +169,8 @@ def main(argv):
     parser.add_argument("--landmark-index", type=int, default=0, help="the landmark K the wrong sets change")
     parser.add_argument("--cases", default="right,swap-near,on-near,swap-far,far-off,none",
                         help="the landmark sets to run, in this order")
+    parser.add_argument("--guides", action="store_true",
+                        help="the landmarks as guides (--landmarks-as-guides) instead of released")
     parser.add_argument("-o", "--output")
     args = parser.parse_args(argv)
 
@@ -199,7 +203,7 @@ def main(argv):
                 write_landmarks(b_file, b_landmarks)
                 landmarks = [a_file, b_file]
             out = os.path.join(work, label)
-            report, seconds, _, error = run_case(surfacemap, a, b, landmarks, out, extra)
+            report, seconds, _, error = run_case(surfacemap, a, b, landmarks, out, extra, args.guides)
             cases += 1
             if error:
                 lines.append(f"| {name} | {label} | {error} ||||")

@@ -9,11 +9,13 @@
 #include "map/MappingOrder.h"
 #include "map/PhaseRunner.h"
 #include "map/PreparedInput.h"
+#include "map/LandmarkGuides.h"
 #include "map/RotationSearch.h"
 #include "map/Schedule.h"
 
 #include <algorithm>
 #include <chrono>
+#include <iomanip>
 #include <map>
 #include <optional>
 #include <sstream>
@@ -238,6 +240,36 @@ void restoreOrder(std::vector<Value>& values, const std::vector<int>& order)
   values = std::move(restored);
 }
 
+SurfaceMapResult mapWithGuides(const std::vector<MapInput>& inputs,
+  const SurfaceMapOptions& options)
+{
+  const LandmarkCheck check = checkLandmarkGuides(inputs,
+    options,
+    [](const std::vector<MapInput>& probeInputs, const SurfaceMapOptions& probeOptions)
+    { return computeSurfaceMap(probeInputs, probeOptions); });
+  std::ostringstream text;
+  text << std::setprecision(3);
+  if (check.undecided)
+  {
+    text << "landmarks as guides: the shapes alone confirm fewer than three landmarks, so none "
+            "could be checked; every landmark binds the map";
+    options.log(Logger::Warning, text.str());
+  }
+  for (const int id : check.setAside)
+  {
+    text.str("");
+    text << "landmarks as guides: landmark " << id << " set aside: the shapes put its partner "
+         << check.distance.at(id) << " % of the bounding-box diagonal from it (tolerance "
+         << options.landmarkGuideTolerance << " %)";
+    options.log(Logger::Warning, text.str());
+  }
+  SurfaceMapOptions checked = options;
+  checked.landmarksAsGuides = false;
+  SurfaceMapResult result = computeSurfaceMap(keepLandmarkIds(inputs, check.kept), checked);
+  result.setAsideLandmarks = check.setAside;
+  return result;
+}
+
 } // namespace
 
 SurfaceMapResult computeSurfaceMap(const std::vector<MapInput>& inputs,
@@ -249,7 +281,11 @@ SurfaceMapResult computeSurfaceMap(const std::vector<MapInput>& inputs,
   }
   // Landmark ids checked in the caller's order, so that a message names the
   // caller's input.
-  landmarkVertices(inputs);
+  const std::vector<std::map<int, int>> landmarks = landmarkVertices(inputs);
+  if (options.landmarksAsGuides && inputs.size() > 1 && !landmarks[0].empty())
+  {
+    return mapWithGuides(inputs, options);
+  }
   const std::vector<int> order = mappingOrder(inputs, options.pairs);
   if (std::is_sorted(order.begin(), order.end()))
   {

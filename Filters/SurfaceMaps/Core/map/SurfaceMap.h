@@ -52,6 +52,9 @@ struct SurfaceMapResult
   /// Largest distance of a kept landmark from its input vertex (original
   /// units of each input, maximum over inputs): 0 when snapped exactly.
   double landmarkError = 0.0;
+  /// Landmark ids set aside by the guide check (landmarksAsGuides): the
+  /// shapes disagreed with them, and they did not bind the map.
+  std::vector<int> setAsideLandmarks;
   double seconds = 0.0;
 };
 

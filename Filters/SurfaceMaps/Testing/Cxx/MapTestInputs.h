@@ -7,6 +7,10 @@
 
 #include <Eigen/Geometry>
 
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
 namespace surfacemaps
 {
 namespace testing
@@ -30,6 +34,38 @@ inline MapInput icosphereInput(int level,
     input.spherePositions.push_back(p);
     const double z = std::max(0.0, p.z());
     p = p.cwiseProduct(axes) * (1.0 + bump * z * z * z * z);
+  }
+  return input;
+}
+
+/// Semi-axes and bump directions of bumpyEllipsoid.
+inline Eigen::Vector3d bumpyAxes()
+{
+  return Eigen::Vector3d(1.0, 1.4, 1.9);
+}
+inline std::vector<Eigen::Vector3d> bumpyTips()
+{
+  return { Eigen::Vector3d(0.6, 0.0, 0.8).normalized(),
+    Eigen::Vector3d(-0.3, -1.0, 0.2).normalized() };
+}
+
+/// An icosphere deformed into an ellipsoid with two bumps off its axes (no
+/// symmetry left), its embedding the icosphere turned by `sphereTurn`, its
+/// points moved by `motion`. `bumps` false: the plain ellipsoid.
+inline MapInput bumpyEllipsoid(int level,
+  const Eigen::Matrix3d& sphereTurn,
+  const Eigen::Affine3d& motion,
+  bool bumps = true)
+{
+  MapInput input;
+  input.mesh = makeIcosphere(level);
+  const std::vector<Eigen::Vector3d> tips = bumpyTips();
+  for (Eigen::Vector3d& p : input.mesh.points)
+  {
+    input.spherePositions.push_back(sphereTurn * p);
+    const double a = std::max(0.0, p.dot(tips[0])), b = std::max(0.0, p.dot(tips[1]));
+    const double lift = bumps ? 1.0 + 0.6 * std::pow(a, 6) + 0.4 * std::pow(b, 6) : 1.0;
+    p = motion * Eigen::Vector3d(p.cwiseProduct(bumpyAxes()) * lift);
   }
   return input;
 }

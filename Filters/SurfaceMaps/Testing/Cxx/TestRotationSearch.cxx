@@ -21,35 +21,12 @@ using namespace surfacemaps::testing;
 namespace
 {
 
-const Eigen::Vector3d Axes(1.0, 1.4, 1.9);
-const Eigen::Vector3d BumpA = Eigen::Vector3d(0.6, 0.0, 0.8).normalized();
-const Eigen::Vector3d BumpB = Eigen::Vector3d(-0.3, -1.0, 0.2).normalized();
-
-/// An icosphere deformed into an ellipsoid with two bumps off its axes (no
-/// symmetry left), its embedding the icosphere turned by `sphereTurn`, its
-/// points moved by `motion`. `bumps` false: the plain ellipsoid.
-MapInput shape(int level,
-  const Eigen::Matrix3d& sphereTurn,
-  const Eigen::Affine3d& motion,
-  bool bumps = true)
-{
-  MapInput input;
-  input.mesh = makeIcosphere(level);
-  for (Eigen::Vector3d& p : input.mesh.points)
-  {
-    input.spherePositions.push_back(sphereTurn * p);
-    const double a = std::max(0.0, p.dot(BumpA)), b = std::max(0.0, p.dot(BumpB));
-    const double lift = bumps ? 1.0 + 0.6 * std::pow(a, 6) + 0.4 * std::pow(b, 6) : 1.0;
-    p = motion * Eigen::Vector3d(p.cwiseProduct(Axes) * lift);
-  }
-  return input;
-}
-
 double degreesBetween(const Eigen::Matrix3d& a, const Eigen::Matrix3d& b)
 {
   return Eigen::AngleAxisd(a.transpose() * b).angle() * 180.0 / M_PI;
 }
 
+const Eigen::Vector3d Axes = bumpyAxes();
 const Eigen::Matrix3d SphereTurn =
   Eigen::AngleAxisd(2.2, Eigen::Vector3d(-1.0, 0.3, 2.0).normalized()).matrix();
 
@@ -70,9 +47,9 @@ std::vector<PreparedInput> prepared(const std::vector<MapInput>& inputs)
 
 TEST(RotationSearch, FindsTheTurnOfAMovedCopyMeshedOtherwise)
 {
-  const std::vector<MapInput> inputs{ shape(3, Eigen::Matrix3d::Identity(),
+  const std::vector<MapInput> inputs{ bumpyEllipsoid(3, Eigen::Matrix3d::Identity(),
                                         Eigen::Affine3d::Identity()),
-    shape(2, SphereTurn, someMotion()) };
+    bumpyEllipsoid(2, SphereTurn, someMotion()) };
   const std::vector<PreparedInput> surfaces = prepared(inputs);
   const RotationSearchResult found = searchRotation(surfaces[0], surfaces[1]);
   // The embedding of input 1 is input 0's turned by SphereTurn: turning it
@@ -86,8 +63,8 @@ TEST(RotationSearch, WarnsWhenASymmetricShapeFitsTwoWays)
 {
   // A plain ellipsoid is the same after half a turn about any of its axes.
   const std::vector<MapInput> inputs{
-    shape(3, Eigen::Matrix3d::Identity(), Eigen::Affine3d::Identity(), false),
-    shape(2, SphereTurn, someMotion(), false)
+    bumpyEllipsoid(3, Eigen::Matrix3d::Identity(), Eigen::Affine3d::Identity(), false),
+    bumpyEllipsoid(2, SphereTurn, someMotion(), false)
   };
   std::vector<PreparedInput> surfaces = prepared(inputs);
   std::vector<std::string> warnings;
@@ -126,16 +103,16 @@ double carriedMisfit(const SurfaceMapResult& result,
 TEST(RotationSearch, AMapWithoutLandmarksFindsTheBumps)
 {
   const Eigen::Affine3d motion = someMotion();
-  const std::vector<MapInput> inputs{ shape(2, Eigen::Matrix3d::Identity(),
+  const std::vector<MapInput> inputs{ bumpyEllipsoid(2, Eigen::Matrix3d::Identity(),
                                         Eigen::Affine3d::Identity()),
-    shape(2, SphereTurn, motion) };
+    bumpyEllipsoid(2, SphereTurn, motion) };
   SurfaceMapOptions options;
   options.coarseIterations = 10;
   options.fineIterations = 0;
   options.refinementRounds = 0;
   const SurfaceMapResult result = computeSurfaceMap(inputs, options);
   ASSERT_TRUE(result.certificates[1].bijective);
-  for (const Eigen::Vector3d& bump : { BumpA, BumpB })
+  for (const Eigen::Vector3d& bump : bumpyTips())
   {
     const Eigen::Vector3d tip = inputs[0].mesh.points[closestVertex(inputs[0], bump)];
     EXPECT_LT(carriedMisfit(result, tip, motion), 0.1 * Axes.maxCoeff())
@@ -145,6 +122,6 @@ TEST(RotationSearch, AMapWithoutLandmarksFindsTheBumps)
   // (here the test's, far from the identity): the bump is not found.
   options.landmarkFreeAlignment = false;
   const SurfaceMapResult unturned = computeSurfaceMap(inputs, options);
-  const Eigen::Vector3d tip = inputs[0].mesh.points[closestVertex(inputs[0], BumpA)];
+  const Eigen::Vector3d tip = inputs[0].mesh.points[closestVertex(inputs[0], bumpyTips()[0])];
   EXPECT_GT(carriedMisfit(unturned, tip, motion), 0.3 * Axes.maxCoeff());
 }
