@@ -414,6 +414,14 @@ Json::Value reportMap(vtkSurfaceMapFilter* map,
       jsonNumber(field(map->GetOutput(i), "SphericalDegree")));
   }
   report["landmark_error"] = jsonNumber(field(first, "LandmarkError"));
+  report["set_aside_landmarks"] = Json::Value(Json::arrayValue);
+  if (vtkDataArray* setAside = first->GetFieldData()->GetArray("SetAsideLandmarks"))
+  {
+    for (vtkIdType k = 0; k < setAside->GetNumberOfTuples(); ++k)
+    {
+      report["set_aside_landmarks"].append(static_cast<int>(setAside->GetTuple1(k)));
+    }
+  }
   const std::pair<const char*, const char*> energies[] = { { "total", "Energy" },
     { "barrier", "BarrierEnergy" },
     { "mesh", "MeshEnergy" },

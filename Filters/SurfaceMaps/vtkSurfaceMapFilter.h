@@ -19,23 +19,20 @@
  * Optional point arrays:
  * - "Landmarks" (int, id >= 0 at landmark vertices, -1 elsewhere): the same id
  *   on two inputs means the two vertices correspond; every input must carry
- *   the same ids. Landmarks that are the mirror image of input 0's (most
- *   landmark triples turn the other way around the input's centroid: a
- *   mirrored mesh or the other side's landmark list) get a vtkWarningMacro
- *   naming both inputs before the map runs; the map still runs.
+ *   the same ids. Landmarks mirroring input 0's (a mirrored mesh or the
+ *   other side's list) draw a warning naming both inputs; the map runs.
  * - "Sizing" (1 component): target edge length in the input's own units
  *   (see SizingMode); without it, sizing follows the curvature.
  * - "SpherePosition" (3 components): a precomputed bijective sphere embedding
  *   (e.g. from vtkSphereEmbeddingFilter), verified with exact predicates and
  *   used instead of computing one here (with the sphere embedding's default
  *   settings, which are vtkSphereEmbeddingFilter's defaults: one list holds
- *   both). With landmarks, every embedding is first rotated rigidly onto
- *   input 0's by the landmarks.
+ *   both). Every embedding is first rotated rigidly onto input 0's: by
+ *   the landmarks, or without them by a search (LandmarkFreeAlignment).
  *
- * Outputs: one output port per input connection; the number of output ports
- * follows the connections at once (also right after AddInputConnection, so
- * GetOutputPort(i) can be connected before the first Update). With no input
- * there is still one (empty) output port.
+ * Outputs: one output port per input connection, following the connections
+ * at once (GetOutputPort(i) can be connected before the first Update); with
+ * no input, one empty port.
  *
  * OutputMode COMMON_TRIANGULATION (default): output i is T lifted onto input i,
  * in input i's original coordinates; all outputs share the same triangles.
@@ -46,11 +43,10 @@
  * every other point array of input i read there (its own "Landmarks",
  * "Sizing", "SpherePosition" and global ids are not): continuous arrays
  * interpolated with those barycentric coordinates (integers rounded),
- * categorical ones taken from the triangle's corner with the largest
- * barycentric coordinate, so no output holds a value its input does not have.
- * Integer arrays are categorical and floating-point ones continuous unless
- * SetArrayTransferMode says otherwise (see vtkSurfaceArrayTransferAlgorithm);
- * changing the modes does not recompute the map.
+ * categorical ones (integer arrays unless SetArrayTransferMode says
+ * otherwise, vtkSurfaceArrayTransferAlgorithm) from the triangle's corner
+ * with the largest barycentric coordinate, so no output holds a value its
+ * input does not have; changing the modes does not recompute the map.
  *
  * OutputMode MAPPED_INPUT: output j is the mesh of
  * input k = MappedInput mapped onto input j by the exact map (k's
@@ -60,38 +56,27 @@
  * k's ids) and input j's point arrays read there, continuous or categorical
  * as above; cell data: input k's (same cells). Output k is input k itself.
  *
- * Texture coordinates (both modes above): when input i carries per-corner
- * texture coordinates (the 6-component cell array "CornerTCoords" of
- * vtkSurfaceMeshReader), output i gets them per corner too: the cell array
- * "CornerTCoords" (replacing input k's own in MappedInput mode), in which no
- * triangle spans a texture seam (surfacemaps::transferCornerValues), and the
- * point array "TCoords" (active texture coordinates): the corner values of
- * the input triangle the point lies in ("SourceCellId"), interpolated with
- * "SourceBarycentric". One value per point cannot hold a seam: to render the
- * texture, split the output with vtkSurfaceTextureSeamSplitter. Active point
- * texture coordinates of an input are carried like any point array (the
- * corner ones take precedence).
+ * Texture coordinates (both modes above): an input's per-corner texture
+ * coordinates (cell array "CornerTCoords" of vtkSurfaceMeshReader) are
+ * carried per corner too, no triangle spanning a seam
+ * (surfacemaps::transferCornerValues), plus the point array "TCoords"
+ * interpolated where each point lies; to render, split the output with
+ * vtkSurfaceTextureSeamSplitter. Active point texture coordinates are
+ * carried like any point array (the corner ones take precedence).
  *
  * OutputMode INPUT_EMBEDDINGS: output i is input i unchanged (points, cells,
  * point and cell data) with the point array "SpherePosition" set to its sphere
- * embedding f_i as the map used it (inputs 1.. rotated onto input 0's frame
- * by the landmarks): the frame of the common triangulation's own
- * "SpherePosition" arrays. With T lifted on inputs i and j, these are what
- * vtkSurfaceMapTransfer needs to carry data from input i to input j later.
- * No "Distortion"; field data as below.
+ * embedding f_i as the map used it (rotated onto input 0's frame), the frame
+ * of T's "SpherePosition": with T lifted on inputs i and j, what
+ * vtkSurfaceMapTransfer needs to carry data from i to j later.
  *
  * Cell data (modes COMMON_TRIANGULATION and MAPPED_INPUT): "Distortion", the
- * symmetric Dirichlet energy of the piecewise linear map from output r to
- * output i per triangle (r = 0, or MappedInput in MAPPED_INPUT mode): with both
- * meshes centred and scaled to unit area, s1 >= s2 the singular values of the
- * triangle's Jacobian and A_0, A_i its unit-area areas on output 0 and
- * output i,
+ * per-triangle symmetric Dirichlet energy of the map from output r to output i
+ * (r = 0, or MappedInput), both centred and at unit area, divided by the
+ * triangle's mean area (A_0 + A_i) / 2:
  *   Distortion = (A_i (s1^2 + s2^2) + A_0 (s1^-2 + s2^-2)) / (2 (A_0 + A_i)),
- * i.e. the per-triangle term 1/4 (A_i (s1^2 + s2^2) + A_0 (s1^-2 + s2^-2)) of
- * the map's energy divided by the triangle's mean area (A_0 + A_i) / 2: 1 for a
- * locally isometric triangle, larger otherwise (+inf if degenerate), and its
- * mean weighted by (A_0 + A_i) / 2 is the map's whole symmetric Dirichlet
- * energy (vtkSurfaceMapEvaluation's "SymmetricDirichlet"). Output r: all 1.
+ * 1 where locally isometric (+inf if degenerate); its mean weighted by the
+ * mean areas is vtkSurfaceMapEvaluation's "SymmetricDirichlet". Output r: 1.
  *
  * Field data (every output): "InputIndex"; "Bijective" (1: every embedding g_i
  * of T certified with exact predicates and degree 1), "SphericalDegree" (of
@@ -99,7 +84,8 @@
  * "Energy" (final weighted energy), "BarrierEnergy", "MeshEnergy",
  * "ApproximationEnergy", "MapEnergy" (its terms, unweighted);
  * "LandmarkError" (largest distance of a kept landmark from its input
- * vertex, input units: 0 when exact); "MapSeconds" (the map alone),
+ * vertex, input units: 0 when exact); "SetAsideLandmarks" (the ids the
+ * guide check set aside, LandmarksAsGuides); "MapSeconds" (the map alone),
  * "EmbeddingSeconds" (one value per input, 0 for a given embedding); one
  * tuple per phase that ran: "PhaseName" (string:
  * landmarks, coarse, fine, refine, bound), "PhaseIterations", "PhaseConverged" (0: stopped at
@@ -112,18 +98,13 @@
  * (e.g. its "FileName").
  *
  * Errors: invalid input (named by index and file name, with the defect and
- * where: "input 1 (a.obj) is not closed: 12 boundary edges"), landmark ids
- * that do not correspond, a "SpherePosition" array that is not a bijective
- * embedding, or a map that cannot be certified: vtkErrorMacro, every output
- * empty, GetErrorCode() says which (InvalidInputError, NotCertifiedError,
- * vtkErrorCode::UnknownError for anything else) and GetLastErrorMessage()
- * why. An input whose producer failed (a reader whose file is missing) is an
- * InvalidInputError too: the outputs are emptied although VTK does not run
- * RequestData then, and the message names the input and the failed
- * algorithm. Every algorithm of the module follows this rule; in a loop
- * over files, check GetErrorCode() after Update(). AbortExecute set during the
- * update (e.g. from a ProgressEvent observer) stops within one iteration and
- * leaves every output empty without an error.
+ * where), landmark ids that do not correspond, a "SpherePosition" that is not
+ * a bijective embedding, an input whose producer failed, or a map that
+ * cannot be certified: vtkErrorMacro, every output empty, GetErrorCode()
+ * says which (InvalidInputError, NotCertifiedError, vtkErrorCode::UnknownError)
+ * and GetLastErrorMessage() why; in a loop over files, check GetErrorCode()
+ * after Update(). AbortExecute set during the update (e.g. from a
+ * ProgressEvent observer) stops within one iteration, outputs empty, no error.
  *
  * Settings: every setting of the map (all but SizingMode, NumberOfThreads,
  * OutputMode, MappedInput and the array transfer modes of the superclass,
@@ -133,10 +114,7 @@
  * outside its range at the update (NaN) is an InvalidInputError.
  * GetSettingName(i), ... and vtkSurfaceMapsSettings list them for tools.
  *
- * Switching OutputMode or MappedInput after an update reuses the computed map
- * as long as the inputs and every other setting are unchanged (the filter
- * keeps the last map for that), so every kind of output costs one
- * computation.
+ * Switching OutputMode or MappedInput reuses the map of the last update.
  *
  * @warning Cost: the sphere embeddings (see vtkSphereEmbeddingFilter: about
  * 0.7 s for 3 000 vertices, 3.5 s for 12 000) plus the optimisation,
@@ -144,10 +122,9 @@
  * the size of T and of the inputs' approximation samples (about 1 s in all
  * for two 642-vertex inputs with 3 coarse and 3 fine iterations).
  * Derivatives and remeshing candidates are evaluated on all OpenMP threads.
- * Progress is reported once per iteration with the phase in the progress
- * text; AbortExecute is honoured there. The filter keeps the last map (T
- * with its N embeddings and lifts, a few times the size of the outputs)
- * until the next update.
+ * Progress once per iteration (the phase in the progress text), where
+ * AbortExecute is honoured. The last map (a few times the size of the
+ * outputs) is kept until the next update.
  *
  * @sa vtkSphereEmbeddingFilter vtkSurfaceMapEvaluation vtkSurfaceMeshValidator
  * vtkSurfaceMapTransfer vtkSurfaceArrayTransferAlgorithm
@@ -286,11 +263,11 @@ public:
   ///@}
 
   ///@{
-  /** Treat the landmarks as a guess: before mapping, check them against the shapes (a short map
-   * without landmarks, then one with the landmarks it confirms) and set aside, with a warning,
-   * those whose partner lies farther than LandmarkGuideTolerance from where the shapes put it
-   * (swapped, on the wrong finger or leg, far off); the rest bind the map as usual. Costs about
-   * two coarse phases more. Off: every landmark binds the map. Default off. */
+  /** Treat the landmarks as a guess: a short map without landmarks first confirms those whose
+   * partner lies within LandmarkGuideTolerance of where the shapes put it; they bind the map,
+   * the others are left free, and each of those the map does not find within the tolerance
+   * (swapped, on the wrong finger or leg, far off) is set aside with a warning. Costs about one
+   * coarse phase more. Off: every landmark binds the map. Default off. */
   vtkSetClampMacro(LandmarksAsGuides, bool, false, true);
   vtkGetMacro(LandmarksAsGuides, bool);
   vtkBooleanMacro(LandmarksAsGuides, bool);
@@ -298,7 +275,7 @@ public:
 
   ///@{
   /** With landmarks as guides: how far (in % of the input's bounding-box diagonal) a landmark's
-   * partner may lie from where the checking map puts it. Default 5, range 0.01 to 100. */
+   * partner may lie from where a map puts it. Default 5, range 0.01 to 100. */
   vtkSetClampMacro(LandmarkGuideTolerance, double, 0.01, 100.0);
   vtkGetMacro(LandmarkGuideTolerance, double);
   ///@}

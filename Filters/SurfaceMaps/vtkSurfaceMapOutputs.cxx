@@ -188,6 +188,7 @@ void setMapFieldData(vtkFieldData* fields,
   addField<vtkDoubleArray>(fields, "ApproximationEnergy", map.energy.approximation);
   addField<vtkDoubleArray>(fields, "MapEnergy", map.energy.distortion);
   addField<vtkDoubleArray>(fields, "LandmarkError", map.landmarkError);
+  addField<vtkIntArray>(fields, "SetAsideLandmarks", map.setAsideLandmarks);
   addField<vtkDoubleArray>(fields, "BaseDistance", map.baseDistance[index]);
   addField<vtkDoubleArray>(fields, "ErrorBound", map.errorBound[index]);
   addField<vtkDoubleArray>(fields, "MapSeconds", map.seconds);

@@ -23,12 +23,12 @@ double boxDiagonal(const std::vector<Eigen::Vector3d>& points)
   return (hi - lo).norm();
 }
 
-/// Per landmark id: how far (% of the diagonal, largest over inputs 1..)
-/// the map carries input 0's landmark vertex from its partner.
-std::map<int, double> carriedDistances(const std::vector<MapInput>& inputs,
-  const std::vector<std::map<int, int>>& ids,
+} // namespace
+
+std::map<int, double> landmarkDistances(const std::vector<MapInput>& inputs,
   const SurfaceMapResult& map)
 {
+  const std::vector<std::map<int, int>> ids = landmarkVertices(inputs);
   std::vector<int> order;
   std::vector<Eigen::Vector3d> points;
   for (const auto& [id, v] : ids[0])
@@ -58,19 +58,6 @@ std::map<int, double> carriedDistances(const std::vector<MapInput>& inputs,
   return distance;
 }
 
-/// The coarse phase alone, its landmarks locked, no guide check.
-SurfaceMapOptions probeOptions(const SurfaceMapOptions& options)
-{
-  SurfaceMapOptions probe = options;
-  probe.fineIterations = 0;
-  probe.refinementRounds = 0;
-  probe.maxError = 0.0;
-  probe.keepLandmarks = true;
-  probe.landmarksAsGuides = false;
-  return probe;
-}
-
-} // namespace
 
 std::vector<MapInput> keepLandmarkIds(std::vector<MapInput> inputs, const std::vector<int>& kept)
 {
@@ -85,46 +72,33 @@ std::vector<MapInput> keepLandmarkIds(std::vector<MapInput> inputs, const std::v
   return inputs;
 }
 
-LandmarkCheck checkLandmarkGuides(const std::vector<MapInput>& inputs,
+LandmarkCheck confirmLandmarks(const std::vector<MapInput>& inputs,
   const SurfaceMapOptions& options,
   const MapFunction& map)
 {
-  const std::vector<std::map<int, int>> ids = landmarkVertices(inputs);
-  const SurfaceMapOptions probe = probeOptions(options);
+  // The coarse phase alone, without landmarks and without a guide check.
+  SurfaceMapOptions probe = options;
+  probe.fineIterations = 0;
+  probe.refinementRounds = 0;
+  probe.maxError = 0.0;
+  probe.landmarksAsGuides = false;
   LandmarkCheck check;
-  const std::map<int, double> free = carriedDistances(inputs, ids, map(keepLandmarkIds(inputs, {}), probe));
-  std::vector<int> confirmed;
-  for (const auto& [id, d] : free)
+  check.distance = landmarkDistances(inputs, map(keepLandmarkIds(inputs, {}), probe));
+  for (const auto& [id, d] : check.distance)
   {
-    (d <= options.landmarkGuideTolerance ? confirmed : check.setAside).push_back(id);
+    (d <= options.landmarkGuideTolerance ? check.confirmed : check.unconfirmed).push_back(id);
   }
-  check.distance = free;
-  if (confirmed.size() < 3 && confirmed.size() < free.size())
+  if (check.confirmed.size() < 3 && !check.unconfirmed.empty())
   {
-    // Too few to hold the second map: the shapes alone cannot judge them.
+    // Too few to hold the map: the shapes alone cannot judge the landmarks.
     check.undecided = true;
-    check.setAside.clear();
-    for (const auto& entry : free)
+    check.confirmed.clear();
+    check.unconfirmed.clear();
+    for (const auto& entry : check.distance)
     {
-      check.kept.push_back(entry.first);
+      check.confirmed.push_back(entry.first);
     }
-    return check;
   }
-  check.kept = confirmed;
-  if (check.setAside.empty())
-  {
-    return check;
-  }
-  const std::map<int, double> guided =
-    carriedDistances(inputs, ids, map(keepLandmarkIds(inputs, confirmed), probe));
-  std::vector<int> rejected;
-  for (const int id : check.setAside)
-  {
-    check.distance[id] = guided.at(id);
-    (guided.at(id) <= options.landmarkGuideTolerance ? check.kept : rejected).push_back(id);
-  }
-  std::sort(check.kept.begin(), check.kept.end());
-  check.setAside = rejected;
   return check;
 }
 

@@ -240,33 +240,52 @@ void restoreOrder(std::vector<Value>& values, const std::vector<int>& order)
   values = std::move(restored);
 }
 
+/// Landmarks as guides (LandmarkGuides.h): the map held by the landmarks
+/// the shapes confirm, the others free and set aside where the map does not
+/// find their partners.
 SurfaceMapResult mapWithGuides(const std::vector<MapInput>& inputs,
   const SurfaceMapOptions& options)
 {
-  const LandmarkCheck check = checkLandmarkGuides(inputs,
-    options,
-    [](const std::vector<MapInput>& probeInputs, const SurfaceMapOptions& probeOptions)
-    { return computeSurfaceMap(probeInputs, probeOptions); });
+  const MapFunction map = [](const std::vector<MapInput>& in, const SurfaceMapOptions& o)
+  { return computeSurfaceMap(in, o); };
+  const LandmarkCheck check = confirmLandmarks(inputs, options, map);
   std::ostringstream text;
-  text << std::setprecision(3);
+  text << std::setprecision(3) << "landmarks as guides: each partner's distance from where the "
+                                  "shapes alone put it (% of the diagonal):";
+  for (const auto& [id, d] : check.distance)
+  {
+    text << " " << id << ": " << d;
+  }
+  options.log(Logger::Info, text.str());
   if (check.undecided)
   {
-    text << "landmarks as guides: the shapes alone confirm fewer than three landmarks, so none "
-            "could be checked; every landmark binds the map";
-    options.log(Logger::Warning, text.str());
+    options.log(Logger::Warning,
+      "landmarks as guides: the shapes alone confirm fewer than three landmarks, so none could "
+      "be judged; every landmark binds the map");
   }
-  for (const int id : check.setAside)
+  SurfaceMapOptions guided = options;
+  guided.landmarksAsGuides = false;
+  SurfaceMapResult result = map(keepLandmarkIds(inputs, check.confirmed), guided);
+  if (check.unconfirmed.empty())
   {
-    text.str("");
-    text << "landmarks as guides: landmark " << id << " set aside: the shapes put its partner "
-         << check.distance.at(id) << " % of the bounding-box diagonal from it (tolerance "
-         << options.landmarkGuideTolerance << " %)";
-    options.log(Logger::Warning, text.str());
+    return result;
   }
-  SurfaceMapOptions checked = options;
-  checked.landmarksAsGuides = false;
-  SurfaceMapResult result = computeSurfaceMap(keepLandmarkIds(inputs, check.kept), checked);
-  result.setAsideLandmarks = check.setAside;
+  const std::map<int, double> found = landmarkDistances(inputs, result);
+  for (const int id : check.unconfirmed)
+  {
+    const bool setAside = found.at(id) > options.landmarkGuideTolerance;
+    text.str("");
+    text << "landmarks as guides: landmark " << id
+         << (setAside ? " set aside" : " free (not confirmed by the shapes alone)")
+         << ": the map puts its partner " << found.at(id)
+         << " % of the bounding-box diagonal from it (tolerance " << options.landmarkGuideTolerance
+         << " %)";
+    options.log(setAside ? Logger::Warning : Logger::Info, text.str());
+    if (setAside)
+    {
+      result.setAsideLandmarks.push_back(id);
+    }
+  }
   return result;
 }
 

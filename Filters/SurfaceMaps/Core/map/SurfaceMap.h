@@ -52,8 +52,9 @@ struct SurfaceMapResult
   /// Largest distance of a kept landmark from its input vertex (original
   /// units of each input, maximum over inputs): 0 when snapped exactly.
   double landmarkError = 0.0;
-  /// Landmark ids set aside by the guide check (landmarksAsGuides): the
-  /// shapes disagreed with them, and they did not bind the map.
+  /// Landmark ids set aside as guides (landmarksAsGuides): the shapes alone
+  /// did not confirm them, so they did not bind the map, and the map puts
+  /// their partners farther than the tolerance from them.
   std::vector<int> setAsideLandmarks;
   double seconds = 0.0;
 };

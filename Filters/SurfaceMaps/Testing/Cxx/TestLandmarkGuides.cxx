@@ -59,23 +59,22 @@ const MapFunction Map = [](const std::vector<MapInput>& inputs, const SurfaceMap
 
 } // namespace
 
-TEST(LandmarkGuides, RightLandmarksAreAllKept)
+TEST(LandmarkGuides, TheShapesConfirmRightLandmarks)
 {
-  const LandmarkCheck check = checkLandmarkGuides(landmarkedPair({}), shortSchedule(), Map);
+  const LandmarkCheck check = confirmLandmarks(landmarkedPair({}), shortSchedule(), Map);
   EXPECT_FALSE(check.undecided);
-  EXPECT_EQ(check.kept, std::vector<int>({ 0, 1, 2, 3, 4, 5 }));
-  EXPECT_TRUE(check.setAside.empty());
+  EXPECT_EQ(check.confirmed, std::vector<int>({ 0, 1, 2, 3, 4, 5 }));
+  EXPECT_TRUE(check.unconfirmed.empty());
 }
 
-TEST(LandmarkGuides, SwappedLandmarksAreSetAside)
+TEST(LandmarkGuides, TheShapesDoNotConfirmSwappedLandmarks)
 {
   // The two bump tips exchanged.
-  const LandmarkCheck check =
-    checkLandmarkGuides(landmarkedPair({ { 0, 1 } }), shortSchedule(), Map);
+  const LandmarkCheck check = confirmLandmarks(landmarkedPair({ { 0, 1 } }), shortSchedule(), Map);
   EXPECT_FALSE(check.undecided);
-  EXPECT_EQ(check.kept, std::vector<int>({ 2, 3, 4, 5 }));
-  EXPECT_EQ(check.setAside, std::vector<int>({ 0, 1 }));
-  for (const int id : check.setAside)
+  EXPECT_EQ(check.confirmed, std::vector<int>({ 2, 3, 4, 5 }));
+  EXPECT_EQ(check.unconfirmed, std::vector<int>({ 0, 1 }));
+  for (const int id : check.unconfirmed)
   {
     EXPECT_GT(check.distance.at(id), shortSchedule().landmarkGuideTolerance) << "landmark " << id;
   }
@@ -85,13 +84,13 @@ TEST(LandmarkGuides, MostlyWrongLandmarksCannotBeJudged)
 {
   // Four of six wrong: the shapes confirm two, too few to hold a map.
   const LandmarkCheck check =
-    checkLandmarkGuides(landmarkedPair({ { 0, 1 }, { 2, 3 } }), shortSchedule(), Map);
+    confirmLandmarks(landmarkedPair({ { 0, 1 }, { 2, 3 } }), shortSchedule(), Map);
   EXPECT_TRUE(check.undecided);
-  EXPECT_EQ(check.kept, std::vector<int>({ 0, 1, 2, 3, 4, 5 }));
-  EXPECT_TRUE(check.setAside.empty());
+  EXPECT_EQ(check.confirmed, std::vector<int>({ 0, 1, 2, 3, 4, 5 }));
+  EXPECT_TRUE(check.unconfirmed.empty());
 }
 
-TEST(LandmarkGuides, TheMapNamesWhatItSetAside)
+TEST(LandmarkGuides, TheMapSetsAsideWhatItDoesNotFindAndNamesIt)
 {
   SurfaceMapOptions options = shortSchedule();
   options.landmarksAsGuides = true;
@@ -103,11 +102,13 @@ TEST(LandmarkGuides, TheMapNamesWhatItSetAside)
       warnings.push_back(message);
     }
   };
-  const SurfaceMapResult result = computeSurfaceMap(landmarkedPair({ { 2, 3 } }), options);
+  const std::vector<MapInput> inputs = landmarkedPair({ { 2, 3 } });
+  const SurfaceMapResult result = computeSurfaceMap(inputs, options);
   EXPECT_EQ(result.setAsideLandmarks, std::vector<int>({ 2, 3 }));
   ASSERT_EQ(warnings.size(), 2u);
   EXPECT_NE(warnings[0].find("landmark 2 set aside"), std::string::npos) << warnings[0];
-  // The kept landmarks bind the map: T carries them, the set-aside ones not.
+  // The confirmed landmarks bind the map: T carries them, the others not;
+  // and the map puts them where they belong, the swapped ones far off.
   int carried = 0;
   for (const int id : result.landmarks)
   {
@@ -115,4 +116,7 @@ TEST(LandmarkGuides, TheMapNamesWhatItSetAside)
     carried += id >= 0;
   }
   EXPECT_EQ(carried, 4);
+  const std::map<int, double> distance = landmarkDistances(inputs, result);
+  EXPECT_LT(distance.at(0), 1.0);
+  EXPECT_GT(distance.at(2), options.landmarkGuideTolerance);
 }
