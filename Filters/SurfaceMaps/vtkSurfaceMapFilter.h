@@ -31,6 +31,11 @@
  *   settings, which are vtkSphereEmbeddingFilter's defaults: one list holds
  *   both). With landmarks, every embedding is first rotated rigidly onto
  *   input 0's by the landmarks.
+ * Port 1 (optional, repeatable): an existing map of port 0's first M inputs to
+ * add the others to, as its M COMMON_TRIANGULATION outputs; those M inputs then
+ * carry its INPUT_EMBEDDINGS "SpherePosition" (used unrotated). Their maps are
+ * kept, T only refined by splits (surfacemaps::addToSurfaceMap); needs
+ * RefinementRounds 0 and MaxError 0.
  *
  * Outputs: one output port per input connection; the number of output ports
  * follows the connections at once (also right after AddInputConnection, so
