@@ -137,5 +137,5 @@ def test_python_adds_to_a_directory_or_a_map_in_memory(existing, tmp_path):
     n = first[0].GetNumberOfPoints()
     for j in range(2):
         assert added[j].GetPoint(n - 1) == pytest.approx(first[j].GetPoint(n - 1), abs=1e-12)
-    with pytest.raises(surfacemaps.InputError, match="input 2 has 0 landmarks"):
+    with pytest.raises(surfacemaps.InputError, match="input 2 .*has 0"):
         surfacemaps.map_surfaces([data("ellipsoid.obj")], add_to=first)

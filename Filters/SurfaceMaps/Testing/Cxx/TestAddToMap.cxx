@@ -111,7 +111,7 @@ TEST(AddToMap, AddedInputIsMappedAndTheExistingMapsStay)
   // The exact map 0 -> 1 between existing inputs, before and after.
   const std::vector<Eigen::Vector3d> exactBefore = mappedVertices(before, three, 0, 1);
   const std::vector<Eigen::Vector3d> exactAfter = mappedVertices(after, inputs, 0, 1);
-  EXPECT_LT(largestDistance(exactBefore, exactAfter), 0.02);
+  EXPECT_LT(largestDistance(exactBefore, exactAfter), 1e-3);
   EXPECT_EQ(mappedVertices(after, inputs, 0, 3).size(), inputs[0].mesh.points.size());
 }
 
