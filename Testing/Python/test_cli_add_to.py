@@ -83,6 +83,7 @@ def test_flags_override_the_existing_maps_settings(existing, tmp_path):
     assert r.returncode == 0, r.stderr
     report = json.loads((out / "report.json").read_text())
     assert report["settings"]["fine_iterations"] == 1
+    # The new specimen's fine phase (mapped alone against the mean shape).
     assert [p["iterations"] for p in report["phases"] if p["name"] == "fine"] == [1]
 
 

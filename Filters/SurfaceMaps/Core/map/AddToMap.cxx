@@ -4,6 +4,7 @@
 #include "geometry/SphereLocator.h"
 #include "geometry/SphericalTriangulation.h"
 #include "map/CommonTriangulation.h"
+#include "map/ComposedEmbedding.h"
 #include "map/ErrorBound.h"
 #include "map/MapTransfer.h"
 #include "map/PhaseRunner.h"
@@ -14,6 +15,7 @@
 #include <chrono>
 #include <limits>
 #include <map>
+#include <memory>
 #include <set>
 #include <stdexcept>
 #include <string>
@@ -156,17 +158,27 @@ MapInput meanShapeInput(const ExistingMap& map)
   return mean;
 }
 
-/// Runs the schedule of the two-input problem, splits only, on T; the
-/// phases' reports go to `phases`. Returns the last phase's weights.
+/// The settings of the two-input problems: the new input against the mean
+/// shape, the map weight halved so that it weighs as much against the
+/// per-input terms as in the mean pairing over N inputs.
+SurfaceMapOptions pairOptions(const SurfaceMapOptions& options)
+{
+  SurfaceMapOptions pair = options;
+  pair.pairs = PairScheme::Star;
+  pair.mapWeight = options.mapWeight / 2.0;
+  return pair;
+}
+
+/// Runs the schedule of the two-input problem on T from g_1 = g_0, splits
+/// only (the fallback start); the phases' reports go to `phases`. Returns
+/// the last phase's weights.
 MapEnergyWeights runSchedule(CommonTriangulation& T,
   std::vector<PreparedInput>& surfaces,
   const SurfaceMapOptions& options,
   bool landmarks,
   std::vector<MapPhaseReport>& phases)
 {
-  SurfaceMapOptions pair = options;
-  pair.pairs = PairScheme::Star;
-  pair.mapWeight = options.mapWeight / 2.0;
+  const SurfaceMapOptions pair = pairOptions(options);
   ScheduleContext context;
   context.inputs = 2;
   context.pairs = 1;
@@ -271,20 +283,39 @@ SurfaceMapResult addOne(const ExistingMap& map,
   std::vector<PreparedInput> surfaces = prepareInputs(
     problem, ids, options.approximationSamples, options.log, { 0, static_cast<int>(k) });
   requireUsableSizing(surfaces, options.minEdgeLength);
-  CommonTriangulation T(surfaces, { { 0, 1 } });
-  T.setFrozenInputs(1);
+  // The new input mapped alone against the mean shape (the whole schedule:
+  // landmark phase, collapses, flips), composed onto T.
+  const SurfaceMapResult alone = computeSurfaceMap(problem, pairOptions(options));
   SurfaceMapResult result;
-  const MapEnergyWeights weights =
-    runSchedule(T, surfaces, options, !ids[0].empty(), result.phases);
-  T.mesh().garbage_collection();
-
-  result.triangles = faceTriangles(T.mesh());
-  result.spherePositions = existingEmbeddings(map, T);
-  result.spherePositions.emplace_back();
-  for (auto v : T.mesh().vertices())
+  result.phases = alone.phases;
+  result.energy = alone.energy;
+  auto T = std::make_unique<CommonTriangulation>(surfaces, std::vector<std::array<int, 2>>{ { 0, 1 } });
+  T->setFrozenInputs(1);
+  try
   {
-    result.spherePositions.back().push_back(T.g(v, 1));
-    result.landmarks.push_back(T.landmark(v));
+    composeEmbedding(*T, 1, alone);
+    T->setTrackSamples(true);
+  }
+  catch (const NoResultError& e)
+  {
+    options.log(Logger::Warning,
+      "adding " + inputName(k) + ": " + e.what() +
+        "; optimising it on the common triangulation from the mean shape's embedding instead");
+    T = std::make_unique<CommonTriangulation>(surfaces, std::vector<std::array<int, 2>>{ { 0, 1 } });
+    T->setFrozenInputs(1);
+    const MapEnergyWeights weights =
+      runSchedule(*T, surfaces, options, !ids[0].empty(), result.phases);
+    result.energy = energyByTerm(*T, weights);
+  }
+  T->mesh().garbage_collection();
+
+  result.triangles = faceTriangles(T->mesh());
+  result.spherePositions = existingEmbeddings(map, *T);
+  result.spherePositions.emplace_back();
+  for (auto v : T->mesh().vertices())
+  {
+    result.spherePositions.back().push_back(T->g(v, 1));
+    result.landmarks.push_back(T->landmark(v));
   }
   result.inputSpherePositions = spheres;
   result.inputSpherePositions.push_back(surfaces[1].sphere);
@@ -306,10 +337,9 @@ SurfaceMapResult addOne(const ExistingMap& map,
       result.sourcePoints[i],
       result.lifted[i]);
   }
-  result.energy = energyByTerm(T, weights);
   // The existing inputs' base distances are not measured again (NaN).
   std::vector<double> largest, bound;
-  certifyBaseDistances(T, surfaces, {}, largest, bound);
+  certifyBaseDistances(*T, surfaces, {}, largest, bound);
   result.baseDistance.assign(n, std::numeric_limits<double>::quiet_NaN());
   result.baseDistance[k] = largest[1];
   result.errorBound.assign(n, 0.0);

@@ -135,7 +135,7 @@ TEST(AddToMap, SeveralInputsAreAddedOneAfterTheOther)
     EXPECT_LT(measureMap(after.lifted[0], after.lifted[i], after.triangles).symmetricDirichlet, 2.0)
       << "input " << i;
   }
-  // Every addition's phases, in turn (landmarks, coarse, fine each).
+  // Every addition's phases, in turn (mapped alone: landmarks, coarse, fine).
   EXPECT_EQ(after.phases.size(), 9u);
 }
 
