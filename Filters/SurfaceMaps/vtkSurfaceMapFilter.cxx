@@ -8,8 +8,8 @@
 #include "vtkSurfaceMapsSettings.h"
 
 #include "base/ThreadCount.h"
-#include "map/MapPresets.h"
 #include "map/AddToMap.h"
+#include "map/MapPresets.h"
 #include "map/MapSettings.h"
 #include "map/SurfaceMap.h"
 

@@ -68,8 +68,8 @@ void checkExisting(const ExistingMap& map, const std::vector<MapInput>& inputs)
     {
       throw InputError("the existing map's T on " + inputName(j) + " has " +
         std::to_string(map.spherePositions[j].size()) + " sphere points and " +
-        std::to_string(map.lifted[j].size()) + " lifted points, on input 0 " +
-        std::to_string(nv) + " vertices");
+        std::to_string(map.lifted[j].size()) + " lifted points, on input 0 " + std::to_string(nv) +
+        " vertices");
     }
     const BijectivityCertificate certificate =
       certifyBijective(map.spherePositions[j], map.triangles);
@@ -122,8 +122,8 @@ void checkLandmarks(const ExistingMap& map, const MapInput& added, std::size_t l
   {
     if (ids.count(id) == 0)
     {
-      throw InputError(inputName(label) + " has landmark " + std::to_string(id) +
-        " (vertex " + std::to_string(v) + "), which the map it is added to has not");
+      throw InputError(inputName(label) + " has landmark " + std::to_string(id) + " (vertex " +
+        std::to_string(v) + "), which the map it is added to has not");
     }
   }
 }
@@ -198,8 +198,9 @@ MapEnergyWeights runSchedule(CommonTriangulation& T,
       if (const int missed = runner.snapLandmarks(); missed > 0)
       {
         options.log(Logger::Warning,
-          std::to_string(missed) + " landmark positions of the added input could not be snapped "
-                                   "exactly (the embedding would fold)");
+          std::to_string(missed) +
+            " landmark positions of the added input could not be snapped "
+            "exactly (the embedding would fold)");
       }
     }
     else if (stage.kind == StageKind::TrackSamples)
@@ -289,7 +290,8 @@ SurfaceMapResult addOne(const ExistingMap& map,
   SurfaceMapResult result;
   result.phases = alone.phases;
   result.energy = alone.energy;
-  auto T = std::make_unique<CommonTriangulation>(surfaces, std::vector<std::array<int, 2>>{ { 0, 1 } });
+  auto T =
+    std::make_unique<CommonTriangulation>(surfaces, std::vector<std::array<int, 2>>{ { 0, 1 } });
   T->setFrozenInputs(1);
   try
   {
@@ -301,7 +303,8 @@ SurfaceMapResult addOne(const ExistingMap& map,
     options.log(Logger::Warning,
       "adding " + inputName(k) + ": " + e.what() +
         "; optimising it on the common triangulation from the mean shape's embedding instead");
-    T = std::make_unique<CommonTriangulation>(surfaces, std::vector<std::array<int, 2>>{ { 0, 1 } });
+    T =
+      std::make_unique<CommonTriangulation>(surfaces, std::vector<std::array<int, 2>>{ { 0, 1 } });
     T->setFrozenInputs(1);
     const MapEnergyWeights weights =
       runSchedule(*T, surfaces, options, !ids[0].empty(), result.phases);

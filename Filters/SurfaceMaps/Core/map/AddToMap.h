@@ -54,12 +54,11 @@ struct ExistingMap
 ///
 /// The result's energies are those of the last addition's two-input
 /// problem (alone, or on T), its phases those of every addition in turn; baseDistance is
-/// measured on the last added input only (NaN on the others), errorBound 0. Throws InputError when the existing map or the inputs
-/// do not fit (sizes, embeddings that are not bijective, landmark ids the
-/// new input lacks) or when `options` ask for what adding cannot keep
-/// (refinement rounds or an error bound re-run on every input: set
-/// refinementRounds 0 and maxError 0), NoResultError when an embedding of
-/// the result cannot be certified, Aborted through the progress callback.
+/// measured on the last added input only (NaN on the others), errorBound 0. Throws InputError when
+/// the existing map or the inputs do not fit (sizes, embeddings that are not bijective, landmark
+/// ids the new input lacks) or when `options` ask for what adding cannot keep (refinement rounds or
+/// an error bound re-run on every input: set refinementRounds 0 and maxError 0), NoResultError when
+/// an embedding of the result cannot be certified, Aborted through the progress callback.
 SurfaceMapResult addToSurfaceMap(const ExistingMap& existing,
   const std::vector<MapInput>& inputs,
   const SurfaceMapOptions& options = SurfaceMapOptions());

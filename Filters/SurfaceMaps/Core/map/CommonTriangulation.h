@@ -178,8 +178,8 @@ public:
   };
   /// Garbage-collects the mesh and fills a snapshot and the sphere points
   /// (g of input i at i * vertices + v); landmark vertices are locked when
-  /// `lockLandmarks`, every point of the frozen inputs always. The coverage densities, barrier scales and mean shape
-  /// are filled where `weights` use them.
+  /// `lockLandmarks`, every point of the frozen inputs always. The coverage densities, barrier
+  /// scales and mean shape are filled where `weights` use them.
   void snapshot(Snapshot& snapshot,
     SpherePoints& points,
     bool lockLandmarks,

@@ -102,8 +102,8 @@ TEST(AddToMap, AddedInputIsMappedAndTheExistingMapsStay)
     EXPECT_EQ(after.landmarks[v], before.landmarks[v]);
   }
   EXPECT_LT(after.landmarkError, 1e-9); // kept landmarks, the added input's as well
-  const double existingSD = measureMap(before.lifted[0], before.lifted[2], before.triangles)
-                              .symmetricDirichlet;
+  const double existingSD =
+    measureMap(before.lifted[0], before.lifted[2], before.triangles).symmetricDirichlet;
   const MapMetrics added = measureMap(after.lifted[0], after.lifted[3], after.triangles);
   EXPECT_EQ(added.degenerateTriangles, 0);
   EXPECT_LT(added.symmetricDirichlet, 2.0);
@@ -148,7 +148,8 @@ TEST(AddToMap, BadExistingMapsAndInputsAreRefused)
   const SurfaceMapResult before = computeSurfaceMap(three, options);
   const std::vector<MapInput> inputs = asUsed(all, before);
   const ExistingMap existing = existingOf(before);
-  auto message = [&](const ExistingMap& map, const std::vector<MapInput>& given,
+  auto message = [&](const ExistingMap& map,
+                   const std::vector<MapInput>& given,
                    const SurfaceMapOptions& o) -> std::string
   {
     try
@@ -168,13 +169,13 @@ TEST(AddToMap, BadExistingMapsAndInputsAreRefused)
 
   std::vector<MapInput> lacking = inputs;
   std::replace(lacking[3].landmarks.begin(), lacking[3].landmarks.end(), 2, -1);
-  EXPECT_NE(message(existing, lacking, options).find("input 3 has no landmark 2"),
-    std::string::npos);
+  EXPECT_NE(
+    message(existing, lacking, options).find("input 3 has no landmark 2"), std::string::npos);
 
   ExistingMap folded = existing;
   std::swap(folded.spherePositions[1][0], folded.spherePositions[1][1]);
-  EXPECT_NE(message(folded, inputs, options).find("on sphere 1 is not bijective"),
-    std::string::npos);
+  EXPECT_NE(
+    message(folded, inputs, options).find("on sphere 1 is not bijective"), std::string::npos);
 
   ExistingMap short_ = existing;
   short_.lifted[2].pop_back();
