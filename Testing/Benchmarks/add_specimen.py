@@ -48,7 +48,8 @@ def main(argv):
     parser.add_argument("--build", default=os.path.join(root, "build"))
     parser.add_argument("--data", default=os.path.normpath(os.path.join(root, "..", "shared", "data", "fourleg")))
     parser.add_argument("--work", default="/tmp/surfacemaps-add-specimen")
-    parser.add_argument("--added", default="", help="file-name indices (>= 1) of the specimens added (default: the last)")
+    parser.add_argument("--added", default="",
+                        help="file-name indices (>= 1) of the specimens added (default: the last)")
     parser.add_argument("--map-args", default="", help="further settings of every map")
     parser.add_argument("-o", "--output")
     args = parser.parse_args(argv)
