@@ -5,6 +5,7 @@
 #include "AtomicFiles.h"
 #include "Commands.h"
 #include "EvaluationSummary.h"
+#include "ExistingMapFiles.h"
 #include "Json.h"
 #include "MapDestination.h"
 #include "MapDirectory.h"
@@ -47,7 +48,7 @@ namespace
 const char* const MapHelpIntro =
   "usage: surfacemap map A B [C ...] --output-dir DIR [--landmarks FA FB ...]\n"
   "                      [--sizing SA SB ...] [--categorical NAME]\n"
-  "                      [--continuous NAME] [SETTING ...]\n"
+  "                      [--continuous NAME] [--add-to MAPDIR] [SETTING ...]\n"
   "\n"
   "Computes a bijective map between the meshes A, B, ... (closed, manifold,\n"
   "genus 0) through one adaptive common triangulation T (Schmidt, Pieper,\n"
@@ -125,7 +126,7 @@ const char* const MapExitCodes =
   "directory that cannot be written), 3 if no certified map was found, 1 for\n"
   "an internal error.\n";
 
-const std::string MapHelpText = std::string(MapHelpIntro) + ArrayTransferFlagsHelp +
+const std::string MapHelpText = std::string(MapHelpIntro) + AddToHelp + ArrayTransferFlagsHelp +
   MapHelpSettings + vtkSurfaceMapsSettings::GetPresetHelp() +
   settingsHelp(vtkSurfaceMapsSettings::MAP_SETTINGS) + LandmarkFormatsHelp + MapExitCodes;
 } // namespace
@@ -202,6 +203,8 @@ struct MapArguments
   /// --preset's name, "" without one.
   std::string preset;
   bool overwrite = false;
+  /// --add-to's map directory, "" without one.
+  std::string addTo;
 };
 
 MapArguments parseArguments(const std::vector<std::string>& args, vtkSurfaceMapFilter* map)
@@ -233,6 +236,10 @@ MapArguments parseArguments(const std::vector<std::string>& args, vtkSurfaceMapF
     else if (a == "--overwrite")
     {
       parsed.overwrite = true;
+    }
+    else if (a == "--add-to")
+    {
+      parsed.addTo = optionValue(args, i, "a map directory");
     }
     else if (parseSettingFlag(map, args, i) || parseArrayTransferFlag(map, args, i))
     {
@@ -571,16 +578,51 @@ Json::Value writeOutputs(vtkSurfaceMapFilter* map,
   return maps;
 }
 
+// With --add-to: the existing map's inputs (with the embeddings it used) go
+// first, its T to the filter's port 1, its input files into the arguments
+// (their report entries are the existing map's: mergeExistingReport).
+void addExisting(MapArguments& arguments,
+  std::vector<vtkSmartPointer<vtkPolyData>>& inputs,
+  const ExistingMapFiles& existing,
+  vtkSurfaceMapFilter* map)
+{
+  inputs.insert(inputs.begin(), existing.embeddings.begin(), existing.embeddings.end());
+  for (const auto& common : existing.common)
+  {
+    map->AddInputData(1, common);
+  }
+  const std::vector<std::string> files = existingInputFiles(existing);
+  arguments.meshes.insert(arguments.meshes.begin(), files.begin(), files.end());
+  for (std::vector<std::string>* list : { &arguments.landmarks, &arguments.sizing })
+  {
+    if (!list->empty())
+    {
+      list->insert(list->begin(), files.size(), "");
+    }
+  }
+}
+
 } // namespace
 
 int runMap(const std::vector<std::string>& args)
 {
   vtkNew<vtkSurfaceMapFilter> map;
-  const MapArguments arguments = parseArguments(args, map);
-  const std::vector<vtkSmartPointer<vtkPolyData>> inputs = readInputs(arguments);
+  // The existing map's settings first, so that the flags override them.
+  ExistingMapFiles existing;
+  const std::string addTo = addToDirectory(args);
+  if (!addTo.empty() && !succeeds([&] { existing = readExistingMap(addTo, map); }))
+  {
+    return ExitBadInput;
+  }
+  MapArguments arguments = parseArguments(args, map);
+  std::vector<vtkSmartPointer<vtkPolyData>> inputs = readInputs(arguments);
   if (inputs.empty())
   {
     return ExitBadInput;
+  }
+  if (!addTo.empty())
+  {
+    addExisting(arguments, inputs, existing, map);
   }
   const std::string missing =
     missingArrayTransferNames(map, std::vector<vtkPolyData*>(inputs.begin(), inputs.end()));
@@ -610,6 +652,10 @@ int runMap(const std::vector<std::string>& args)
     std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   const bool certified = field(map->GetOutput(0), "Bijective") == 1.0;
   Json::Value report = reportMap(map, arguments, inputs, seconds);
+  if (!addTo.empty())
+  {
+    mergeExistingReport(report, existing);
+  }
   report["phases"] = reportPhases(map->GetOutput(0));
   reportErrorBound(report, map, static_cast<int>(inputs.size()));
   try

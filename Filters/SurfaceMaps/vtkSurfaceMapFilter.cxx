@@ -8,6 +8,7 @@
 #include "vtkSurfaceMapsSettings.h"
 
 #include "base/ThreadCount.h"
+#include "map/AddToMap.h"
 #include "map/MapPresets.h"
 #include "map/MapSettings.h"
 #include "map/SurfaceMap.h"
@@ -141,8 +142,10 @@ struct vtkSurfaceMapFilter::vtkInternals
     return !this->Filter->GetAbortExecute();
   }
 
-  // Validated inputs, sphere embeddings, the map.
+  // Validated inputs, sphere embeddings, the map (`existing`: port 1, a map
+  // of the first inputs to add the others to).
   void ComputeMap(const std::vector<vtkPolyData*>& inputs,
+    const std::vector<vtkPolyData*>& existing,
     surfacemaps::SurfaceMapOptions options,
     bool useSizing)
   {
@@ -179,7 +182,9 @@ struct vtkSurfaceMapFilter::vtkInternals
     {
       throw surfacemaps::Aborted();
     }
-    internals.Map = surfacemaps::computeSurfaceMap(mapInputs, options);
+    internals.Map = existing.empty()
+      ? surfacemaps::computeSurfaceMap(mapInputs, options)
+      : surfacemaps::addToSurfaceMap(vtkSurfaceMapInputs::Existing(existing), mapInputs, options);
     const std::string far = surfacemaps::landmarkPhaseWarning(internals.Map);
     if (!far.empty())
     {
@@ -345,16 +350,20 @@ const char* vtkSurfaceMapFilter::GetPresetDocumentation(int preset)
 vtkSurfaceMapFilter::vtkSurfaceMapFilter()
   : Internals(new vtkInternals(this))
 {
-  this->SetNumberOfInputPorts(1);
+  this->SetNumberOfInputPorts(2);
   this->SetNumberOfOutputPorts(1);
 }
 
 vtkSurfaceMapFilter::~vtkSurfaceMapFilter() = default;
 
-int vtkSurfaceMapFilter::FillInputPortInformation(int, vtkInformation* info)
+int vtkSurfaceMapFilter::FillInputPortInformation(int port, vtkInformation* info)
 {
   info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkPolyData");
   info->Set(vtkAlgorithm::INPUT_IS_REPEATABLE(), 1);
+  if (port == 1)
+  {
+    info->Set(vtkAlgorithm::INPUT_IS_OPTIONAL(), 1);
+  }
   return 1;
 }
 
@@ -418,6 +427,10 @@ int vtkSurfaceMapFilter::RequestData(vtkInformation*,
   vtkInformationVector* outputVector)
 {
   const std::vector<vtkPolyData*> inputs = vtkSurfaceMapsConversion::PolyDataOf(inputVector[0]);
+  const std::vector<vtkPolyData*> existing = vtkSurfaceMapsConversion::PolyDataOf(inputVector[1]);
+  // What the kept map was computed from: both ports.
+  std::vector<vtkPolyData*> sources = inputs;
+  sources.insert(sources.end(), existing.begin(), existing.end());
   const std::vector<vtkPolyData*> outputs = vtkSurfaceMapsConversion::PolyDataOf(outputVector);
   clear(outputs);
   this->Internals->Progress = 0.0;
@@ -443,10 +456,11 @@ int vtkSurfaceMapFilter::RequestData(vtkInformation*,
       const surfacemaps::SurfaceMapOptions options = Access::OptionsOf(this);
       vtkSurfaceMapsSettingAccess::CheckRanges<Access>(options);
       const std::string settings = vtkInternals::SettingsKey(options, this->SizingMode);
-      if (!this->Internals->Matches(inputs, settings))
+      if (!this->Internals->Matches(sources, settings))
       {
-        this->Internals->ComputeMap(inputs, options, this->SizingMode == SIZING_ARRAY_OR_CURVATURE);
-        this->Internals->Keep(inputs, settings);
+        this->Internals->ComputeMap(
+          inputs, existing, options, this->SizingMode == SIZING_ARRAY_OR_CURVATURE);
+        this->Internals->Keep(sources, settings);
       }
       this->Internals->Report(0.98, "Writing the outputs");
       this->Internals->WriteOutputs(this->OutputMode, this->MappedInput, inputs, outputs);

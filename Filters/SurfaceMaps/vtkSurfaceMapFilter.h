@@ -7,12 +7,9 @@
  * embedding per input ("Surface Maps via Adaptive Triangulations", Schmidt,
  * Pieper, Kobbelt, Eurographics 2023). Each input gets a fixed bijective
  * embedding f_i on the unit sphere; T carries N embeddings g_i and is optimised
- * by edge splits, collapses, flips and projected-Newton steps on an energy of
- * bijectivity barriers, map distortion (symmetric Dirichlet over a set of input
- * pairs), mesh quality, surface approximation and landmarks, in three phases:
- * landmarks (only with landmarks), coarse (error CoarseError), fine (error
- * TargetError). Every result is certified bijective with exact predicates; a
- * run that cannot certify is an error.
+ * by edge splits, collapses, flips and projected-Newton steps (barriers, map
+ * distortion, mesh quality, approximation, landmarks) in a landmark, a coarse
+ * and a fine phase. Every result is certified bijective with exact predicates.
  *
  * Inputs: port 0 is repeatable; input i is the (i+1)-th connection. Triangles
  * only, closed, manifold, genus 0 (what vtkSurfaceMeshValidator accepts).
@@ -29,6 +26,10 @@
  *   settings, which are vtkSphereEmbeddingFilter's defaults: one list holds
  *   both). Every embedding is first rotated rigidly onto input 0's: by
  *   the landmarks, or without them by a search (LandmarkFreeAlignment).
+ * Port 1 (optional, repeatable): an existing map of port 0's first M inputs
+ * (its M COMMON_TRIANGULATION outputs; those inputs carry its
+ * INPUT_EMBEDDINGS "SpherePosition") to add the others to, its maps kept
+ * (surfacemaps::addToSurfaceMap; RefinementRounds 0 and MaxError 0).
  *
  * Outputs: one output port per input connection, following the connections
  * at once (GetOutputPort(i) can be connected before the first Update); with
@@ -116,11 +117,9 @@
  *
  * Switching OutputMode or MappedInput reuses the map of the last update.
  *
- * @warning Cost: the sphere embeddings (see vtkSphereEmbeddingFilter: about
- * 0.7 s for 3 000 vertices, 3.5 s for 12 000) plus the optimisation,
- * dominated by the fine phase, whose iterations cost roughly linear time in
- * the size of T and of the inputs' approximation samples (about 1 s in all
- * for two 642-vertex inputs with 3 coarse and 3 fine iterations).
+ * @warning Cost: the sphere embeddings (vtkSphereEmbeddingFilter: about 0.7 s
+ * for 3 000 vertices) plus the optimisation, dominated by the fine phase,
+ * roughly linear in the size of T and of the inputs' approximation samples.
  * Derivatives and remeshing candidates are evaluated on all OpenMP threads.
  * Progress once per iteration (the phase in the progress text), where
  * AbortExecute is honoured. The last map (a few times the size of the

@@ -225,3 +225,39 @@ std::vector<double> vtkSurfaceMapInputs::Embed(const std::vector<vtkPolyData*>& 
   }
   return seconds;
 }
+
+surfacemaps::ExistingMap vtkSurfaceMapInputs::Existing(const std::vector<vtkPolyData*>& common)
+{
+  surfacemaps::ExistingMap map;
+  for (std::size_t j = 0; j < common.size(); ++j)
+  {
+    const std::string name = "existing map's T on input " + std::to_string(j);
+    const surfacemaps::PolygonMesh mesh = vtkSurfaceMapsConversion::ToPolygonMesh(common[j]);
+    std::vector<Eigen::Vector3d> sphere = vtkSurfaceMapsConversion::SpherePositions(common[j]);
+    if (sphere.empty() || sphere.size() != mesh.points.size())
+    {
+      throw surfacemaps::InputError(
+        "the " + name + " has no \"SpherePosition\" array (3 components per point)");
+    }
+    if (j == 0)
+    {
+      map.triangles = mesh.triangles();
+      std::vector<std::string> defects;
+      map.landmarks = vtkSurfaceMapsConversion::LandmarkIds(common[0], defects);
+      if (!defects.empty())
+      {
+        throw surfacemaps::InputError("the " + name + ": " + joined(defects));
+      }
+    }
+    else if (mesh.points.size() != map.lifted[0].size() || mesh.triangles() != map.triangles)
+    {
+      throw surfacemaps::InputError("the " + name + " is not the triangulation of input 0's (" +
+        std::to_string(mesh.points.size()) + " points, " + std::to_string(mesh.numberOfFaces()) +
+        " triangles; input 0's: " + std::to_string(map.lifted[0].size()) + ", " +
+        std::to_string(map.triangles.size()) + ")");
+    }
+    map.spherePositions.push_back(std::move(sphere));
+    map.lifted.push_back(mesh.points);
+  }
+  return map;
+}

@@ -11,6 +11,7 @@
 #ifndef vtkSurfaceMapInputs_h
 #define vtkSurfaceMapInputs_h
 
+#include "map/AddToMap.h"
 #include "map/MapInput.h"
 
 #include <functional>
@@ -42,6 +43,12 @@ public:
   static std::vector<double> Embed(const std::vector<vtkPolyData*>& inputs,
     std::vector<surfacemaps::MapInput>& mapInputs,
     const std::function<bool(double, const std::string&)>& progress);
+
+  /// An existing map from its T lifted onto each of its inputs (outputs in
+  /// COMMON_TRIANGULATION mode: points, triangles, "SpherePosition",
+  /// "Landmarks"). Throws InputError naming the one that lacks an array or
+  /// differs from the first in points or triangles.
+  static surfacemaps::ExistingMap Existing(const std::vector<vtkPolyData*>& common);
 };
 
 #endif

@@ -91,15 +91,19 @@ std::string deepestFailure(vtkAlgorithm* algorithm)
 
 // Why input `connection` of port `port` of `algorithm` was not produced:
 // "input 1 was not produced: vtkXMLPolyDataReader failed (file a.vtp)"
-// ("input port 1 was not produced: ..." with several ports),
+// ("input port 1 was not produced: ..." for other ports of several),
 // naming the algorithm furthest upstream that says what went wrong (an error
 // message of the module's, a non-zero error code), else the input's producer.
 std::string upstreamFailure(vtkAlgorithm* algorithm, int port, int connection)
 {
-  // Repeatable ports count their connections as inputs (the map's "input 1").
+  // A repeatable first port counts its connections as inputs (the map's
+  // "input 1"; its optional port 1, an existing map, is named by port).
+  vtkInformation* first = algorithm->GetInputPortInformation(0);
+  const bool counted = algorithm->GetNumberOfInputPorts() == 1 ||
+    (port == 0 && first && first->Get(vtkAlgorithm::INPUT_IS_REPEATABLE()) == 1);
   const std::string input =
-    (algorithm->GetNumberOfInputPorts() == 1 ? "input " + std::to_string(connection)
-                                             : "input port " + std::to_string(port) +
+    (counted ? "input " + std::to_string(connection)
+             : "input port " + std::to_string(port) +
           (connection > 0 ? " connection " + std::to_string(connection) : "")) +
     " was not produced: ";
   vtkAlgorithmOutput* output = algorithm->GetInputConnection(port, connection);

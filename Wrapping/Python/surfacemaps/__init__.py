@@ -22,7 +22,8 @@ Helpers:
 ``evaluate_map(source, target, source_original=None, target_original=None)``
     The metrics of vtkSurfaceMapEvaluation as a dictionary.
 ``map_surfaces(meshes, landmarks=None, target_error=None, pairs=None, keep_landmarks=None, **settings)``
-    Certified bijective map between meshes (vtkSurfaceMapFilter); returns one
+    Certified bijective map between meshes (vtkSurfaceMapFilter; with
+    ``add_to=`` a map, the meshes are added to it); returns one
     output per mesh (the common triangulation lifted onto each), or with
     ``mapped=True`` also the first mesh mapped onto each, as a MapResult (a
     list that also holds the map, for transfer); raises InputError or

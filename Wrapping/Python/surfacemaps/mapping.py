@@ -11,6 +11,7 @@ from vtkmodules.vtkCommonDataModel import vtkPolyData
 from .SurfaceMapsFilters import (vtkSphereEmbeddingFilter, vtkSurfaceMapEvaluation, vtkSurfaceMapFilter,
                                  vtkSurfaceMapsSettings)
 from .errors import InputError, MapError, _collect_errors, _update
+from .existing import existing_map
 from .mesh import _set_array_transfer_modes, _with_landmarks
 
 
@@ -113,7 +114,7 @@ def presets():
 
 
 def map_surfaces(meshes, landmarks=None, target_error=None, pairs=None, keep_landmarks=None, mapped=False,
-                 categorical=None, continuous=None, preset=None, **settings):
+                 categorical=None, continuous=None, preset=None, add_to=None, **settings):
     """Certified bijective map between closed genus-0 meshes through one common triangulation.
 
     Runs vtkSurfaceMapFilter on `meshes` (vtkPolyData or file names; one mesh
@@ -138,6 +139,13 @@ def map_surfaces(meshes, landmarks=None, target_error=None, pairs=None, keep_lan
       sets a group of settings for a kind of study first; every other
       argument overrides it. "population" is for many specimens in one map
       (statistics over the common triangulation).
+    - `add_to`: None, or a map to add `meshes` to without mapping its inputs
+      again (``surfacemap map --add-to``): what map_surfaces returned, or a
+      map directory (its files checked against its report.json). Its inputs'
+      embeddings and maps are kept and T is refined by edge splits only where
+      a new mesh needs it; its settings apply unless given here (refinement
+      rounds and error bound must be 0, as in the "population" preset). The
+      result holds every input, the map's first.
     - `settings`: any other setting of vtkSurfaceMapFilter by name: the
       settings listed below (``settings_table()``), ``SizingMode`` and
       ``NumberOfThreads``.
@@ -170,8 +178,11 @@ def map_surfaces(meshes, landmarks=None, target_error=None, pairs=None, keep_lan
             raise InputError(f"{len(meshes)} meshes but {len(landmarks)} landmark entries")
     if pairs is not None and pairs not in _PAIR_MODES:
         raise ValueError(f"pairs is one of {sorted(_PAIR_MODES)}, not {pairs!r}")
+    existing = None if add_to is None else existing_map(add_to)
     f = vtkSurfaceMapFilter()
     errors = _collect_errors(f)
+    if existing is not None:
+        existing.apply_settings(f)  # the arguments below override them
     if preset is not None:
         names = [f.GetPresetName(p) for p in range(f.GetNumberOfPresets())]
         if preset not in names:
@@ -197,6 +208,10 @@ def map_surfaces(meshes, landmarks=None, target_error=None, pairs=None, keep_lan
                 raise ValueError(f"{name} must be a finite number in [{row['minimum']:g}, "
                                  f"{row['maximum']:g}], not {value!r}")
         getattr(f, "Set" + name)(value)
+    if existing is not None:
+        for k, mesh in enumerate(existing.embeddings):
+            f.AddInputData(mesh)
+            f.AddInputData(1, existing.common[k])
     for k, mesh in enumerate(meshes):
         f.AddInputData(_with_landmarks(mesh, None if landmarks is None else landmarks[k]))
 
@@ -206,7 +221,7 @@ def map_surfaces(meshes, landmarks=None, target_error=None, pairs=None, keep_lan
             message = "; ".join(errors) or "the map was aborted"
             raise (InputError if f.GetErrorCode() == vtkSurfaceMapFilter.InvalidInputError else MapError)(message)
         result = []
-        for i in range(len(meshes)):
+        for i in range(f.GetNumberOfOutputPorts()):
             copy = f.GetOutput(i).NewInstance()
             copy.ShallowCopy(f.GetOutput(i))
             result.append(copy)

@@ -101,6 +101,11 @@ public:
   /// inputs by a walk from the current lift triangles.
   void relocate(MapVertex& vertex) const;
 
+  /// The first `count` inputs' embeddings are fixed: snapshot() locks their
+  /// points, so only the other inputs' embeddings move (AddToMap.h).
+  void setFrozenInputs(int count) { this->FrozenInputs = count; }
+  int frozenInputs() const { return this->FrozenInputs; }
+
   /// Whether samples are assigned to faces (off while the approximation term
   /// is off: the landmark phase). Turning it on assigns them from scratch.
   bool tracksSamples() const { return this->TrackSamples; }
@@ -173,8 +178,8 @@ public:
   };
   /// Garbage-collects the mesh and fills a snapshot and the sphere points
   /// (g of input i at i * vertices + v); landmark vertices are locked when
-  /// `lockLandmarks`. The coverage densities, barrier scales and mean shape
-  /// are filled where `weights` use them.
+  /// `lockLandmarks`, every point of the frozen inputs always. The coverage densities, barrier
+  /// scales and mean shape are filled where `weights` use them.
   void snapshot(Snapshot& snapshot,
     SpherePoints& points,
     bool lockLandmarks,
@@ -247,6 +252,7 @@ private:
   bool FaceEnergiesValid = false;
   std::vector<OpenMesh::FPropHandleT<std::vector<int>>> Samples;
   bool TrackSamples = false;
+  int FrozenInputs = 0;
   // The surfaces' triangle neighbours, for walks.
   std::vector<std::vector<std::array<int, 3>>> SurfaceNeighbours;
 };

@@ -49,7 +49,8 @@ void CommonTriangulation::snapshot(Snapshot& s,
       positions[k] = this->Mesh.property(this->G[i], v);
       s.liftTriangle[k] = this->Mesh.property(this->LiftTriangle[i], v);
       s.lifts[k] = &this->Surfaces[i].lifts[s.liftTriangle[k]];
-      locked[k] = lockLandmarks && this->Mesh.property(this->Landmark, v) >= 0;
+      locked[k] =
+        i < this->FrozenInputs || (lockLandmarks && this->Mesh.property(this->Landmark, v) >= 0);
     }
   }
   s.densities.assign(n, {});

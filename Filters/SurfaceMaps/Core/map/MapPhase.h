@@ -46,6 +46,10 @@ struct MapPhase
   /// Landmark vertices stay where they are (locked out of the Newton step).
   bool lockLandmarks = false;
   StopRule stop = StopRule::Settled;
+  /// Edits the phase may make besides splits. Adding inputs to a map
+  /// (AddToMap.h) allows splits only: a collapse or flip would change the
+  /// existing inputs' maps, a split at an edge midpoint keeps them.
+  bool collapses = true, flips = true;
 };
 
 /// What one phase did.

@@ -84,7 +84,7 @@ MapPhaseReport PhaseRunner::run(const MapPhase& phase)
   for (int it = 0; it < phase.iterations && !report.converged; ++it)
   {
     // Once the landmarks are reached, T keeps its vertices (StopRule).
-    const RemeshingResult edits = this->remeshing(energy, reached, report);
+    const RemeshingResult edits = this->remeshing(phase, energy, reached, report);
     this->checkVertexBudget(phase, it);
     const NewtonStepResult step = this->newtonIteration(phase, energy, solver, objective, report);
     report.iterations = it + 1;
@@ -165,7 +165,8 @@ void PhaseRunner::logPhase(const MapPhase& phase, const MapPhaseReport& report) 
   }
 }
 
-RemeshingResult PhaseRunner::remeshing(const MapEnergy& energy,
+RemeshingResult PhaseRunner::remeshing(const MapPhase& phase,
+  const MapEnergy& energy,
   bool relaxing,
   MapPhaseReport& report)
 {
@@ -176,6 +177,8 @@ RemeshingResult PhaseRunner::remeshing(const MapEnergy& energy,
   }
   report.bookkeepingSeconds += secondsSince(clock);
   RemeshingOptions remeshing;
+  remeshing.collapse = phase.collapses;
+  remeshing.flip = phase.flips;
   if (relaxing)
   {
     // Relaxing after the landmarks were reached: T keeps its vertices.

@@ -47,9 +47,12 @@ public:
   int snapLandmarks();
 
 private:
-  /// Target lengths, then the improving splits, collapses and flips (only
-  /// flips when `relaxing`), counted into the report.
-  RemeshingResult remeshing(const MapEnergy& energy, bool relaxing, MapPhaseReport& report);
+  /// Target lengths, then the improving splits, collapses and flips the
+  /// phase allows (only flips when `relaxing`), counted into the report.
+  RemeshingResult remeshing(const MapPhase& phase,
+    const MapEnergy& energy,
+    bool relaxing,
+    MapPhaseReport& report);
   /// One projected-Newton step on every embedding of T, written back;
   /// times and T's size into the report.
   NewtonStepResult newtonIteration(const MapPhase& phase,

@@ -95,40 +95,6 @@ double keptLandmarkError(const SurfaceMapResult& result,
   return error;
 }
 
-/// The final energy of T, by term.
-MapEnergies energyByTerm(CommonTriangulation& T, const MapEnergyWeights& weights)
-{
-  CommonTriangulation::Snapshot snapshot;
-  SpherePoints points;
-  T.snapshot(snapshot, points, false, weights);
-  Objective objective;
-  MapEnergy(T, weights).buildObjective(snapshot, {}, objective);
-  const std::vector<double> values = objective.termValues(points);
-  MapEnergies energies;
-  for (std::size_t k = 0; k < values.size(); ++k)
-  {
-    switch (static_cast<MapTerm>(objective.group(k)))
-    {
-      case MapTerm::Barrier:
-        energies.barrier += values[k];
-        break;
-      case MapTerm::MeshQuality:
-        energies.meshQuality += values[k];
-        break;
-      case MapTerm::Approximation:
-        energies.approximation += values[k];
-        break;
-      case MapTerm::Distortion:
-        energies.distortion += values[k];
-        break;
-      case MapTerm::Landmarks: // not in the final energy (no targets)
-        break;
-    }
-  }
-  energies.total = objective.value(points);
-  return energies;
-}
-
 /// Runs one stage of the plan; its phases' reports go to `phases`, the
 /// error bound's per-input bounds to `bounds`.
 void runStage(const MapStage& stage,
@@ -290,6 +256,39 @@ SurfaceMapResult mapWithGuides(const std::vector<MapInput>& inputs,
 }
 
 } // namespace
+
+MapEnergies energyByTerm(CommonTriangulation& T, const MapEnergyWeights& weights)
+{
+  CommonTriangulation::Snapshot snapshot;
+  SpherePoints points;
+  T.snapshot(snapshot, points, false, weights);
+  Objective objective;
+  MapEnergy(T, weights).buildObjective(snapshot, {}, objective);
+  const std::vector<double> values = objective.termValues(points);
+  MapEnergies energies;
+  for (std::size_t k = 0; k < values.size(); ++k)
+  {
+    switch (static_cast<MapTerm>(objective.group(k)))
+    {
+      case MapTerm::Barrier:
+        energies.barrier += values[k];
+        break;
+      case MapTerm::MeshQuality:
+        energies.meshQuality += values[k];
+        break;
+      case MapTerm::Approximation:
+        energies.approximation += values[k];
+        break;
+      case MapTerm::Distortion:
+        energies.distortion += values[k];
+        break;
+      case MapTerm::Landmarks: // not in the final energy (no targets)
+        break;
+    }
+  }
+  energies.total = objective.value(points);
+  return energies;
+}
 
 SurfaceMapResult computeSurfaceMap(const std::vector<MapInput>& inputs,
   const SurfaceMapOptions& options)

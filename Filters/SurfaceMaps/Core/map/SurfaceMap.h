@@ -71,6 +71,9 @@ struct SurfaceMapResult
 SurfaceMapResult computeSurfaceMap(const std::vector<MapInput>& inputs,
   const SurfaceMapOptions& options = SurfaceMapOptions());
 
+/// The energy of T under `weights` (a phase's), by term.
+MapEnergies energyByTerm(CommonTriangulation& T, const MapEnergyWeights& weights);
+
 /// Distance on the unit sphere beyond which a landmark the landmark phase
 /// left behind is far from its target: a phase stopped by its cap is
 /// normally within about 1e-3, while landmark sets that do not correspond (a
