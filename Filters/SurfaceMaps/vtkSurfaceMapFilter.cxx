@@ -22,6 +22,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <mutex>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -170,7 +171,22 @@ struct vtkSurfaceMapFilter::vtkInternals
       std::any_of(embeddingSeconds.begin(), embeddingSeconds.end(), [](double s) { return s > 0; });
     const double start = computed ? embeddingShare : 0.0;
 
-    options.log = vtkSurfaceMapsConversion::EngineLog();
+    // The engine's warnings (landmarks set aside, an uncertain rotation) are
+    // the filter's: vtkWarningMacro reaches every front end (the command
+    // line shows no vtkLogger output without -v). The rest goes to vtkLogger.
+    std::vector<std::string> engineWarnings;
+    std::mutex warningsMutex;
+    const surfacemaps::Logger engineLog = vtkSurfaceMapsConversion::EngineLog();
+    options.log.sink = [&](surfacemaps::Logger::Level level, const std::string& message)
+    {
+      if (level != surfacemaps::Logger::Warning)
+      {
+        engineLog(level, message);
+        return;
+      }
+      const std::lock_guard<std::mutex> lock(warningsMutex);
+      engineWarnings.push_back(message);
+    };
     options.progress = [this, start](const surfacemaps::SurfaceMapProgress& p)
     {
       std::ostringstream text;
@@ -185,6 +201,10 @@ struct vtkSurfaceMapFilter::vtkInternals
     internals.Map = existing.empty()
       ? surfacemaps::computeSurfaceMap(mapInputs, options)
       : surfacemaps::addToSurfaceMap(vtkSurfaceMapInputs::Existing(existing), mapInputs, options);
+    for (const std::string& warning : engineWarnings)
+    {
+      vtkWarningWithObjectMacro(this->Filter, << warning);
+    }
     const std::string far = surfacemaps::landmarkPhaseWarning(internals.Map);
     if (!far.empty())
     {

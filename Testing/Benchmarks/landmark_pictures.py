@@ -40,7 +40,7 @@ def with_positions_of(mesh, source):
 
 
 def panel(mesh, caption):
-    return render.Panel(render.checkered(mesh, "APosition", squares=10), render.configure_checkerboard, caption)
+    return render.Panel(render.checkered(mesh, "APosition", squares=14), render.configure_checkerboard, caption)
 
 
 def main(argv):
@@ -50,7 +50,7 @@ def main(argv):
     parser.add_argument("-o", "--output", required=True)
     args = parser.parse_args(argv)
     a = read_vtp(os.path.join(args.guided, "common_0.vtp"))
-    panels = [panel(with_positions_of(a, a), "A")]
+    panels = [panel(with_positions_of(a, a), "A: a checkerboard of its positions")]
     for directory, caption in ((args.released, "on B: wrong landmarks, released"),
                                (args.guided, "on B: landmarks as guides")):
         common_0 = read_vtp(os.path.join(directory, "common_0.vtp"))
