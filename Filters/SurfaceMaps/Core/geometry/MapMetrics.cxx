@@ -138,4 +138,16 @@ std::vector<double> MapMetrics::cumulativeCurve(const std::vector<double>& thres
   return curve;
 }
 
+double boundingBoxDiagonal(const std::vector<Eigen::Vector3d>& points)
+{
+  Eigen::Vector3d lo = Eigen::Vector3d::Constant(std::numeric_limits<double>::infinity());
+  Eigen::Vector3d hi = -lo;
+  for (const Eigen::Vector3d& p : points)
+  {
+    lo = lo.cwiseMin(p);
+    hi = hi.cwiseMax(p);
+  }
+  return (hi - lo).norm();
+}
+
 } // namespace surfacemaps

@@ -50,4 +50,8 @@ MapMetrics measureMap(const std::vector<Eigen::Vector3d>& P,
 /// Singular values (s1 >= s2 >= 0) of a 2x2 matrix, in closed form.
 Eigen::Vector2d singularValues2x2(const Eigen::Matrix2d& J);
 
+/// The length of the diagonal of the points' axis-aligned bounding box (the
+/// unit of H and of every "% of the diagonal").
+double boundingBoxDiagonal(const std::vector<Eigen::Vector3d>& points);
+
 } // namespace surfacemaps

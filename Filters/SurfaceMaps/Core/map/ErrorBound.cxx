@@ -1,5 +1,6 @@
 #include "map/ErrorBound.h"
 #include "base/Error.h"
+#include "geometry/MapMetrics.h"
 
 #include <algorithm>
 #include <cmath>
@@ -13,18 +14,6 @@ namespace surfacemaps
 
 namespace
 {
-
-double boundingBoxDiagonal(const std::vector<Eigen::Vector3d>& points)
-{
-  Eigen::Vector3d lo = Eigen::Vector3d::Constant(std::numeric_limits<double>::infinity());
-  Eigen::Vector3d hi = -lo;
-  for (const Eigen::Vector3d& p : points)
-  {
-    lo = lo.cwiseMin(p);
-    hi = hi.cwiseMax(p);
-  }
-  return (hi - lo).norm();
-}
 
 /// Input vertices whose base point is farther than margin * bound.
 struct BoundViolations

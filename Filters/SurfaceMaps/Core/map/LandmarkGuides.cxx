@@ -1,5 +1,6 @@
 #include "map/LandmarkGuides.h"
 
+#include "geometry/MapMetrics.h"
 #include "map/MapTransfer.h"
 #include "map/PreparedInput.h"
 
@@ -8,22 +9,6 @@
 
 namespace surfacemaps
 {
-
-namespace
-{
-
-double boxDiagonal(const std::vector<Eigen::Vector3d>& points)
-{
-  Eigen::Vector3d lo = points.front(), hi = points.front();
-  for (const Eigen::Vector3d& p : points)
-  {
-    lo = lo.cwiseMin(p);
-    hi = hi.cwiseMax(p);
-  }
-  return (hi - lo).norm();
-}
-
-} // namespace
 
 std::map<int, double> landmarkDistances(const std::vector<MapInput>& inputs,
   const SurfaceMapResult& map)
@@ -46,7 +31,7 @@ std::map<int, double> landmarkDistances(const std::vector<MapInput>& inputs,
       map.spherePositions[i],
       map.inputSpherePositions[i],
       triangles);
-    const double diagonal = boxDiagonal(inputs[i].mesh.points);
+    const double diagonal = boundingBoxDiagonal(inputs[i].mesh.points);
     for (std::size_t k = 0; k < order.size(); ++k)
     {
       const Eigen::Vector3d image = evaluateSurfacePoint(inputs[i].mesh.points, triangles, carried[k]);
