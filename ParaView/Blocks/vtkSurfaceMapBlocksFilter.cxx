@@ -33,6 +33,9 @@ double effectiveValue(int i, double value, int preset)
 
 vtkSurfaceMapBlocksFilter::vtkSurfaceMapBlocksFilter()
 {
+  // One composite input: adding specimens to an existing map (the map
+  // filter's port 1) is not offered here.
+  this->SetNumberOfInputPorts(1);
   this->SetNumberOfOutputPorts(1);
 }
 
@@ -112,7 +115,9 @@ int vtkSurfaceMapBlocksFilter::RequestData(vtkInformation* request,
   vtkNew<vtkInformationVector> outputs;
   const auto surfaces =
     vtkSurfaceMapsBlockList::NewSurfaces(inputs->GetNumberOfInformationObjects(), outputs);
-  vtkInformationVector* flatInputs[1] = { inputs };
+  // The map filter reads its two ports (port 1: no existing map here).
+  vtkNew<vtkInformationVector> noExistingMap;
+  vtkInformationVector* flatInputs[2] = { inputs, noExistingMap };
   // The preset's values for this run only: the settings as set come back
   // afterwards (the time stamps of these changes precede the output's, so
   // they do not make the pipeline run again).
